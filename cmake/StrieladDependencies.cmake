@@ -1,0 +1,26 @@
+# SPDX-License-Identifier: Apache-2.0
+# All third-party dependencies come from Debian 12 packages (see scripts/install-deps.sh).
+find_package(PkgConfig REQUIRED)
+find_package(Threads REQUIRED)
+
+# oneTBB must be found before OpenVDB's FindOpenVDB (toolchain.md pitfall 2).
+find_package(TBB REQUIRED CONFIG)
+
+list(APPEND CMAKE_MODULE_PATH /usr/lib/x86_64-linux-gnu/cmake/OpenVDB)
+find_package(OpenVDB REQUIRED)
+
+find_package(netCDF REQUIRED CONFIG)
+pkg_check_modules(BLOSC REQUIRED IMPORTED_TARGET blosc)
+pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
+pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
+find_package(spdlog REQUIRED CONFIG)
+find_package(fmt REQUIRED CONFIG)
+find_package(CLI11 REQUIRED CONFIG)
+find_package(nlohmann_json REQUIRED CONFIG)
+
+function(strielad_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra)
+  if(STRIELAD_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+endfunction()

@@ -1,0 +1,14 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "cli/tool_main.h"
+#include "commands.h"
+
+int main(int argc, char** argv) {
+  using namespace strielad;
+  const cli::ToolSpec spec{
+      "strielad-convert",
+      "Convert CF-NetCDF output into a STRIELAD sparse-brick octree store, and inspect stores",
+      [](CLI::App& app, cli::Action& action) {
+        convert_cmd::register_sample(app, action);
+      }};
+  return cli::run_tool(spec, argc, argv);
+}

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "grid/axis.h"
+
+#include <cmath>
+
+#include "core/error.h"
+
+namespace strielad {
+
+std::string_view axis_kind_name(AxisKind kind) noexcept {
+  switch (kind) {
+    case AxisKind::kLongitude: return "longitude";
+    case AxisKind::kLatitude: return "latitude";
+    case AxisKind::kHeight: return "height";
+    case AxisKind::kPressure: return "pressure";
+    case AxisKind::kModelLevel: return "model_level";
+    case AxisKind::kOther: return "other";
+  }
+  return "other";
+}
+
+AxisKind axis_kind_from_name(std::string_view name) {
+  for (AxisKind k : {AxisKind::kLongitude, AxisKind::kLatitude, AxisKind::kHeight,
+                     AxisKind::kPressure, AxisKind::kModelLevel, AxisKind::kOther}) {
+    if (axis_kind_name(k) == name) return k;
+  }
+  throw make_error(ErrorCode::kCorrupt, "unknown axis kind '{}'", name);
+}
+
+void check_axis_values(const Axis& axis, std::string_view what) {
+  if (axis.values.empty()) {
+    throw make_error(ErrorCode::kInvalidInput, "{}: axis '{}' has no values", what, axis.name);
+  }
+  for (std::size_t i = 0; i < axis.values.size(); ++i) {
+    if (!std::isfinite(axis.values[i])) {
+      throw make_error(ErrorCode::kInvalidInput, "{}: axis '{}' value {} at index {} is not finite",
+                       what, axis.name, axis.values[i], i);
+    }
+  }
+  if (axis.values.size() < 2) return;
+  const bool ascending = axis.values[1] > axis.values[0];
+  for (std::size_t i = 1; i < axis.values.size(); ++i) {
+    const double a = axis.values[i - 1], b = axis.values[i];
+    if (ascending ? !(b > a) : !(b < a)) {
+      throw make_error(ErrorCode::kInvalidInput,
+                       "{}: axis '{}' is not strictly monotonic: value[{}] = {} then value[{}] = {}",
+                       what, axis.name, i - 1, a, i, b);
+    }
+  }
+}
+
+std::string_view dtype_name(DType type) noexcept {
+  return type == DType::kFloat32 ? "float32" : "float64";
+}
+
+DType dtype_from_name(std::string_view name) {
+  if (name == "float32") return DType::kFloat32;
+  if (name == "float64") return DType::kFloat64;
+  throw make_error(ErrorCode::kCorrupt, "unknown data type '{}'", name);
+}
+
+}  // namespace strielad

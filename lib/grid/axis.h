@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: Apache-2.0
+// Rectilinear axes as read from CF metadata: exact coordinate values (non-uniform and
+// descending axes are kept, never resampled) plus the attributes a reader needs.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace strielad {
+
+enum class AxisKind {
+  kLongitude,  // degrees_east
+  kLatitude,   // degrees_north
+  kHeight,     // metres above ground or sea level (positive up)
+  kPressure,   // Pa, hPa, mbar (positive down)
+  kModelLevel, // hybrid or dimensionless vertical coordinate
+  kOther,      // a vertical coordinate of unknown meaning, kept as given
+};
+
+std::string_view axis_kind_name(AxisKind kind) noexcept;
+// Parses a name written by axis_kind_name; throws kCorrupt on anything else.
+AxisKind axis_kind_from_name(std::string_view name);
+
+struct Axis {
+  std::string name;           // the coordinate variable's name in the source
+  AxisKind kind = AxisKind::kOther;
+  std::string units;
+  std::string standard_name;
+  std::string long_name;
+  std::string positive;       // "up", "down" or empty
+  std::vector<double> values; // strictly monotonic (ascending or descending)
+
+  std::size_t size() const { return values.size(); }
+  bool descending() const { return values.size() > 1 && values[1] < values[0]; }
+
+  friend bool operator==(const Axis&, const Axis&) = default;
+};
+
+// Throws kInvalidInput naming `what` and the first offending index when the values are
+// empty, contain NaN/Inf, or are not strictly monotonic.
+void check_axis_values(const Axis& axis, std::string_view what);
+
+struct TimeAxis {
+  std::string name;
+  std::string units;     // e.g. "hours since 2013-04-26 00:00:00"; may be empty
+  std::string calendar;  // e.g. "standard"; may be empty
+  std::vector<double> values;
+
+  std::size_t size() const { return values.size(); }
+  friend bool operator==(const TimeAxis&, const TimeAxis&) = default;
+};
+
+enum class DType { kFloat32, kFloat64 };
+
+std::string_view dtype_name(DType type) noexcept;
+DType dtype_from_name(std::string_view name);  // throws kCorrupt
+inline std::size_t dtype_size(DType type) noexcept { return type == DType::kFloat32 ? 4 : 8; }
+
+// Grid dimensions in samples along x (lon, fastest varying), y (lat) and z (vertical).
+struct Dims3 {
+  std::size_t x = 0, y = 0, z = 0;
+  std::size_t count() const { return x * y * z; }
+  friend bool operator==(const Dims3&, const Dims3&) = default;
+};
+
+}  // namespace strielad
