@@ -8,7 +8,11 @@ int main(int argc, char** argv) {
       "strielad-convert",
       "Convert CF-NetCDF output into a STRIELAD sparse-brick octree store, and inspect stores",
       [](CLI::App& app, cli::Action& action) {
+        convert_cmd::register_convert(app, action);
         convert_cmd::register_sample(app, action);
+        convert_cmd::register_info(app, action);
+        convert_cmd::register_verify(app, action);
+        convert_cmd::register_finalize(app, action);
       }};
   return cli::run_tool(spec, argc, argv);
 }

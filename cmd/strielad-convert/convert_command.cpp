@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <spdlog/spdlog.h>
+
+#include <iostream>
+#include <memory>
+
+#include "build/converter.h"
+#include "cli/progress_bar.h"
+#include "cli/step_range.h"
+#include "commands.h"
+#include "core/error.h"
+
+namespace strielad::convert_cmd {
+namespace {
+
+struct ConvertFlags {
+  std::vector<std::string> inputs;
+  std::string output;
+  std::vector<std::string> vars;
+  std::uint32_t brick = build::kDefaultBrick;
+  std::string time, steps;
+  int threads = 0;
+  format::CodecSpec codec;
+  bool nan_as_fill = false, no_finalize = false, json = false;
+};
+
+void log_summary(const build::ConvertResult& r) {
+  spdlog::info("converted {} steps ({} already present): {:.1f} MB read in {:.2f} s ({:.1f} MB/s), "
+               "{:.1f} MB written",
+               r.steps_converted, r.steps_skipped, r.input_bytes / 1e6, r.seconds,
+               r.seconds > 0 ? r.input_bytes / 1e6 / r.seconds : 0.0, r.written_bytes / 1e6);
+  spdlog::info("bricks: {} with data, {} constant, {} empty (no voxel data stored)", r.data,
+               r.constant, r.empty);
+  if (!r.finalized) return;
+  const auto& s = r.summary;
+  spdlog::info("store: {:.1f} MB from {:.1f} MB of input (ratio {:.2f}), {} nodes per step in {} "
+               "levels, octree overhead {:.1f}% of samples ({:.1f}% of stored bytes)",
+               s.value("store_bytes", 0.0) / 1e6, s.value("input_bytes", 0.0) / 1e6,
+               s.value("ratio", 0.0), s.value("nodes_per_step", 0), s.value("levels", 0),
+               s.value("octree_sample_overhead_percent", 0.0),
+               s.value("octree_stored_overhead_percent", 0.0));
+}
+
+int run(const ConvertFlags& f) {
+  if (f.inputs.empty()) throw make_error(ErrorCode::kInvalidArgument, "no INPUT files given");
+  if (f.output.empty()) throw make_error(ErrorCode::kInvalidArgument, "-o STORE is required");
+  build::ConvertOptions o;
+  for (const auto& in : f.inputs) o.inputs.emplace_back(in);
+  o.store = f.output;
+  o.scan.variables = f.vars;
+  o.scan.nan_as_fill = f.nan_as_fill;
+  if (!f.time.empty()) {
+    const auto r = cli::parse_step_range(f.time, "--time");
+    o.scan.first_step = r.first;
+    o.scan.last_step = r.last;
+  }
+  if (!f.steps.empty()) {
+    const auto r = cli::parse_step_range(f.steps, "--steps");
+    o.only_first = r.first;
+    o.only_last = r.last;
+  }
+  o.brick = f.brick;
+  o.codec = f.codec;
+  o.threads = f.threads;
+  o.finalize = !f.no_finalize;
+  std::unique_ptr<cli::ProgressBar> bar;
+  std::uint64_t reported = 0;
+  o.progress = [&](std::uint64_t done, std::uint64_t total) {
+    if (!bar) bar = std::make_unique<cli::ProgressBar>("converting", total / 1000000, "MB");
+    bar->advance(done / 1000000 - reported);
+    reported = done / 1000000;
+  };
+  const build::ConvertResult r = build::convert(o);
+  if (bar) bar->finish();
+  log_summary(r);
+  if (f.json) std::cout << r.to_json().dump(2) << "\n";
+  return 0;
+}
+
+}  // namespace
+
+void register_convert(CLI::App& app, cli::Action& action) {
+  auto f = std::make_shared<ConvertFlags>();
+  app.add_option("inputs", f->inputs, "CF-NetCDF input files (a time series may span files)");
+  app.add_option("-o,--output", f->output, "Store directory to create or resume");
+  app.add_option("--vars", f->vars, "Variables to convert (default: every 3D variable)")
+      ->delimiter(',');
+  app.add_option("--brick", f->brick, "Cells per brick edge (default 16; the paper used 20)")
+      ->capture_default_str();
+  app.add_option("--time", f->time, "Input time steps to include, inclusive: A:B, A:, :B or A");
+  app.add_option("--steps", f->steps,
+                 "Convert only these steps of the store (inclusive A:B), e.g. one Slurm task");
+  app.add_option("--threads", f->threads, "Worker threads (default: all cores)");
+  app.add_option("--codec", f->codec.name, "Blosc codec: blosclz, lz4, lz4hc, zlib, zstd")
+      ->capture_default_str();
+  app.add_option("--level", f->codec.level, "Compression level 0-9")->capture_default_str();
+  app.add_option("--shuffle", f->codec.shuffle, "Blosc shuffle: none, byte, bit")
+      ->capture_default_str();
+  app.add_flag("--nan-as-fill", f->nan_as_fill, "Treat NaN/Inf in the data as missing values");
+  app.add_flag("--no-finalize", f->no_finalize,
+               "Do not finalize even if every step is present (finalize runs separately)");
+  app.add_flag("--json", f->json, "Print the result as JSON on stdout");
+  app.callback([&app, &action, f] {
+    if (app.get_subcommands().empty()) action = [f] { return run(*f); };
+  });
+}
+
+}  // namespace strielad::convert_cmd

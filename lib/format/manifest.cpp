@@ -1,0 +1,333 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "format/manifest.h"
+
+#include <cstring>
+
+#include "core/byte_io.h"
+#include "core/checksum.h"
+#include "core/error.h"
+#include "format/step_file_format.h"
+#include "octree/octree_layout.h"
+
+namespace strielad::format {
+namespace {
+
+using nlohmann::json;
+constexpr std::string_view kManifestMagic = "STRLDMAN";
+constexpr std::size_t kFrameHeader = 24, kFrameTrailer = 8;
+
+std::string hex64(std::uint64_t v) { return fmt::format("{:016x}", v); }
+
+std::uint64_t parse_hex64(const std::string& s, std::string_view key, std::string_view what) {
+  if (s.size() != 16 || s.find_first_not_of("0123456789abcdef") != std::string::npos) {
+    throw make_error(ErrorCode::kCorrupt, "{}: key '{}' must be 16 lowercase hex digits, got '{}'",
+                     what, key, s);
+  }
+  return std::stoull(s, nullptr, 16);
+}
+
+// Typed access to a required key with errors naming it.
+template <typename T>
+T get(const json& j, std::string_view key, std::string_view what) {
+  const auto it = j.find(std::string(key));
+  if (it == j.end()) throw make_error(ErrorCode::kCorrupt, "{}: missing key '{}'", what, key);
+  try {
+    return it->get<T>();
+  } catch (const json::exception& e) {
+    throw make_error(ErrorCode::kCorrupt, "{}: key '{}' has the wrong type: {}", what, key,
+                     e.what());
+  }
+}
+
+std::optional<double> get_optional(const json& j, std::string_view key, std::string_view what) {
+  if (!j.contains(std::string(key))) return std::nullopt;
+  return get<double>(j, key, what);
+}
+
+json axis_json(const Axis& a) {
+  return json{{"name", a.name},         {"kind", std::string(axis_kind_name(a.kind))},
+              {"units", a.units},       {"standard_name", a.standard_name},
+              {"long_name", a.long_name}, {"positive", a.positive},
+              {"values", a.values}};
+}
+
+Axis axis_from_json(const json& j, std::string_view what) {
+  Axis a;
+  a.name = get<std::string>(j, "name", what);
+  a.kind = axis_kind_from_name(get<std::string>(j, "kind", what));
+  a.units = get<std::string>(j, "units", what);
+  a.standard_name = get<std::string>(j, "standard_name", what);
+  a.long_name = get<std::string>(j, "long_name", what);
+  a.positive = get<std::string>(j, "positive", what);
+  a.values = get<std::vector<double>>(j, "values", what);
+  try {
+    check_axis_values(a, what);
+  } catch (const Error& e) {
+    throw Error(ErrorCode::kCorrupt, e.what());
+  }
+  return a;
+}
+
+json levels_json(const OctreeLayout& layout) {
+  json levels = json::array();
+  for (std::size_t l = 0; l < layout.level_count(); ++l) {
+    const LevelShape& s = layout.level(l);
+    levels.push_back(json{{"samples", s.samples},
+                          {"stride", s.stride},
+                          {"nodes", s.nodes},
+                          {"first_node", s.first_node}});
+  }
+  return levels;
+}
+
+}  // namespace
+
+void validate_codec(const CodecSpec& codec) {
+  static const char* kNames[] = {"blosclz", "lz4", "lz4hc", "zlib", "zstd"};
+  bool known = false;
+  for (const char* n : kNames) known = known || codec.name == n;
+  if (!known) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "codec '{}' is not one of blosclz, lz4, lz4hc, zlib, zstd", codec.name);
+  }
+  if (codec.level < 0 || codec.level > 9) {
+    throw make_error(ErrorCode::kInvalidArgument, "codec level {} is not in 0..9", codec.level);
+  }
+  if (codec.shuffle != "none" && codec.shuffle != "byte" && codec.shuffle != "bit") {
+    throw make_error(ErrorCode::kInvalidArgument, "shuffle '{}' is not one of none, byte, bit",
+                     codec.shuffle);
+  }
+}
+
+std::size_t Manifest::variable_index(std::string_view name) const {
+  std::string names;
+  for (std::size_t i = 0; i < variables.size(); ++i) {
+    if (variables[i].name == name) return i;
+    names += (i ? ", " : "") + variables[i].name;
+  }
+  throw make_error(ErrorCode::kNotFound, "variable '{}' is not in the store (it has: {})", name,
+                   names);
+}
+
+std::string step_file_name(std::uint32_t step) { return fmt::format("steps/step-{:06d}.bricks", step); }
+
+json manifest_plan_json(const Manifest& m) {
+  json vars = json::array();
+  for (const StoreVariable& v : m.variables) {
+    json jv{{"name", v.name},
+            {"units", v.units},
+            {"long_name", v.long_name},
+            {"standard_name", v.standard_name},
+            {"dtype", std::string(dtype_name(v.dtype))},
+            {"source_type", v.source_type}};
+    auto put = [&](const char* key, const std::optional<double>& value) {
+      if (value) jv[key] = *value;
+    };
+    put("fill_value", v.fill_value);
+    put("missing_value", v.missing_value);
+    put("valid_min", v.valid_min);
+    put("valid_max", v.valid_max);
+    put("scale_factor", v.scale_factor);
+    put("add_offset", v.add_offset);
+    vars.push_back(std::move(jv));
+  }
+  json sources = json::array();
+  for (const SourceRecord& s : m.sources) {
+    sources.push_back(
+        json{{"path", s.path}, {"size", s.size}, {"header_checksum", hex64(s.header_checksum)}});
+  }
+  const OctreeLayout layout(m.dims(), m.brick);
+  return json{
+      {"format", "strielad-store"},
+      {"format_version", kStoreFormatVersion},
+      {"grid", json{{"x", axis_json(m.x)}, {"y", axis_json(m.y)}, {"z", axis_json(m.z)}}},
+      {"time", json{{"name", m.time.name},
+                    {"units", m.time.units},
+                    {"calendar", m.time.calendar},
+                    {"values", m.time.values}}},
+      {"variables", std::move(vars)},
+      {"octree", json{{"brick", m.brick},
+                      {"node_count", layout.node_count()},
+                      {"levels", levels_json(layout)}}},
+      {"codec", json{{"name", m.codec.name}, {"level", m.codec.level}, {"shuffle", m.codec.shuffle}}},
+      {"nan_as_fill", m.nan_as_fill},
+      {"sources", std::move(sources)},
+  };
+}
+
+std::uint64_t compute_store_id(const Manifest& m) {
+  const std::string plan = manifest_plan_json(m).dump();
+  return checksum64(as_bytes_of(plan));
+}
+
+json manifest_to_json(const Manifest& m) {
+  json j = manifest_plan_json(m);
+  j["tool_version"] = m.tool_version;
+  j["store_id"] = hex64(m.store_id);
+  j["state"] = m.complete ? "complete" : "converting";
+  if (m.complete) {
+    json steps = json::array();
+    for (const StepRecord& s : m.steps) {
+      steps.push_back(json{{"step", s.step},
+                           {"file", s.file},
+                           {"size", s.size},
+                           {"footer_checksum", hex64(s.footer_checksum)}});
+    }
+    j["steps"] = std::move(steps);
+    j["summary"] = m.summary;
+  }
+  return j;
+}
+
+Manifest manifest_from_json(const json& j, std::string_view what) {
+  if (!j.is_object()) throw make_error(ErrorCode::kCorrupt, "{}: payload is not a JSON object", what);
+  if (get<std::string>(j, "format", what) != "strielad-store") {
+    throw make_error(ErrorCode::kCorrupt, "{}: key 'format' is not \"strielad-store\"", what);
+  }
+  const auto version = get<std::uint32_t>(j, "format_version", what);
+  if (version > kStoreFormatVersion) {
+    throw make_error(ErrorCode::kVersionTooNew,
+                     "{}: format version {} is newer than this reader (max {})", what, version,
+                     kStoreFormatVersion);
+  }
+  Manifest m;
+  m.tool_version = get<std::string>(j, "tool_version", what);
+  m.store_id = parse_hex64(get<std::string>(j, "store_id", what), "store_id", what);
+  const auto state = get<std::string>(j, "state", what);
+  if (state != "complete" && state != "converting") {
+    throw make_error(ErrorCode::kCorrupt, "{}: unknown state '{}'", what, state);
+  }
+  m.complete = state == "complete";
+  const json& grid = get<json>(j, "grid", what);
+  m.x = axis_from_json(get<json>(grid, "x", what), fmt::format("{}: grid.x", what));
+  m.y = axis_from_json(get<json>(grid, "y", what), fmt::format("{}: grid.y", what));
+  m.z = axis_from_json(get<json>(grid, "z", what), fmt::format("{}: grid.z", what));
+  const json& time = get<json>(j, "time", what);
+  m.time.name = get<std::string>(time, "name", what);
+  m.time.units = get<std::string>(time, "units", what);
+  m.time.calendar = get<std::string>(time, "calendar", what);
+  m.time.values = get<std::vector<double>>(time, "values", what);
+  if (m.time.values.empty()) throw make_error(ErrorCode::kCorrupt, "{}: no time steps", what);
+  for (const json& jv : get<json>(j, "variables", what)) {
+    StoreVariable v;
+    v.name = get<std::string>(jv, "name", what);
+    v.units = get<std::string>(jv, "units", what);
+    v.long_name = get<std::string>(jv, "long_name", what);
+    v.standard_name = get<std::string>(jv, "standard_name", what);
+    v.dtype = dtype_from_name(get<std::string>(jv, "dtype", what));
+    v.source_type = get<std::string>(jv, "source_type", what);
+    v.fill_value = get_optional(jv, "fill_value", what);
+    v.missing_value = get_optional(jv, "missing_value", what);
+    v.valid_min = get_optional(jv, "valid_min", what);
+    v.valid_max = get_optional(jv, "valid_max", what);
+    v.scale_factor = get_optional(jv, "scale_factor", what);
+    v.add_offset = get_optional(jv, "add_offset", what);
+    m.variables.push_back(std::move(v));
+  }
+  if (m.variables.empty()) throw make_error(ErrorCode::kCorrupt, "{}: no variables", what);
+  const json& octree = get<json>(j, "octree", what);
+  m.brick = get<std::uint32_t>(octree, "brick", what);
+  const json& codec = get<json>(j, "codec", what);
+  m.codec.name = get<std::string>(codec, "name", what);
+  m.codec.level = get<int>(codec, "level", what);
+  m.codec.shuffle = get<std::string>(codec, "shuffle", what);
+  try {
+    validate_codec(m.codec);
+  } catch (const Error& e) {
+    throw make_error(ErrorCode::kCorrupt, "{}: {}", what, e.what());
+  }
+  m.nan_as_fill = get<bool>(j, "nan_as_fill", what);
+  for (const json& js : get<json>(j, "sources", what)) {
+    m.sources.push_back(SourceRecord{
+        get<std::string>(js, "path", what), get<std::uint64_t>(js, "size", what),
+        parse_hex64(get<std::string>(js, "header_checksum", what), "header_checksum", what)});
+  }
+  // The recorded level table must match the one computed from grid and brick.
+  try {
+    const OctreeLayout layout(m.dims(), m.brick);
+    if (get<json>(octree, "levels", what) != levels_json(layout) ||
+        get<std::uint64_t>(octree, "node_count", what) != layout.node_count()) {
+      throw make_error(ErrorCode::kCorrupt,
+                       "{}: octree level table differs from the one computed for grid {}x{}x{} "
+                       "and brick {}",
+                       what, m.x.size(), m.y.size(), m.z.size(), m.brick);
+    }
+  } catch (const Error& e) {
+    if (e.code() == ErrorCode::kCorrupt) throw;
+    throw make_error(ErrorCode::kCorrupt, "{}: {}", what, e.what());
+  }
+  if (m.complete) {
+    for (const json& js : get<json>(j, "steps", what)) {
+      m.steps.push_back(StepRecord{
+          get<std::uint32_t>(js, "step", what), get<std::string>(js, "file", what),
+          get<std::uint64_t>(js, "size", what),
+          parse_hex64(get<std::string>(js, "footer_checksum", what), "footer_checksum", what)});
+    }
+    if (m.steps.size() != m.time.values.size()) {
+      throw make_error(ErrorCode::kCorrupt, "{}: complete store lists {} step files for {} steps",
+                       what, m.steps.size(), m.time.values.size());
+    }
+    m.summary = get<json>(j, "summary", what);
+  }
+  if (compute_store_id(m) != m.store_id) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: store_id {:016x} does not match the manifest's content ({:016x})", what,
+                     m.store_id, compute_store_id(m));
+  }
+  return m;
+}
+
+std::vector<std::byte> encode_manifest(const Manifest& m) {
+  const std::string payload = manifest_to_json(m).dump(1);
+  ByteWriter w;
+  w.text(kManifestMagic);
+  w.u32(kStoreFormatVersion);
+  w.u32(0);
+  w.u64(payload.size());
+  w.text(payload);
+  w.u64(checksum64(w.data()));
+  return w.take();
+}
+
+Manifest decode_manifest(std::span<const std::byte> bytes, std::string_view what) {
+  ByteReader r(bytes, what);
+  const auto magic = r.bytes(8, "magic");
+  if (std::memcmp(magic.data(), kManifestMagic.data(), 8) != 0) {
+    throw make_error(ErrorCode::kCorrupt, "{}: bad magic: not a STRIELAD manifest", what);
+  }
+  const std::uint32_t version = r.u32("format_version");
+  if (version > kStoreFormatVersion) {
+    throw make_error(ErrorCode::kVersionTooNew,
+                     "{}: format version {} is newer than this reader (max {})", what, version,
+                     kStoreFormatVersion);
+  }
+  if (version == 0) throw make_error(ErrorCode::kCorrupt, "{}: format version 0 is invalid", what);
+  if (const std::uint32_t flags = r.u32("flags"); flags != 0) {
+    throw make_error(ErrorCode::kCorrupt, "{}: reserved flags are {} (must be 0)", what, flags);
+  }
+  const std::uint64_t payload_size = r.u64("payload_size");
+  if (payload_size > bytes.size() || bytes.size() - kFrameHeader - kFrameTrailer != payload_size) {
+    throw make_error(bytes.size() < kFrameHeader + kFrameTrailer + payload_size
+                         ? ErrorCode::kTruncated
+                         : ErrorCode::kCorrupt,
+                     "{}: file is {} bytes but the header announces {} (payload {} + 32)", what,
+                     bytes.size(), payload_size + kFrameHeader + kFrameTrailer, payload_size);
+  }
+  const auto payload = r.bytes(payload_size, "payload");
+  const std::uint64_t stored = r.u64("checksum");
+  const std::uint64_t computed = checksum64(bytes.first(kFrameHeader + payload_size));
+  if (stored != computed) {
+    throw make_error(ErrorCode::kCorrupt, "{}: checksum mismatch (stored {:016x}, computed {:016x})",
+                     what, stored, computed);
+  }
+  json j;
+  try {
+    j = json::parse(reinterpret_cast<const char*>(payload.data()),
+                    reinterpret_cast<const char*>(payload.data()) + payload.size());
+  } catch (const json::exception& e) {
+    throw make_error(ErrorCode::kCorrupt, "{}: payload is not valid JSON: {}", what, e.what());
+  }
+  return manifest_from_json(j, what);
+}
+
+}  // namespace strielad::format

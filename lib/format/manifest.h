@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: Apache-2.0
+// The store manifest (formats/store.md, "Manifest"): a JSON payload in a checksummed
+// binary frame. Pure encode/decode, no file I/O.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "grid/axis.h"
+
+namespace strielad::format {
+
+struct CodecSpec {
+  std::string name = "zstd";    // blosclz, lz4, lz4hc, zlib, zstd
+  int level = 5;                // 0..9
+  std::string shuffle = "byte"; // none, byte, bit
+  friend bool operator==(const CodecSpec&, const CodecSpec&) = default;
+};
+
+// Throws kInvalidArgument naming the bad field.
+void validate_codec(const CodecSpec& codec);
+
+struct StoreVariable {
+  std::string name, units, long_name, standard_name;
+  DType dtype = DType::kFloat32;
+  std::string source_type;
+  std::optional<double> fill_value, missing_value, valid_min, valid_max, scale_factor, add_offset;
+  friend bool operator==(const StoreVariable&, const StoreVariable&) = default;
+};
+
+struct SourceRecord {
+  std::string path;
+  std::uint64_t size = 0;
+  std::uint64_t header_checksum = 0;
+  friend bool operator==(const SourceRecord&, const SourceRecord&) = default;
+};
+
+struct StepRecord {
+  std::uint32_t step = 0;
+  std::string file;  // relative to the store directory
+  std::uint64_t size = 0;
+  std::uint64_t footer_checksum = 0;
+  friend bool operator==(const StepRecord&, const StepRecord&) = default;
+};
+
+struct Manifest {
+  std::string tool_version;
+  std::uint64_t store_id = 0;
+  bool complete = false;
+  Axis x, y, z;
+  TimeAxis time;
+  std::vector<StoreVariable> variables;
+  std::uint32_t brick = 16;
+  CodecSpec codec;
+  bool nan_as_fill = false;
+  std::vector<SourceRecord> sources;
+  std::vector<StepRecord> steps;  // only when complete
+  nlohmann::json summary = nlohmann::json::object();  // only when complete
+
+  Dims3 dims() const { return Dims3{x.size(), y.size(), z.size()}; }
+  // Index of a variable by name; throws kNotFound listing the store's variables.
+  std::size_t variable_index(std::string_view name) const;
+};
+
+// Path of a step file relative to the store directory: "steps/step-000042.bricks".
+std::string step_file_name(std::uint32_t step);
+
+// The plan: everything that defines the store's content (formats/store.md).
+nlohmann::json manifest_plan_json(const Manifest& manifest);
+std::uint64_t compute_store_id(const Manifest& manifest);
+
+nlohmann::json manifest_to_json(const Manifest& manifest);
+// Validates keys, types, axes and the octree level table; throws kCorrupt naming the key.
+Manifest manifest_from_json(const nlohmann::json& json, std::string_view what);
+
+std::vector<std::byte> encode_manifest(const Manifest& manifest);
+Manifest decode_manifest(std::span<const std::byte> bytes, std::string_view what);
+
+}  // namespace strielad::format

@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "store/store.h"
+
+#include "core/checksum.h"
+#include "core/error.h"
+#include "core/file_io.h"
+#include "store/brick_cache.h"
+#include "store/brick_codec.h"
+
+namespace strielad {
+
+using format::BrickKind;
+using format::IndexEntry;
+
+struct Store::StepState {
+  std::mutex mutex;
+  bool opened = false;
+  ReadOnlyFile file;
+  format::StepFooter footer;
+  std::vector<format::SectionEntry> sections;
+  std::vector<std::unique_ptr<const std::vector<IndexEntry>>> indexes;  // per variable, lazy
+};
+
+std::shared_ptr<const Store> Store::open(const std::filesystem::path& dir,
+                                         StoreOpenOptions options) {
+  const auto manifest_path = dir / "MANIFEST";
+  if (!std::filesystem::exists(manifest_path)) {
+    throw make_error(ErrorCode::kNotFound, "{}: not a STRIELAD store (no MANIFEST file)",
+                     dir.string());
+  }
+  format::Manifest manifest =
+      format::decode_manifest(read_file_bytes(manifest_path), manifest_path.string());
+  if (!manifest.complete && !options.allow_incomplete) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "{}: conversion has not been finalized (state 'converting'); finish it by "
+                     "re-running strielad-convert or 'strielad-convert finalize'",
+                     dir.string());
+  }
+  return std::shared_ptr<const Store>(new Store(dir, std::move(manifest)));
+}
+
+Store::Store(std::filesystem::path dir, format::Manifest manifest)
+    : dir_(std::move(dir)), manifest_(std::move(manifest)), octree_(manifest_.dims(), manifest_.brick) {
+  steps_.reserve(step_count());
+  for (std::size_t i = 0; i < step_count(); ++i) steps_.push_back(std::make_unique<StepState>());
+}
+
+Store::~Store() = default;
+
+std::filesystem::path Store::step_path(std::uint32_t step) const {
+  return dir_ / format::step_file_name(step);
+}
+
+std::string Store::describe_node(std::uint32_t variable, NodeId node) const {
+  const NodeKey k = octree_.key(node);
+  return fmt::format("variable '{}' node {} (level {}, index {},{},{})",
+                     manifest_.variables.at(variable).name, node, k.level, k.index[0], k.index[1],
+                     k.index[2]);
+}
+
+bool Store::has_step(std::uint32_t step) const {
+  return step < step_count() && std::filesystem::exists(step_path(step));
+}
+
+void Store::check_step_and_variable(std::uint32_t step, std::uint32_t variable) const {
+  if (step >= step_count()) {
+    throw make_error(ErrorCode::kNotFound, "{}: time step {} does not exist (the store has {})",
+                     dir_.string(), step, step_count());
+  }
+  if (variable >= variable_count()) {
+    throw make_error(ErrorCode::kNotFound, "{}: variable index {} does not exist (the store has {})",
+                     dir_.string(), variable, variable_count());
+  }
+}
+
+Store::StepState& Store::step_state(std::uint32_t step) const {
+  StepState& s = *steps_.at(step);
+  std::lock_guard lock(s.mutex);
+  if (s.opened) return s;
+  const auto path = step_path(step);
+  const std::string what = path.string();
+  if (!std::filesystem::exists(path)) {
+    throw make_error(ErrorCode::kNotFound, "{}: time step {} not converted ({} is missing)",
+                     dir_.string(), step, format::step_file_name(step));
+  }
+  ReadOnlyFile file(path);
+  constexpr std::uint64_t kFixed = format::kStepHeaderSize + format::kStepFooterSize;
+  if (file.size() < kFixed) {
+    throw make_error(ErrorCode::kTruncated, "{}: file is {} bytes, shorter than header and footer",
+                     what, file.size());
+  }
+  if (manifest_.complete && step < manifest_.steps.size() &&
+      manifest_.steps[step].size != file.size()) {
+    throw make_error(ErrorCode::kCorrupt, "{}: file is {} bytes but the manifest recorded {}", what,
+                     file.size(), manifest_.steps[step].size);
+  }
+  std::vector<std::byte> header(format::kStepHeaderSize), footer_bytes(format::kStepFooterSize);
+  file.read_at(0, header);
+  file.read_at(file.size() - format::kStepFooterSize, footer_bytes);
+  const format::StepHeader h = format::decode_step_header(header, what);
+  const format::StepFooter f = format::decode_step_footer(footer_bytes, what);
+  const auto expect = [&](std::uint64_t found, std::uint64_t expected, std::string_view field) {
+    if (found != expected) {
+      throw make_error(ErrorCode::kCorrupt, "{}: {} is {} but the manifest says {}", what, field,
+                       found, expected);
+    }
+  };
+  expect(h.store_id, manifest_.store_id, "header store_id");
+  expect(f.store_id, manifest_.store_id, "footer store_id");
+  expect(h.step, step, "header step");
+  expect(f.step, step, "footer step");
+  expect(h.variable_count, variable_count(), "header variable_count");
+  expect(f.variable_count, variable_count(), "footer variable_count");
+  expect(h.node_count, octree_.node_count(), "header node_count");
+  expect(f.node_count, octree_.node_count(), "footer node_count");
+  const std::uint64_t table_size = std::uint64_t{f.variable_count} * format::kSectionEntrySize;
+  const std::uint64_t footer_offset = file.size() - format::kStepFooterSize;
+  if (f.section_table_offset < format::kStepHeaderSize ||
+      f.section_table_offset + table_size != footer_offset) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: section table at offset {} ({} bytes) does not end at the footer ({})",
+                     what, f.section_table_offset, table_size, footer_offset);
+  }
+  std::vector<std::byte> table(table_size);
+  file.read_at(f.section_table_offset, table);
+  s.sections = format::decode_section_table(table, f.variable_count, f.node_count,
+                                            f.section_table_checksum, format::kStepHeaderSize,
+                                            f.section_table_offset, what);
+  if (manifest_.complete && step < manifest_.steps.size() &&
+      manifest_.steps[step].footer_checksum != checksum64(std::span(footer_bytes).first(48))) {
+    throw make_error(ErrorCode::kCorrupt, "{}: footer differs from the one the manifest recorded",
+                     what);
+  }
+  index_bytes_ += header.size() + footer_bytes.size() + table.size();
+  s.footer = f;
+  s.file = std::move(file);
+  s.indexes.resize(variable_count());
+  s.opened = true;
+  return s;
+}
+
+std::span<const IndexEntry> Store::index(std::uint32_t step, std::uint32_t variable) const {
+  check_step_and_variable(step, variable);
+  StepState& s = step_state(step);
+  std::lock_guard lock(s.mutex);
+  auto& slot = s.indexes[variable];
+  if (!slot) {
+    const format::SectionEntry& section = s.sections[variable];
+    std::vector<std::byte> stored(section.stored_size);
+    s.file.read_at(section.offset, stored);
+    index_bytes_ += stored.size();
+    // Chunks lie between the header and the first index section.
+    std::uint64_t first_section = s.footer.section_table_offset;
+    for (const auto& sec : s.sections) first_section = std::min(first_section, sec.offset);
+    slot = std::make_unique<const std::vector<IndexEntry>>(format::decode_index_section(
+        stored, section, s.footer.node_count, format::kStepHeaderSize, first_section,
+        fmt::format("{}: variable '{}'", s.file.path().string(),
+                    manifest_.variables[variable].name)));
+  }
+  return *slot;
+}
+
+const IndexEntry& Store::node_entry(std::uint32_t step, std::uint32_t variable, NodeId node) const {
+  const auto entries = index(step, variable);
+  if (node >= entries.size()) {
+    throw make_error(ErrorCode::kNotFound, "{}: node {} does not exist (the octree has {} nodes)",
+                     dir_.string(), node, entries.size());
+  }
+  return entries[node];
+}
+
+Brick Store::read_brick(std::uint32_t step, std::uint32_t variable, NodeId node) const {
+  const IndexEntry& e = node_entry(step, variable, node);
+  Brick b;
+  b.node = node;
+  b.box = octree_.level_box(octree_.key(node));
+  for (int a = 0; a < 3; ++a) b.dims[a] = b.box.extent(a);
+  b.dtype = manifest_.variables[variable].dtype;
+  b.kind = e.kind;
+  b.constant = e.constant;
+  if (e.kind != BrickKind::kData) return b;
+
+  StepState& s = step_state(step);
+  std::vector<std::byte> chunk(e.chunk_size);
+  s.file.read_at(e.chunk_offset, chunk);
+  chunks_read_ += 1;
+  chunk_bytes_ += chunk.size();
+  const auto what = [&] {
+    return fmt::format("{}: step {} {}", s.file.path().string(), step, describe_node(variable, node));
+  };
+  const std::uint64_t sum = checksum64(chunk);
+  if (sum != e.chunk_checksum) {
+    throw make_error(ErrorCode::kCorrupt, "{}: chunk checksum mismatch (stored {:016x}, computed {:016x})",
+                     what(), e.chunk_checksum, sum);
+  }
+  b.bytes.resize(b.sample_count() * dtype_size(b.dtype));
+  decompress_brick(chunk, b.dtype, b.bytes, what());
+  return b;
+}
+
+std::shared_ptr<const Brick> Store::read_brick(std::uint32_t step, std::uint32_t variable,
+                                               NodeId node, BrickCache& cache) const {
+  const BrickKey key{this, step, variable, node};
+  return cache.get_or_load(key, [&] { return read_brick(step, variable, node); });
+}
+
+StoreReadCounters Store::counters() const {
+  return StoreReadCounters{chunks_read_.load(), chunk_bytes_.load(), index_bytes_.load()};
+}
+
+}  // namespace strielad
