@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
         convert_cmd::register_info(app, action);
         convert_cmd::register_verify(app, action);
         convert_cmd::register_finalize(app, action);
+        convert_cmd::register_export_vdb(app, action);
       }};
   return cli::run_tool(spec, argc, argv);
 }

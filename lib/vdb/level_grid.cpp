@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: Apache-2.0
+// The only translation unit of the library that instantiates OpenVDB templates.
+#include "vdb/level_grid_openvdb.h"
+
+#include <openvdb/io/File.h>
+
+#include <cmath>
+#include <mutex>
+
+#include "core/error.h"
+#include "core/file_io.h"
+
+namespace strielad::vdb {
+namespace {
+
+void initialize_openvdb() {
+  static std::once_flag once;
+  std::call_once(once, [] { openvdb::initialize(); });
+}
+
+void add_axis_metadata(openvdb::GridBase& grid, const char* key, const Axis& axis) {
+  const std::string prefix = std::string("strielad:") + key;
+  grid.insertMeta(prefix + "_name", openvdb::StringMetadata(axis.name));
+  grid.insertMeta(prefix + "_units", openvdb::StringMetadata(axis.units));
+  grid.insertMeta(prefix + "_first", openvdb::DoubleMetadata(axis.values.front()));
+  grid.insertMeta(prefix + "_last", openvdb::DoubleMetadata(axis.values.back()));
+}
+
+}  // namespace
+
+openvdb::FloatGrid::Ptr build_level_grid(const Store& store, std::uint32_t step,
+                                         std::uint32_t variable, std::uint32_t level,
+                                         const LevelGridOptions& options,
+                                         LevelGridSummary* summary_out) {
+  initialize_openvdb();
+  const OctreeLayout& layout = store.octree();
+  if (level >= layout.level_count()) {
+    throw make_error(ErrorCode::kNotFound, "{}: level {} does not exist (the octree has {} levels)",
+                     store.path().string(), level, layout.level_count());
+  }
+  const auto& var = store.manifest().variables.at(variable);
+  const float background = static_cast<float>(options.background);
+  auto grid = openvdb::FloatGrid::create(background);
+  grid->setName(var.name);
+  const LevelShape& shape = layout.level(level);
+  openvdb::math::Mat4d scale(openvdb::math::Mat4d::identity());
+  scale.preScale(openvdb::Vec3d(double(shape.stride[0]), double(shape.stride[1]),
+                                double(shape.stride[2])));
+  grid->setTransform(openvdb::math::Transform::createLinearTransform(scale));
+
+  LevelGridSummary summary;
+  summary.min = INFINITY;
+  summary.max = -INFINITY;
+  auto accessor = grid->getAccessor();
+  for (NodeId n = shape.first_node; n < shape.first_node + shape.node_count(); ++n) {
+    const auto& entry = store.node_entry(step, variable, n);
+    if (entry.kind == format::BrickKind::kEmpty ||
+        (entry.kind == format::BrickKind::kConstant &&
+         static_cast<float>(entry.constant) == background)) {
+      ++summary.bricks_skipped;
+      continue;
+    }
+    const Brick b = store.read_brick(step, variable, n);
+    ++summary.bricks_read;
+    if (b.kind == format::BrickKind::kConstant) {
+      const openvdb::CoordBBox box(
+          openvdb::Coord(int(b.box.lo[0]), int(b.box.lo[1]), int(b.box.lo[2])),
+          openvdb::Coord(int(b.box.hi[0]), int(b.box.hi[1]), int(b.box.hi[2])));
+      grid->tree().fill(box, static_cast<float>(b.constant), true);
+      summary.min = std::min(summary.min, b.constant);
+      summary.max = std::max(summary.max, b.constant);
+      continue;
+    }
+    for (std::size_t z = 0; z < b.dims[2]; ++z)
+      for (std::size_t y = 0; y < b.dims[1]; ++y)
+        for (std::size_t x = 0; x < b.dims[0]; ++x) {
+          const double v = b.sample((z * b.dims[1] + y) * b.dims[0] + x);
+          if (std::isnan(v) || static_cast<float>(v) == background) continue;
+          accessor.setValue(openvdb::Coord(int(b.box.lo[0] + x), int(b.box.lo[1] + y),
+                                           int(b.box.lo[2] + z)),
+                            static_cast<float>(v));
+          summary.min = std::min(summary.min, v);
+          summary.max = std::max(summary.max, v);
+        }
+  }
+  grid->pruneGrid();
+  summary.active_voxels = grid->activeVoxelCount();
+  if (summary.active_voxels == 0) summary.min = summary.max = 0;
+  grid->setGridClass(summary.min >= 0 ? openvdb::GRID_FOG_VOLUME : openvdb::GRID_UNKNOWN);
+  const auto& m = store.manifest();
+  grid->insertMeta("strielad:variable", openvdb::StringMetadata(var.name));
+  grid->insertMeta("strielad:units", openvdb::StringMetadata(var.units));
+  grid->insertMeta("strielad:long_name", openvdb::StringMetadata(var.long_name));
+  grid->insertMeta("strielad:step", openvdb::Int64Metadata(step));
+  grid->insertMeta("strielad:time", openvdb::DoubleMetadata(m.time.values.at(step)));
+  grid->insertMeta("strielad:time_units", openvdb::StringMetadata(m.time.units));
+  grid->insertMeta("strielad:level", openvdb::Int64Metadata(level));
+  add_axis_metadata(*grid, "x", m.x);
+  add_axis_metadata(*grid, "y", m.y);
+  add_axis_metadata(*grid, "z", m.z);
+  if (summary_out) *summary_out = summary;
+  return grid;
+}
+
+LevelGridSummary write_level_vdb(const Store& store, std::uint32_t step, std::uint32_t variable,
+                                 std::uint32_t level, const std::filesystem::path& out,
+                                 const LevelGridOptions& options) {
+  LevelGridSummary summary;
+  auto grid = build_level_grid(store, step, variable, level, options, &summary);
+  const auto temp = temporary_sibling(out);
+  try {
+    openvdb::io::File file(temp.string());
+    file.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
+    file.write(openvdb::GridCPtrVec{grid});
+    file.close();
+  } catch (const openvdb::Exception& e) {
+    std::error_code ignored;
+    std::filesystem::remove(temp, ignored);
+    throw make_error(ErrorCode::kIo, "{}: cannot write VDB file: {}", out.string(), e.what());
+  }
+  std::filesystem::rename(temp, out);
+  return summary;
+}
+
+}  // namespace strielad::vdb

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Installs the Debian 12 packages STRIELAD builds and tests with, only when missing.
+# Usage: scripts/install-deps.sh [--tests]   (--tests adds Slurm, munge and real data)
+set -euo pipefail
+
+packages=(
+  g++ cmake ninja-build pkg-config
+  libhdf5-dev libnetcdf-dev netcdf-bin libblosc-dev libzstd-dev libxxhash-dev
+  libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libtbb-dev
+  libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev
+  libgtest-dev libgmock-dev
+)
+if [[ "${1:-}" == "--tests" ]]; then
+  packages+=(libncarg-data slurm-wlm munge)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [[ ${#missing[@]} -eq 0 ]]; then
+  exit 0
+fi
+
+echo "installing ${#missing[@]} missing packages: ${missing[*]}" >&2
+sudo=()
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || { echo "error: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  sudo=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null
