@@ -18,6 +18,7 @@ int run_tool(const ToolSpec& spec, int argc, char** argv) {
   bool quiet = false;
   app.add_flag("-v,--verbose", verbosity, "More log output (repeat for debug detail)");
   app.add_flag("-q,--quiet", quiet, "Only warnings and errors in the log");
+  app.fallthrough();  // subcommands inherit this: global flags work after a subcommand too
   Action action;
   spec.configure(app, action);
   app.require_subcommand(0, 1);
