@@ -37,7 +37,7 @@ void count_kind(StepCounts& c, const format::IndexEntry& e) {
 
 template <typename T>
 struct Slab {
-  std::shared_ptr<std::vector<T>> planes;
+  std::shared_ptr<T[]> planes;  // not zero-filled: every plane is read or copied in
   std::size_t z_begin = 0, z_end = 0;  // planes held [z_begin, z_end)
   std::uint32_t layer = 0;
   std::vector<EncodedBrick> bricks;
@@ -82,7 +82,7 @@ void convert_variable(Context& ctx, std::uint32_t v) {
 
   // Level 0: read slabs in order (netCDF is serial), encode in parallel, append in order.
   std::uint32_t next_layer = 0;
-  std::shared_ptr<std::vector<T>> previous;
+  std::shared_ptr<T[]> previous;
   std::size_t prev_begin = 0, prev_end = 0;
   const std::size_t tokens = std::max(2, tbb::this_task_arena::max_concurrency());
   tbb::parallel_pipeline(
@@ -100,16 +100,16 @@ void convert_variable(Context& ctx, std::uint32_t v) {
             const std::size_t z_hi = std::min(z_lo + B, nz - 1);
             s->z_begin = z_lo > 0 ? z_lo - 1 : 0;
             s->z_end = std::min(nz - 1, z_hi + 1) + 1;
-            s->planes = std::make_shared<std::vector<T>>((s->z_end - s->z_begin) * plane);
+            s->planes = std::shared_ptr<T[]>(new T[(s->z_end - s->z_begin) * plane]);
             std::size_t read_from = s->z_begin;
             if (previous && prev_begin <= s->z_begin && prev_end > s->z_begin) {
               const std::size_t keep = std::min(prev_end, s->z_end) - s->z_begin;
-              std::memcpy(s->planes->data(), previous->data() + (s->z_begin - prev_begin) * plane,
+              std::memcpy(s->planes.get(), previous.get() + (s->z_begin - prev_begin) * plane,
                           keep * plane * sizeof(T));
               read_from = s->z_begin + keep;
             }
             if (read_from < s->z_end) {
-              std::span<T> out(s->planes->data() + (read_from - s->z_begin) * plane,
+              std::span<T> out(s->planes.get() + (read_from - s->z_begin) * plane,
                                (s->z_end - read_from) * plane);
               ctx.reader.read(v, ctx.step, read_from, s->z_end, out);
               const std::uint64_t bytes = out.size() * src_size;
@@ -124,7 +124,7 @@ void convert_variable(Context& ctx, std::uint32_t v) {
           tbb::make_filter<std::shared_ptr<Slab<T>>, std::shared_ptr<Slab<T>>>(
               tbb::filter_mode::parallel,
               [&](std::shared_ptr<Slab<T>> s) {
-                const PlaneBlock<T> block{s->planes->data(), {nx, ny, s->z_end - s->z_begin},
+                const PlaneBlock<T> block{s->planes.get(), {nx, ny, s->z_end - s->z_begin},
                                           s->z_begin, nz};
                 const std::size_t per_layer = l0.nodes[0] * l0.nodes[1];
                 s->bricks.resize(per_layer);

@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <random>
 
 #include "core/error.h"
 
@@ -33,8 +34,18 @@ void write_all(int fd, std::span<const std::byte> bytes, const std::filesystem::
 }  // namespace
 
 std::filesystem::path temporary_sibling(const std::filesystem::path& path) {
+  // Host, pid and a random part: processes on different nodes of a shared file system,
+  // or in different pid namespaces, can have the same pid.
+  char host[256] = "host";
+  ::gethostname(host, sizeof host - 1);
+  host[sizeof host - 1] = '\0';
+  for (char* c = host; *c; ++c) {
+    if (*c == '/' || *c == '.') *c = '_';
+  }
+  static thread_local std::mt19937_64 rng{std::random_device{}() ^
+                                          (std::uint64_t(::getpid()) << 32)};
   auto tmp = path;
-  tmp += fmt::format(".tmp.{}", ::getpid());
+  tmp += fmt::format(".tmp.{}.{}.{:08x}", host, ::getpid(), static_cast<std::uint32_t>(rng()));
   return tmp;
 }
 
@@ -115,7 +126,7 @@ void ReadOnlyFile::read_at(std::uint64_t offset, std::span<std::byte> out) const
 
 AtomicOutputFile::AtomicOutputFile(std::filesystem::path final_path)
     : final_path_(std::move(final_path)), temp_path_(temporary_sibling(final_path_)) {
-  fd_ = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  fd_ = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd_ < 0) throw io_error("create", temp_path_, errno);
 }
 

@@ -19,7 +19,8 @@ std::vector<std::byte> read_file_bytes(const std::filesystem::path& path);
 // file or the new one, never a mix; the temporary is removed on failure.
 void write_file_atomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
 
-// Name of the temporary sibling used while `path` is being written (unique per process).
+// Name of a fresh temporary sibling for writing `path`: "NAME.tmp.HOST.PID.RANDOM", unique
+// across processes, hosts and pid namespaces (it is created with O_EXCL).
 std::filesystem::path temporary_sibling(const std::filesystem::path& path);
 
 void fsync_directory(const std::filesystem::path& dir);

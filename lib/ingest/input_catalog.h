@@ -41,6 +41,8 @@ struct VariableMeta {
   // CF attributes as found (in the source's packed units); absent when not set.
   std::optional<double> fill_value, missing_value, valid_min, valid_max;
   std::optional<double> scale_factor, add_offset;
+  // Every value of missing_value (CF allows a vector); missing_value is the first one.
+  std::vector<double> missing_values;
 };
 
 struct VariableLocation {

@@ -3,6 +3,8 @@
 
 #include <blosc.h>
 
+#include <memory>
+
 #include "core/error.h"
 
 namespace strielad {
@@ -12,16 +14,23 @@ std::vector<std::byte> compress_brick(std::span<const std::byte> samples, DType 
   const int shuffle = codec.shuffle == "bit"    ? BLOSC_BITSHUFFLE
                       : codec.shuffle == "byte" ? BLOSC_SHUFFLE
                                                 : BLOSC_NOSHUFFLE;
-  std::vector<std::byte> out(samples.size() + BLOSC_MAX_OVERHEAD);
+  // Scratch space is reused per thread and never zero-filled: only the bytes Blosc
+  // writes are copied out.
+  static thread_local std::unique_ptr<std::byte[]> scratch;
+  static thread_local std::size_t scratch_size = 0;
+  const std::size_t need = samples.size() + BLOSC_MAX_OVERHEAD;
+  if (scratch_size < need) {
+    scratch.reset(new std::byte[need]);
+    scratch_size = need;
+  }
   const int n = blosc_compress_ctx(codec.level, shuffle, dtype_size(dtype), samples.size(),
-                                   samples.data(), out.data(), out.size(), codec.name.c_str(),
+                                   samples.data(), scratch.get(), need, codec.name.c_str(),
                                    /*blocksize=*/0, /*numinternalthreads=*/1);
   if (n <= 0) {
     throw make_error(ErrorCode::kInternal, "blosc compression with codec '{}' failed (code {})",
                      codec.name, n);
   }
-  out.resize(static_cast<std::size_t>(n));
-  return out;
+  return std::vector<std::byte>(scratch.get(), scratch.get() + n);
 }
 
 void decompress_brick(std::span<const std::byte> chunk, DType dtype, std::span<std::byte> out,

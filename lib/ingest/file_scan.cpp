@@ -1,0 +1,410 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "ingest/file_scan.h"
+
+#include <fmt/format.h>
+#include <netcdf.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <map>
+#include <mutex>
+#include <set>
+
+#include "ingest/cf_attributes.h"
+#include "ingest/cf_axis_detection.h"
+#include "ingest/classic_layout.h"
+#include "ingest/netcdf_call.h"
+#include "ingest/netcdf_file.h"
+#include "ingest/source_file.h"
+
+namespace strielad::ingest {
+
+const ScannedVariable* ScannedFile::find(std::string_view name) const {
+  for (const auto& v : variables) {
+    if (v.name == name) return &v;
+  }
+  return nullptr;
+}
+
+namespace {
+
+constexpr std::string_view kRemapAdvice =
+    "only rectilinear lon/lat grids are supported — remap it first (e.g. cdo remapcon)";
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+CoordinateAttributes read_coordinate_attributes(int grpid, int varid) {
+  CoordinateAttributes a;
+  a.name = variable_name(grpid, varid);
+  a.axis = text_attribute_or_empty(grpid, varid, "axis");
+  a.standard_name = text_attribute_or_empty(grpid, varid, "standard_name");
+  a.units = text_attribute_or_empty(grpid, varid, "units");
+  a.long_name = text_attribute_or_empty(grpid, varid, "long_name");
+  a.positive = text_attribute_or_empty(grpid, varid, "positive");
+  a.has_formula_terms = has_attribute(grpid, varid, "formula_terms");
+  return a;
+}
+
+std::string join(const std::vector<std::string>& words, std::string_view sep) {
+  std::string out;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (i > 0) out += sep;
+    out += words[i];
+  }
+  return out;
+}
+
+bool is_unstructured_dimension_name(std::string_view name) {
+  static constexpr std::array<std::string_view, 14> kNames{
+      "ncells", "ncell",  "cell",  "cells",     "ncol",        "ncols",           "nod2",
+      "nod2d",  "nelem",  "elem",  "nodes",     "nmesh2d_face", "mesh2d_nfaces", "nvertex"};
+  const std::string l = lower(name);
+  return std::find(kNames.begin(), kNames.end(), l) != kNames.end();
+}
+
+struct Coordinate {
+  CoordinateAttributes attrs;
+  std::string calendar;
+  DimensionRole role = DimensionRole::kUnknown;
+  std::vector<double> values;
+};
+
+struct LonLatVariable {
+  std::string name;
+  std::vector<int> dimids;
+};
+
+class FileScanner {
+ public:
+  FileScanner(std::string display, int ncid) : file_(std::move(display)), ncid_(ncid) {
+    for (int g : all_groups(ncid_)) {
+      const int nvars = variable_count(g);
+      for (int v = 0; v < nvars; ++v) {
+        for (const char* attr : {"bounds", "coordinates", "climatology"}) {
+          for (auto& word : split_words(text_attribute_or_empty(g, v, attr))) {
+            auxiliary_.insert(std::move(word));
+          }
+        }
+      }
+    }
+  }
+
+  std::vector<ScannedVariable> scan_all() {
+    std::vector<ScannedVariable> out;
+    for (int g : all_groups(ncid_)) {
+      const std::string path = group_path(g);
+      const std::string prefix = path.empty() ? std::string() : path + "/";
+      const int nvars = variable_count(g);
+      for (int v = 0; v < nvars; ++v) out.push_back(scan_variable(g, v, prefix));
+    }
+    return out;
+  }
+
+ private:
+  ScannedVariable scan_variable(int grpid, int varid, const std::string& prefix);
+  const Coordinate& coordinate(const VariableRef& ref, bool unlimited);
+  std::optional<Error> detect_unstructured(int grpid, int varid, const std::string& name,
+                                           const std::vector<int>& dimids,
+                                           const std::vector<std::optional<VariableRef>>& coords);
+  const std::vector<LonLatVariable>& lonlat_variables(int grpid);
+  std::optional<LonLatVariable> lonlat_variable(int grpid, const std::string& name);
+
+  std::string file_;
+  int ncid_;
+  std::set<std::string> auxiliary_;
+  std::map<std::pair<int, int>, Coordinate> coordinates_;
+  std::map<int, std::vector<LonLatVariable>> lonlat_by_group_;
+};
+
+const Coordinate& FileScanner::coordinate(const VariableRef& ref, bool unlimited) {
+  const auto key = std::make_pair(ref.grpid, ref.varid);
+  if (auto it = coordinates_.find(key); it != coordinates_.end()) return it->second;
+  Coordinate c;
+  c.attrs = read_coordinate_attributes(ref.grpid, ref.varid);
+  c.calendar = text_attribute_or_empty(ref.grpid, ref.varid, "calendar");
+  c.role = detect_dimension_role(c.attrs, unlimited);
+  if (is_numeric_type(variable_type(ref.grpid, ref.varid))) {
+    c.values = read_all_as_double(ref.grpid, ref.varid,
+                                  fmt::format("{}: coordinate variable '{}'", file_, c.attrs.name));
+  }
+  return coordinates_.emplace(key, std::move(c)).first->second;
+}
+
+const std::vector<LonLatVariable>& FileScanner::lonlat_variables(int grpid) {
+  if (auto it = lonlat_by_group_.find(grpid); it != lonlat_by_group_.end()) return it->second;
+  std::vector<LonLatVariable> found;
+  const int nvars = variable_count(grpid);
+  for (int v = 0; v < nvars; ++v) {
+    const auto dimids = variable_dimids(grpid, v);
+    const auto attrs = read_coordinate_attributes(grpid, v);
+    if (dimids.empty()) continue;
+    if (dimids.size() == 1 && dimension_name(grpid, dimids[0]) == attrs.name) continue;
+    if (looks_like_longitude(attrs) || looks_like_latitude(attrs)) {
+      found.push_back({attrs.name, dimids});
+    }
+  }
+  return lonlat_by_group_.emplace(grpid, std::move(found)).first->second;
+}
+
+std::optional<LonLatVariable> FileScanner::lonlat_variable(int grpid, const std::string& name) {
+  for (std::optional<int> g = grpid; g; g = parent_group(*g)) {
+    int varid = -1;
+    if (nc_inq_varid(*g, name.c_str(), &varid) != NC_NOERR) continue;
+    const auto attrs = read_coordinate_attributes(*g, varid);
+    if (!looks_like_longitude(attrs) && !looks_like_latitude(attrs)) return std::nullopt;
+    return LonLatVariable{name, variable_dimids(*g, varid)};
+  }
+  return std::nullopt;
+}
+
+std::optional<Error> FileScanner::detect_unstructured(
+    int grpid, int varid, const std::string& name, const std::vector<int>& dimids,
+    const std::vector<std::optional<VariableRef>>& coords) {
+  auto index_of = [&](int dimid) -> std::optional<std::size_t> {
+    for (std::size_t i = 0; i < dimids.size(); ++i) {
+      if (dimids[i] == dimid) return i;
+    }
+    return std::nullopt;
+  };
+  // A dimension is horizontally unresolved when it has no coordinate variable, or one
+  // that is not a longitude or latitude (projection x/y in metres, for instance).
+  auto unresolved = [&](std::size_t i) {
+    if (!coords[i]) return true;
+    const auto attrs = read_coordinate_attributes(coords[i]->grpid, coords[i]->varid);
+    const std::string sn = lower(attrs.standard_name);
+    return !(looks_like_longitude(attrs) || looks_like_latitude(attrs) ||
+             sn == "grid_longitude" || sn == "grid_latitude");
+  };
+
+  std::vector<LonLatVariable> candidates;
+  for (const auto& word : split_words(text_attribute_or_empty(grpid, varid, "coordinates"))) {
+    if (auto v = lonlat_variable(grpid, word)) candidates.push_back(*v);
+  }
+  if (candidates.empty()) {
+    for (std::optional<int> g = grpid; g; g = parent_group(*g)) {
+      for (const auto& v : lonlat_variables(*g)) candidates.push_back(v);
+    }
+  }
+
+  // Unstructured: 1D lon/lat variables over a dimension without coordinate variable.
+  for (std::size_t i = 0; i < dimids.size(); ++i) {
+    if (coords[i]) continue;
+    std::vector<std::string> names;
+    for (const auto& c : candidates) {
+      if (c.dimids.size() == 1 && c.dimids[0] == dimids[i]) names.push_back(c.name);
+    }
+    const std::string dim = dimension_name(grpid, dimids[i]);
+    if (!names.empty() || is_unstructured_dimension_name(dim)) {
+      const std::string coordinates =
+          names.empty() ? std::string() : ", coordinates " + join(names, " ");
+      return make_error(ErrorCode::kUnsupported,
+                        "{}: variable '{}' is on an unstructured grid (dimension '{}'{}); {}",
+                        file_, name, dim, coordinates, kRemapAdvice);
+    }
+  }
+  // Curvilinear: 2D lon/lat variables over dimensions of this variable that are not
+  // themselves longitude and latitude.
+  for (const auto& c : candidates) {
+    if (c.dimids.size() < 2) continue;
+    bool all_ours = true, any_unresolved = false;
+    std::vector<std::string> dim_names;
+    for (int d : c.dimids) {
+      const auto i = index_of(d);
+      if (!i) {
+        all_ours = false;
+        break;
+      }
+      any_unresolved = any_unresolved || unresolved(*i);
+      dim_names.push_back("'" + dimension_name(grpid, d) + "'");
+    }
+    if (!all_ours || !any_unresolved) continue;
+    std::vector<std::string> names;
+    for (const auto& o : candidates) {
+      if (o.dimids == c.dimids) names.push_back(o.name);
+    }
+    return make_error(ErrorCode::kUnsupported,
+                      "{}: variable '{}' is on a curvilinear grid (dimensions {}, 2D coordinates "
+                      "{}); {}",
+                      file_, name, join(dim_names, ", "), join(names, " "), kRemapAdvice);
+  }
+  return std::nullopt;
+}
+
+ScannedVariable FileScanner::scan_variable(int grpid, int varid, const std::string& prefix) {
+  ScannedVariable sv;
+  const std::string short_name = variable_name(grpid, varid);
+  sv.name = prefix + short_name;
+  const int type = variable_type(grpid, varid);
+  const std::vector<int> dimids = variable_dimids(grpid, varid);
+  for (int d : dimids) sv.dimensions.push_back(dimension_name(grpid, d));
+  const bool is_coordinate = dimids.size() == 1 && sv.dimensions[0] == short_name;
+  sv.auxiliary = is_coordinate || auxiliary_.count(short_name) > 0;
+  const std::string dims_text = "(" + join(sv.dimensions, ", ") + ")";
+
+  auto fail = [&](VariableClass klass, Error error) {
+    sv.klass = klass;
+    sv.problem = std::move(error);
+    return std::move(sv);
+  };
+  constexpr std::string_view k3dOnly =
+      "only 3D variables (vertical, lat, lon), optionally with a leading time dimension, are "
+      "supported";
+
+  if (is_coordinate) {
+    return fail(VariableClass::kNotGridded,
+                make_error(ErrorCode::kUnsupported,
+                           "{}: '{}' is a coordinate variable, not a data variable", file_,
+                           sv.name));
+  }
+  if (!is_numeric_type(type)) {
+    return fail(VariableClass::kNotGridded,
+                make_error(ErrorCode::kUnsupported,
+                           "{}: variable '{}' has type {}; only numeric variables can be converted",
+                           file_, sv.name, nc_type_name(type)));
+  }
+
+  std::vector<std::optional<VariableRef>> coords;
+  std::vector<std::string> missing;
+  for (std::size_t i = 0; i < dimids.size(); ++i) {
+    coords.push_back(find_coordinate_variable(grpid, dimids[i]));
+    if (!coords.back()) missing.push_back(sv.dimensions[i]);
+  }
+  if (auto e = detect_unstructured(grpid, varid, sv.name, dimids, coords)) {
+    return fail(VariableClass::kUnstructured, std::move(*e));
+  }
+  if (!missing.empty()) {
+    return fail(dimids.size() >= 3 ? VariableClass::kInvalid : VariableClass::kNotGridded,
+                make_error(ErrorCode::kInvalidInput,
+                           "{}: variable '{}' dimension '{}' has no coordinate variable", file_,
+                           sv.name, missing.front()));
+  }
+  if (dimids.size() < 3 || dimids.size() > 4) {
+    return fail(VariableClass::kNotGridded,
+                make_error(ErrorCode::kUnsupported, "{}: variable '{}' has dimensions {}; {}",
+                           file_, sv.name, dims_text, k3dOnly));
+  }
+
+  // Roles from metadata, then the COARDS position for what metadata leaves open.
+  std::vector<DimensionRole> roles;
+  for (std::size_t i = 0; i < dimids.size(); ++i) {
+    roles.push_back(coordinate(*coords[i], is_unlimited_dimension(grpid, dimids[i])).role);
+  }
+  using R = DimensionRole;
+  const bool has_time_role = std::count(roles.begin(), roles.end(), R::kTime) > 0;
+  const std::vector<R> positional = dimids.size() == 4 ? std::vector<R>{R::kTime, R::kVertical, R::kLatitude, R::kLongitude}
+                                    : has_time_role     ? std::vector<R>{R::kTime, R::kLatitude, R::kLongitude}
+                                                        : std::vector<R>{R::kVertical, R::kLatitude, R::kLongitude};
+  for (std::size_t i = 0; i < roles.size(); ++i) {
+    if (roles[i] != R::kUnknown) continue;
+    if (std::count(roles.begin(), roles.end(), positional[i]) == 0) roles[i] = positional[i];
+  }
+  std::vector<std::string> role_names;
+  for (R r : roles) role_names.emplace_back(dimension_role_name(r));
+  const std::string roles_text = "(" + join(role_names, ", ") + ")";
+  for (std::size_t i = 0; i < roles.size(); ++i) {
+    if (roles[i] == R::kUnknown) {
+      return fail(VariableClass::kInvalid,
+                  make_error(ErrorCode::kUnsupported,
+                             "{}: variable '{}': cannot tell what dimension '{}' is: its "
+                             "coordinate variable has no axis, standard_name, units or positive "
+                             "attribute that identifies it",
+                             file_, sv.name, sv.dimensions[i]));
+    }
+  }
+  for (R r : {R::kTime, R::kVertical, R::kLatitude, R::kLongitude}) {
+    if (std::count(roles.begin(), roles.end(), r) > 1) {
+      return fail(VariableClass::kInvalid,
+                  make_error(ErrorCode::kUnsupported,
+                             "{}: variable '{}' has dimensions {} = {}: more than one {} dimension",
+                             file_, sv.name, dims_text, roles_text, dimension_role_name(r)));
+    }
+  }
+  for (R r : {R::kLongitude, R::kLatitude, R::kVertical}) {
+    if (std::count(roles.begin(), roles.end(), r) == 0) {
+      return fail(VariableClass::kNotGridded,
+                  make_error(ErrorCode::kUnsupported,
+                             "{}: variable '{}' has no {} dimension (dimensions {} = {}); {}",
+                             file_, sv.name, dimension_role_name(r), dims_text, roles_text,
+                             k3dOnly));
+    }
+  }
+  const std::vector<R> expected =
+      roles.size() == 4 ? std::vector<R>{R::kTime, R::kVertical, R::kLatitude, R::kLongitude}
+                        : std::vector<R>{R::kVertical, R::kLatitude, R::kLongitude};
+  if (roles != expected) {
+    std::vector<std::string> reordered;
+    for (R want : expected) {
+      for (std::size_t i = 0; i < roles.size(); ++i) {
+        if (roles[i] == want) reordered.push_back(sv.dimensions[i]);
+      }
+    }
+    return fail(VariableClass::kInvalid,
+                make_error(ErrorCode::kUnsupported,
+                           "{}: variable '{}' has dimensions {} = {}; the order must be (time, "
+                           "vertical, lat, lon) as COARDS/CF recommend — reorder it first, e.g. "
+                           "with ncpdq -a {} in.nc out.nc",
+                           file_, sv.name, dims_text, roles_text, join(reordered, ",")));
+  }
+
+  const std::size_t first_spatial = roles.size() - 3;
+  auto make_axis = [&](std::size_t i, AxisKind kind) {
+    const Coordinate& c = coordinate(*coords[i], false);
+    Axis a;
+    a.name = c.attrs.name;
+    a.kind = kind == AxisKind::kOther ? detect_vertical_kind(c.attrs) : kind;
+    a.units = c.attrs.units;
+    a.standard_name = c.attrs.standard_name;
+    a.long_name = c.attrs.long_name;
+    a.positive = lower(c.attrs.positive);
+    a.values = c.values;
+    return a;
+  };
+  try {
+    sv.z = make_axis(first_spatial, AxisKind::kOther);
+    sv.y = make_axis(first_spatial + 1, AxisKind::kLatitude);
+    sv.x = make_axis(first_spatial + 2, AxisKind::kLongitude);
+    for (const Axis* a : {&sv.x, &sv.y, &sv.z}) check_axis_values(*a, file_);
+    if (roles.size() == 4) {
+      const Coordinate& c = coordinate(*coords[0], false);
+      TimeCoordinate t{c.attrs.name, c.attrs.units, c.calendar, c.values};
+      Axis as_axis;
+      as_axis.name = t.name;
+      as_axis.values = t.values;
+      check_axis_values(as_axis, file_);
+      sv.time = std::move(t);
+    }
+  } catch (const Error& e) {
+    return fail(VariableClass::kInvalid, e);
+  }
+  sv.meta = read_variable_meta(grpid, varid, sv.name);
+  sv.value_attributes = read_value_attributes(grpid, varid);
+  sv.klass = VariableClass::kGrid3D;
+  return sv;
+}
+
+}  // namespace
+
+ScannedFile scan_file(const std::filesystem::path& path) {
+  ScannedFile out;
+  out.source = describe_source_file(path);
+  const std::string& display = out.source.path;
+  check_classic_not_truncated(path);
+  try {
+    std::lock_guard lock(netcdf_mutex());
+    NcFile file{std::filesystem::path(display)};
+    out.format = file.format();
+    FileScanner scanner(display, file.id());
+    out.variables = scanner.scan_all();
+  } catch (const Error& e) {
+    if (std::string_view(e.what()).substr(0, display.size()) == display) throw;
+    throw e.with_context(display);
+  }
+  return out;
+}
+
+}  // namespace strielad::ingest

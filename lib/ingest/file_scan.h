@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: Apache-2.0
+// Scans one input file: every variable of every group, classified as a usable
+// (time?, vertical, lat, lon) field on a rectilinear grid, or not, with the reason kept
+// as an Error so that the caller decides whether it matters (it does when the variable
+// was asked for, and is only logged when the variable would merely have been picked by
+// default).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "grid/axis.h"
+#include "ingest/input_catalog.h"
+#include "ingest/variable_meta.h"
+
+namespace strielad::ingest {
+
+struct TimeCoordinate {
+  std::string name, units, calendar;
+  std::vector<double> values;  // as stored in this file (strictly monotonic)
+};
+
+enum class VariableClass {
+  kGrid3D,        // (time?, vertical, lat, lon) on a rectilinear grid: usable
+  kNotGridded,    // not a 3D lon/lat field: coordinates, 2D fields, zonal means, text...
+  kUnstructured,  // on an unstructured or curvilinear horizontal grid
+  kInvalid,       // a 3D field that cannot be used as stored: missing coordinate
+                  // variable, non-monotonic axis, wrong dimension order...
+};
+
+struct ScannedVariable {
+  std::string name;  // store name: "T" or "grp1/T"
+  VariableClass klass = VariableClass::kNotGridded;
+  std::optional<Error> problem;  // why it is not kGrid3D
+  bool auxiliary = false;        // a coordinate, bounds or auxiliary coordinate variable
+  std::vector<std::string> dimensions;
+  // kGrid3D only:
+  Axis x, y, z;
+  std::optional<TimeCoordinate> time;  // absent: the variable has no time dimension
+  VariableMeta meta;
+  CfValueAttributes value_attributes;
+};
+
+struct ScannedFile {
+  SourceFile source;  // source.path is the name used in messages
+  int format = 0;     // NC_FORMAT_*
+  std::vector<ScannedVariable> variables;
+
+  const ScannedVariable* find(std::string_view name) const;
+};
+
+// Throws for a file that cannot be used at all: kNotFound (missing), kInvalidInput (not
+// netCDF, truncated), kIo. Takes netcdf_mutex() itself.
+ScannedFile scan_file(const std::filesystem::path& path);
+
+}  // namespace strielad::ingest

@@ -1,0 +1,278 @@
+// SPDX-License-Identifier: Apache-2.0
+// scan_inputs: scans every file, selects the variables, and merges the files into one
+// catalog: one grid (identical in every file), one time axis (sorted, every variable at
+// every step found in exactly one file), and consistent CF attributes per variable.
+#include "ingest/input_catalog.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <set>
+
+#include "core/error.h"
+#include "ingest/file_scan.h"
+#include "ingest/grid_compare.h"
+#include "ingest/netcdf_file.h"
+#include "ingest/variable_selection.h"
+
+namespace strielad::ingest {
+namespace {
+
+struct Occurrence {
+  std::size_t file = 0;
+  const ScannedVariable* variable = nullptr;
+};
+
+std::string normalized_calendar(std::string_view calendar) {
+  std::string c(calendar);
+  for (char& ch : c) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (c.empty() || c == "gregorian") return "standard";
+  return c;
+}
+
+std::string describe_time_units(const ScannedVariable& v) {
+  if (!v.time) return "no time dimension";
+  return fmt::format("time units '{}' (calendar '{}')", v.time->units, v.time->calendar);
+}
+
+std::string time_text(double value, const std::optional<TimeCoordinate>& time) {
+  if (!time) return "(the single step of a file without time dimension)";
+  return time->units.empty() ? fmt::format("{}", value)
+                             : fmt::format("{} ({})", value, time->units);
+}
+
+template <typename T>
+std::string optional_text(const std::optional<T>& v) {
+  return v ? fmt::format("{}", static_cast<double>(*v)) : std::string("none");
+}
+
+// Attributes that decide how raw samples become values must agree across files.
+void check_same_attributes(const ScannedVariable& got, const std::string& got_file,
+                           const ScannedVariable& want, const std::string& want_file) {
+  auto mismatch = [&](std::string_view what, const std::string& g, const std::string& w) {
+    return make_error(ErrorCode::kInvalidInput, "{}: variable '{}' has {} {} but {} has {}",
+                      got_file, got.name, what, g, want_file, w);
+  };
+  const CfValueAttributes& a = got.value_attributes;
+  const CfValueAttributes& b = want.value_attributes;
+  if (got.meta.source_type != want.meta.source_type) {
+    throw mismatch("type", got.meta.source_type, want.meta.source_type);
+  }
+  if (a.scale_factor != b.scale_factor) {
+    throw mismatch("scale_factor", optional_text(a.scale_factor), optional_text(b.scale_factor));
+  }
+  if (a.add_offset != b.add_offset) {
+    throw mismatch("add_offset", optional_text(a.add_offset), optional_text(b.add_offset));
+  }
+  if (got.meta.store_type != want.meta.store_type) {
+    throw mismatch("packing attribute type", std::string(dtype_name(got.meta.store_type)),
+                   std::string(dtype_name(want.meta.store_type)));
+  }
+  // NaN fill values compare unequal to themselves: compare their text.
+  if (optional_text(a.fill_value) != optional_text(b.fill_value)) {
+    throw mismatch("_FillValue", optional_text(a.fill_value), optional_text(b.fill_value));
+  }
+  auto list_text = [](const std::vector<long double>& v) {
+    std::vector<double> d(v.begin(), v.end());
+    return d.empty() ? std::string("none") : fmt::format("{}", fmt::join(d, " "));
+  };
+  if (list_text(a.missing_values) != list_text(b.missing_values)) {
+    throw mismatch("missing_value", list_text(a.missing_values), list_text(b.missing_values));
+  }
+  if (a.valid_min != b.valid_min) {
+    throw mismatch("valid_min", optional_text(a.valid_min), optional_text(b.valid_min));
+  }
+  if (a.valid_max != b.valid_max) {
+    throw mismatch("valid_max", optional_text(a.valid_max), optional_text(b.valid_max));
+  }
+  if (got.meta.units != want.meta.units) {
+    throw mismatch("units", "'" + got.meta.units + "'", "'" + want.meta.units + "'");
+  }
+}
+
+}  // namespace
+
+std::size_t InputCatalog::variable_index(std::string_view name) const {
+  std::string_view n = name;
+  while (!n.empty() && n.front() == '/') n.remove_prefix(1);
+  for (std::size_t i = 0; i < variables.size(); ++i) {
+    if (variables[i].name == n) return i;
+  }
+  std::vector<std::string> names;
+  for (const auto& v : variables) names.push_back(v.name);
+  throw make_error(ErrorCode::kNotFound, "variable '{}' is not among the converted variables ({})",
+                   name, fmt::join(names, ", "));
+}
+
+InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
+                         const ScanOptions& options) {
+  if (inputs.empty()) throw make_error(ErrorCode::kInvalidArgument, "no input files given");
+
+  std::vector<ScannedFile> files;
+  std::map<std::string, std::size_t> seen_paths;
+  for (const auto& path : inputs) {
+    files.push_back(scan_file(path));
+    const std::string& p = files.back().source.path;
+    if (!seen_paths.emplace(p, files.size() - 1).second) {
+      throw make_error(ErrorCode::kInvalidArgument, "{}: input file given twice", p);
+    }
+  }
+
+  const std::vector<std::string> names = select_variables(files, options.variables);
+
+  // Every occurrence of a selected variable must be usable.
+  std::vector<std::vector<Occurrence>> occurrences(names.size());
+  for (std::size_t v = 0; v < names.size(); ++v) {
+    for (std::size_t f = 0; f < files.size(); ++f) {
+      const ScannedVariable* sv = files[f].find(names[v]);
+      if (sv == nullptr) continue;
+      if (sv->klass != VariableClass::kGrid3D) throw *sv->problem;
+      occurrences[v].push_back({f, sv});
+    }
+  }
+
+  auto file_name = [&](std::size_t f) -> const std::string& { return files[f].source.path; };
+
+  // One grid: each variable matches itself across files, and the first variable.
+  const Occurrence& reference = occurrences[0][0];
+  for (std::size_t v = 0; v < names.size(); ++v) {
+    const Occurrence& first = occurrences[v][0];
+    if (v > 0) {
+      const auto& r = *reference.variable;
+      if (auto d = grid_difference(first.variable->x, first.variable->y, first.variable->z, r.x,
+                                   r.y, r.z, fmt::format("variable '{}'", r.name))) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: variable '{}' is not on the grid of variable '{}' ({}): {}",
+                         file_name(first.file), names[v], r.name, file_name(reference.file), *d);
+      }
+    }
+    for (std::size_t o = 1; o < occurrences[v].size(); ++o) {
+      const Occurrence& occ = occurrences[v][o];
+      const auto& a = *occ.variable;
+      const auto& b = *first.variable;
+      if (auto d = grid_difference(a.x, a.y, a.z, b.x, b.y, b.z, file_name(first.file))) {
+        throw make_error(ErrorCode::kInvalidInput, "{}: {} (variable '{}')", file_name(occ.file),
+                         *d, names[v]);
+      }
+      check_same_attributes(a, file_name(occ.file), b, file_name(first.file));
+    }
+  }
+
+  InputCatalog catalog;
+  for (const auto& f : files) catalog.files.push_back(f.source);
+  catalog.x = reference.variable->x;
+  catalog.y = reference.variable->y;
+  catalog.z = reference.variable->z;
+  for (std::size_t v = 0; v < names.size(); ++v) {
+    catalog.variables.push_back(occurrences[v][0].variable->meta);
+  }
+
+  // Time: the same units and calendar everywhere (the first occurrence in file order
+  // is the reference), each (variable, time) in exactly one file.
+  const Occurrence* time_reference = nullptr;
+  for (std::size_t f = 0; f < files.size() && time_reference == nullptr; ++f) {
+    for (std::size_t v = 0; v < names.size() && time_reference == nullptr; ++v) {
+      for (const auto& occ : occurrences[v]) {
+        if (occ.file == f) {
+          time_reference = &occ;
+          break;
+        }
+      }
+    }
+  }
+  const ScannedVariable& tref = *time_reference->variable;
+  std::vector<std::map<double, VariableLocation>> steps(names.size());
+  for (std::size_t v = 0; v < names.size(); ++v) {
+    for (const Occurrence& occ : occurrences[v]) {
+      const ScannedVariable& sv = *occ.variable;
+      const bool same =
+          sv.time.has_value() == tref.time.has_value() &&
+          (!sv.time || (sv.time->units == tref.time->units &&
+                        normalized_calendar(sv.time->calendar) ==
+                            normalized_calendar(tref.time->calendar)));
+      if (!same) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: variable '{}' has {} but {} has {} (variable '{}'); all inputs must "
+                         "use the same time units and calendar",
+                         file_name(occ.file), sv.name, describe_time_units(sv),
+                         file_name(time_reference->file), describe_time_units(tref), tref.name);
+      }
+      const std::vector<double> values = sv.time ? sv.time->values : std::vector<double>{0.0};
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        auto [it, inserted] = steps[v].emplace(values[i], VariableLocation{occ.file, i});
+        if (inserted) continue;
+        if (!sv.time) {
+          throw make_error(ErrorCode::kInvalidInput,
+                           "variable '{}' has no time dimension in both {} and {}: files without "
+                           "a time dimension can hold only one step of a variable",
+                           sv.name, file_name(it->second.file), file_name(occ.file));
+        }
+        throw make_error(ErrorCode::kInvalidInput,
+                         "variable '{}' time {} is in both {} and {} (duplicate time step)",
+                         sv.name, time_text(values[i], sv.time), file_name(it->second.file),
+                         file_name(occ.file));
+      }
+    }
+  }
+  std::set<double> all_times;
+  for (const auto& s : steps) {
+    for (const auto& [t, loc] : s) all_times.insert(t);
+  }
+  for (std::size_t v = 0; v < names.size(); ++v) {
+    if (steps[v].size() == all_times.size()) continue;
+    for (double t : all_times) {
+      if (steps[v].count(t)) continue;
+      for (std::size_t w = 0; w < names.size(); ++w) {
+        auto it = steps[w].find(t);
+        if (it == steps[w].end()) continue;
+        throw make_error(ErrorCode::kInvalidInput,
+                         "variable '{}' has no time step {}, which {} has for variable '{}'; "
+                         "every variable must have the same time steps",
+                         names[v], time_text(t, tref.time), file_name(it->second.file),
+                         names[w]);
+      }
+    }
+  }
+
+  const std::vector<double> merged(all_times.begin(), all_times.end());
+  const std::size_t n = merged.size();
+  const std::size_t first = options.first_step.value_or(0);
+  const std::size_t last = options.last_step.value_or(n - 1);
+  auto out_of_range = [&](std::string_view which, std::size_t step) {
+    return make_error(ErrorCode::kInvalidArgument,
+                      "{} time step {} requested but the inputs have {} time step{} (0..{})",
+                      which, step, n, n == 1 ? "" : "s", n - 1);
+  };
+  if (first >= n) throw out_of_range("first", first);
+  if (last >= n) throw out_of_range("last", last);
+  if (first > last) {
+    throw make_error(ErrorCode::kInvalidArgument, "first time step {} is after last time step {}",
+                     first, last);
+  }
+
+  if (tref.time) {
+    catalog.time.name = tref.time->name;
+    catalog.time.units = tref.time->units;
+    catalog.time.calendar = tref.time->calendar;
+  }
+  catalog.time.values.assign(merged.begin() + static_cast<std::ptrdiff_t>(first),
+                             merged.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+  catalog.locations.resize(names.size());
+  for (std::size_t v = 0; v < names.size(); ++v) {
+    for (double t : catalog.time.values) catalog.locations[v].push_back(steps[v].at(t));
+  }
+
+  spdlog::info("{} input file{}: {} variable{} ({}) on a {} x {} x {} grid ({} levels), {} of {} "
+               "time step{}",
+               files.size(), files.size() == 1 ? "" : "s", names.size(),
+               names.size() == 1 ? "" : "s", fmt::join(names, ", "), catalog.x.size(),
+               catalog.y.size(), catalog.z.size(), axis_kind_name(catalog.z.kind),
+               catalog.time.size(), n, n == 1 ? "" : "s");
+  return catalog;
+}
+
+}  // namespace strielad::ingest

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: Apache-2.0
+// Raw netCDF samples to values, the CF way: a sample is missing (NaN) when it equals
+// _FillValue (or, without one, the netCDF default fill), any missing_value, or lies
+// outside valid_min/valid_max; all compared in the raw (packed) type before unpacking.
+// Then value * scale_factor + add_offset in double, stored in the output type. NaN/Inf
+// that is not declared missing is reported (or masked when nan_as_fill).
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+#include "ingest/variable_meta.h"
+
+namespace strielad::ingest {
+
+struct ConversionResult {
+  // First sample that is NaN/Inf without being declared missing (only reported when
+  // nan_as_fill is false; it is set to NaN in the output either way).
+  std::optional<std::size_t> first_non_finite;
+  double non_finite_value = 0;
+};
+
+namespace detail {
+
+// `v` as a Raw value when a Raw can hold it exactly (integers), or rounded (floats).
+template <typename Raw>
+std::optional<Raw> as_raw(long double v) {
+  if constexpr (std::is_floating_point_v<Raw>) {
+    return static_cast<Raw>(v);
+  } else {
+    if (!std::isfinite(v) || v != std::floor(v)) return std::nullopt;
+    if (v < static_cast<long double>(std::numeric_limits<Raw>::min()) ||
+        v > static_cast<long double>(std::numeric_limits<Raw>::max())) {
+      return std::nullopt;
+    }
+    return static_cast<Raw>(v);
+  }
+}
+
+}  // namespace detail
+
+template <typename Raw, typename Out>
+ConversionResult convert_samples(std::span<const Raw> raw, const CfValueAttributes& attrs,
+                                 bool nan_as_fill, std::span<Out> out) {
+  // Integers of 64 bits are compared in long double (exact), the rest in double.
+  using Cmp = std::conditional_t<std::is_integral_v<Raw> && sizeof(Raw) == 8, long double, double>;
+  constexpr bool kFloating = std::is_floating_point_v<Raw>;
+  constexpr Out kNaN = std::numeric_limits<Out>::quiet_NaN();
+
+  std::vector<Raw> fills;
+  bool nan_is_missing = false;
+  auto add_fill = [&](long double v) {
+    if (std::isnan(v)) {
+      nan_is_missing = true;
+    } else if (auto r = detail::as_raw<Raw>(v)) {
+      fills.push_back(*r);
+    }
+  };
+  if (attrs.fill_value) add_fill(*attrs.fill_value);
+  if (attrs.default_fill) add_fill(*attrs.default_fill);
+  for (long double m : attrs.missing_values) add_fill(m);
+  const bool has_min = attrs.valid_min.has_value() && !std::isnan(*attrs.valid_min);
+  const bool has_max = attrs.valid_max.has_value() && !std::isnan(*attrs.valid_max);
+  const Cmp vmin = has_min ? static_cast<Cmp>(*attrs.valid_min) : Cmp{};
+  const Cmp vmax = has_max ? static_cast<Cmp>(*attrs.valid_max) : Cmp{};
+  const bool packed = attrs.packed();
+  const double scale = attrs.scale_factor.value_or(1.0);
+  const double offset = attrs.add_offset.value_or(0.0);
+
+  ConversionResult result;
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    const Raw r = raw[i];
+    bool missing = false;
+    for (Raw f : fills) missing = missing || r == f;
+    if constexpr (kFloating) missing = missing || (nan_is_missing && std::isnan(r));
+    if (has_min && static_cast<Cmp>(r) < vmin) missing = true;
+    if (has_max && static_cast<Cmp>(r) > vmax) missing = true;
+    if (missing) {
+      out[i] = kNaN;
+      continue;
+    }
+    if constexpr (kFloating) {
+      if (!std::isfinite(r)) {
+        out[i] = kNaN;
+        if (!nan_as_fill && !result.first_non_finite) {
+          result.first_non_finite = i;
+          result.non_finite_value = static_cast<double>(r);
+        }
+        continue;
+      }
+    }
+    if (packed) {
+      out[i] = static_cast<Out>(static_cast<double>(r) * scale + offset);
+    } else {
+      out[i] = static_cast<Out>(r);
+    }
+  }
+  return result;
+}
+
+}  // namespace strielad::ingest

@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: Apache-2.0
+// SlabReader: one nc_get_vara per slab under netcdf_mutex(), conversion outside it.
+// Files stay open between calls (at most kMaxOpenFiles, least recently used closed).
+#include <netcdf.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <mutex>
+#include <system_error>
+
+#include "core/error.h"
+#include "ingest/input_catalog.h"
+#include "ingest/netcdf_call.h"
+#include "ingest/netcdf_file.h"
+#include "ingest/sample_conversion.h"
+#include "ingest/variable_meta.h"
+
+namespace strielad::ingest {
+namespace {
+
+constexpr std::size_t kMaxOpenFiles = 64;
+
+struct VariableHandle {
+  int grpid = -1;
+  int varid = -1;
+  bool has_time = false;
+  std::size_t time_length = 0;
+  CfValueAttributes attrs;
+};
+
+struct OpenFile {
+  NcFile file;
+  std::uint64_t last_use = 0;
+  std::map<std::size_t, VariableHandle> variables;
+};
+
+}  // namespace
+
+struct SlabReader::Impl {
+  InputCatalog catalog;
+  ScanOptions options;
+  // Guarded by netcdf_mutex(), like the netCDF calls that use them.
+  std::map<std::size_t, OpenFile> open;
+  std::uint64_t clock = 0;
+
+  OpenFile& open_file(std::size_t index);
+  const VariableHandle& variable(OpenFile& of, std::size_t file, std::size_t v);
+
+  template <typename Out>
+  void read(std::size_t v, std::size_t t, std::size_t z0, std::size_t z1, std::span<Out> out);
+};
+
+OpenFile& SlabReader::Impl::open_file(std::size_t index) {
+  if (auto it = open.find(index); it != open.end()) {
+    it->second.last_use = ++clock;
+    return it->second;
+  }
+  if (open.size() >= kMaxOpenFiles) {
+    auto oldest = open.begin();
+    for (auto it = open.begin(); it != open.end(); ++it) {
+      if (it->second.last_use < oldest->second.last_use) oldest = it;
+    }
+    open.erase(oldest);
+  }
+  const SourceFile& source = catalog.files[index];
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(source.path, ec);
+  if (ec) {
+    throw make_error(ec == std::errc::no_such_file_or_directory ? ErrorCode::kNotFound
+                                                                  : ErrorCode::kIo,
+                     "{}: cannot read: {}", source.path, ec.message());
+  }
+  if (size != source.size) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: file changed since it was scanned (now {} bytes, was {})", source.path,
+                     size, source.size);
+  }
+  OpenFile of;
+  of.file = NcFile(source.path);
+  of.last_use = ++clock;
+  return open.emplace(index, std::move(of)).first->second;
+}
+
+const VariableHandle& SlabReader::Impl::variable(OpenFile& of, std::size_t file, std::size_t v) {
+  if (auto it = of.variables.find(v); it != of.variables.end()) return it->second;
+  const std::string& path = catalog.files[file].path;
+  const std::string& name = catalog.variables[v].name;
+  VariableHandle h;
+  h.grpid = of.file.id();
+  std::string short_name = name;
+  if (const auto slash = name.rfind('/'); slash != std::string::npos) {
+    const std::string group = "/" + name.substr(0, slash);
+    short_name = name.substr(slash + 1);
+    if (nc_inq_grp_full_ncid(of.file.id(), group.c_str(), &h.grpid) != NC_NOERR) {
+      throw make_error(ErrorCode::kInvalidInput, "{}: group '{}' not found (file changed since "
+                       "it was scanned?)", path, group);
+    }
+  }
+  if (nc_inq_varid(h.grpid, short_name.c_str(), &h.varid) != NC_NOERR) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: variable '{}' not found (file changed since it was scanned?)", path,
+                     name);
+  }
+  const auto dimids = variable_dimids(h.grpid, h.varid);
+  const Dims3 dims = catalog.dims();
+  bool ok = dimids.size() == 3 || dimids.size() == 4;
+  if (ok) {
+    h.has_time = dimids.size() == 4;
+    const std::size_t s = dimids.size() - 3;
+    ok = dimension_length(h.grpid, dimids[s]) == dims.z &&
+         dimension_length(h.grpid, dimids[s + 1]) == dims.y &&
+         dimension_length(h.grpid, dimids[s + 2]) == dims.x;
+    if (h.has_time) h.time_length = dimension_length(h.grpid, dimids[0]);
+  }
+  if (!ok) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: variable '{}' no longer has the shape it had when scanned", path, name);
+  }
+  h.attrs = read_value_attributes(h.grpid, h.varid);
+  if (!is_numeric_type(h.attrs.type)) {
+    throw make_error(ErrorCode::kInvalidInput, "{}: variable '{}' has non-numeric type {}", path,
+                     name, nc_type_name(h.attrs.type));
+  }
+  return of.variables.emplace(v, std::move(h)).first->second;
+}
+
+namespace {
+
+template <typename Raw, typename Out>
+ConversionResult convert_buffer(const std::vector<std::byte>& buffer, std::size_t count,
+                                const CfValueAttributes& attrs, bool nan_as_fill,
+                                std::span<Out> out) {
+  const auto* data = reinterpret_cast<const Raw*>(buffer.data());
+  return convert_samples<Raw, Out>(std::span<const Raw>(data, count), attrs, nan_as_fill, out);
+}
+
+template <typename Out>
+ConversionResult convert_any(int type, const std::vector<std::byte>& buffer, std::size_t count,
+                             const CfValueAttributes& attrs, bool nan_as_fill,
+                             std::span<Out> out) {
+  switch (type) {
+    case NC_BYTE: return convert_buffer<signed char>(buffer, count, attrs, nan_as_fill, out);
+    case NC_UBYTE: return convert_buffer<unsigned char>(buffer, count, attrs, nan_as_fill, out);
+    case NC_SHORT: return convert_buffer<short>(buffer, count, attrs, nan_as_fill, out);
+    case NC_USHORT: return convert_buffer<unsigned short>(buffer, count, attrs, nan_as_fill, out);
+    case NC_INT: return convert_buffer<int>(buffer, count, attrs, nan_as_fill, out);
+    case NC_UINT: return convert_buffer<unsigned int>(buffer, count, attrs, nan_as_fill, out);
+    case NC_INT64: return convert_buffer<long long>(buffer, count, attrs, nan_as_fill, out);
+    case NC_UINT64:
+      return convert_buffer<unsigned long long>(buffer, count, attrs, nan_as_fill, out);
+    case NC_FLOAT: return convert_buffer<float>(buffer, count, attrs, nan_as_fill, out);
+    case NC_DOUBLE: return convert_buffer<double>(buffer, count, attrs, nan_as_fill, out);
+    default:
+      throw make_error(ErrorCode::kInternal, "unexpected netCDF type {}", type);
+  }
+}
+
+}  // namespace
+
+template <typename Out>
+void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::size_t z1,
+                            std::span<Out> out) {
+  if (v >= catalog.variables.size()) {
+    throw make_error(ErrorCode::kInvalidArgument, "variable index {} out of range ({} variables)",
+                     v, catalog.variables.size());
+  }
+  if (t >= catalog.time.size()) {
+    throw make_error(ErrorCode::kInvalidArgument, "time step {} out of range ({} steps)", t,
+                     catalog.time.size());
+  }
+  const Dims3 dims = catalog.dims();
+  if (z0 > z1 || z1 > dims.z) {
+    throw make_error(ErrorCode::kInvalidArgument, "level range [{}, {}) outside [0, {})", z0, z1,
+                     dims.z);
+  }
+  const std::size_t count = (z1 - z0) * dims.y * dims.x;
+  if (out.size() != count) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "output holds {} samples but levels [{}, {}) of {} x {} need {}", out.size(),
+                     z0, z1, dims.x, dims.y, count);
+  }
+  if (count == 0) return;
+
+  const VariableLocation loc = catalog.locations[v][t];
+  const std::string& path = catalog.files[loc.file].path;
+  const std::string& name = catalog.variables[v].name;
+  const std::string context = fmt::format("{}: variable '{}' time step {}", path, name, t);
+
+  std::vector<std::byte> buffer;
+  CfValueAttributes attrs;
+  {
+    std::lock_guard lock(netcdf_mutex());
+    OpenFile& of = open_file(loc.file);
+    const VariableHandle& h = variable(of, loc.file, v);
+    if (h.has_time ? loc.time_in_file >= h.time_length : loc.time_in_file != 0) {
+      throw make_error(ErrorCode::kInvalidInput,
+                       "{}: time index {} not in the file (file changed since it was scanned?)",
+                       context, loc.time_in_file);
+    }
+    attrs = h.attrs;
+    buffer.resize(count * nc_type_size(attrs.type));
+    std::array<std::size_t, 4> start{}, edge{};
+    std::size_t d = 0;
+    if (h.has_time) {
+      start[d] = loc.time_in_file;
+      edge[d++] = 1;
+    }
+    start[d] = z0;
+    edge[d++] = z1 - z0;
+    start[d] = 0;
+    edge[d++] = dims.y;
+    start[d] = 0;
+    edge[d++] = dims.x;
+    nc_check(nc_get_vara(h.grpid, h.varid, start.data(), edge.data(), buffer.data()), context);
+  }
+
+  const ConversionResult r =
+      convert_any<Out>(attrs.type, buffer, count, attrs, options.nan_as_fill, out);
+  if (r.first_non_finite) {
+    const std::size_t i = *r.first_non_finite;
+    const std::size_t plane = dims.x * dims.y;
+    const double bad = r.non_finite_value;
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: sample (lon {}, lat {}, level {}) is {}; pass --nan-as-fill to treat "
+                     "NaN/Inf as missing",
+                     context, i % dims.x, (i % plane) / dims.x, z0 + i / plane,
+                     std::isnan(bad) ? "NaN" : (bad > 0 ? "+Inf" : "-Inf"));
+  }
+}
+
+SlabReader::SlabReader(const InputCatalog& catalog, const ScanOptions& options)
+    : impl_(new Impl{catalog, options, {}, 0}) {
+  for (std::size_t v = 0; v < catalog.variables.size(); ++v) {
+    if (v >= catalog.locations.size() || catalog.locations[v].size() != catalog.time.size()) {
+      delete impl_;
+      throw make_error(ErrorCode::kInvalidArgument,
+                       "catalog has no location for every time step of variable '{}'",
+                       catalog.variables[v].name);
+    }
+  }
+}
+
+SlabReader::~SlabReader() {
+  std::lock_guard lock(netcdf_mutex());  // nc_close is a netCDF call too
+  delete impl_;
+}
+
+void SlabReader::read(std::size_t variable, std::size_t step, std::size_t z0, std::size_t z1,
+                      std::span<float> out) {
+  impl_->read(variable, step, z0, z1, out);
+}
+
+void SlabReader::read(std::size_t variable, std::size_t step, std::size_t z0, std::size_t z1,
+                      std::span<double> out) {
+  impl_->read(variable, step, z0, z1, out);
+}
+
+}  // namespace strielad::ingest
