@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "build/converter.h"
-#include "ingest/expect_error.h"
+#include "support/expect_error.h"
 #include "store/store.h"
 #include "support/small_dataset.h"
 #include "support/temp_dir.h"

@@ -7,7 +7,7 @@
 #include <cstring>
 
 #include "core/checksum.h"
-#include "ingest/expect_error.h"
+#include "support/expect_error.h"
 
 namespace strielad::format {
 namespace {

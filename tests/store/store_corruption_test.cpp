@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "build/converter.h"
-#include "ingest/expect_error.h"
+#include "support/expect_error.h"
 #include "store/store.h"
 #include "store/store_verifier.h"
 #include "support/small_dataset.h"
