@@ -1,9 +1,108 @@
 // SPDX-License-Identifier: Apache-2.0
+// strielad-convert sample -o DIR [--dims XxYxZ] [--steps N] [--seed S] [--vars a,b,...]
+//                         [--single-file] [--step-seconds S] [--deflate L] [--json]
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "cli/progress_bar.h"
 #include "commands.h"
+#include "sample/sample_args.h"
+#include "sample/sample_dataset.h"
 
 namespace strielad::convert_cmd {
-void register_sample(CLI::App& app, cli::Action& action) {
-  auto* sub = app.add_subcommand("sample", "Write a deterministic CF-NetCDF-4 sample dataset");
-  sub->callback([&action] { action = [] { return 0; }; });
+namespace {
+
+struct SampleOptions {
+  std::string output;
+  std::string dims = "1429x1556x150";
+  std::string steps = "4";  // parsed by sample::parse_unsigned: "-1" must not wrap
+  std::string seed = "1";
+  std::string vars;  // empty: all variables
+  bool single_file = false;
+  double step_seconds = 300;
+  int deflate = 0;
+  bool json = false;
+};
+
+int run_sample(const SampleOptions& opt) {
+  sample::SampleSpec spec;
+  spec.dims = sample::parse_dims(opt.dims);
+  spec.steps = static_cast<std::size_t>(sample::parse_unsigned(opt.steps, "--steps"));
+  spec.seed = sample::parse_unsigned(opt.seed, "--seed");
+  if (!opt.vars.empty()) spec.variables = sample::parse_variable_list(opt.vars);
+  spec.file_per_step = !opt.single_file;
+  spec.step_seconds = opt.step_seconds;
+  spec.deflate = opt.deflate;
+  sample::validate_sample_spec(spec);  // report bad arguments before touching the disk
+
+  const std::uint64_t levels = static_cast<std::uint64_t>(spec.steps) *
+                               spec.variables.size() * spec.dims.z;
+  spdlog::info("sample: writing {} step(s) of {}x{}x{} ({} variables, seed {}) to {}",
+               spec.steps, spec.dims.x, spec.dims.y, spec.dims.z, spec.variables.size(),
+               spec.seed, opt.output);
+  const auto start = std::chrono::steady_clock::now();
+  sample::SampleResult result;
+  {
+    cli::ProgressBar bar("sample", levels, "levels");
+    result = sample::write_sample_dataset(spec, opt.output,
+                                          [&bar](std::uint64_t, std::uint64_t) { bar.advance(); });
+    bar.finish();
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double values = static_cast<double>(levels) * static_cast<double>(spec.dims.x) *
+                        static_cast<double>(spec.dims.y);
+  spdlog::info("sample: wrote {} file(s), {:.3f} GiB in {:.2f} s ({:.1f} Mvalues/s, {:.0f} MiB/s)",
+               result.files.size(), static_cast<double>(result.bytes) / (1024.0 * 1024 * 1024),
+               seconds, values / seconds / 1e6,
+               static_cast<double>(result.bytes) / (1024.0 * 1024) / seconds);
+
+  if (opt.json) {
+    nlohmann::json files = nlohmann::json::array();
+    for (const auto& f : result.files) files.push_back(f.path.string());
+    const nlohmann::json out = {
+        {"files", files},
+        {"bytes", result.bytes},
+        {"dims", {spec.dims.x, spec.dims.y, spec.dims.z}},
+        {"steps", spec.steps},
+        {"seconds", seconds},
+    };
+    std::cout << out.dump() << std::endl;
+  }
+  return 0;
 }
+
+}  // namespace
+
+void register_sample(CLI::App& app, cli::Action& action) {
+  auto opt = std::make_shared<SampleOptions>();
+  auto* sub = app.add_subcommand("sample", "Write a deterministic CF-NetCDF-4 sample dataset");
+  sub->add_option("-o,--output", opt->output, "Output directory (created if missing)")
+      ->required();
+  sub->add_option("--dims", opt->dims, "Grid size XxYxZ (lon x lat x height)")
+      ->type_name("XxYxZ")
+      ->capture_default_str();
+  sub->add_option("--steps", opt->steps, "Number of time steps")
+      ->type_name("UINT")
+      ->capture_default_str();
+  sub->add_option("--seed", opt->seed, "Seed of the synthetic weather (0 .. 2^64-1)")
+      ->type_name("UINT")
+      ->capture_default_str();
+  sub->add_option("--vars", opt->vars,
+                  "Comma-separated variables (default all: clw,cli,qr,ta,pres,ua,va,wa)");
+  sub->add_flag("--single-file", opt->single_file,
+                "Write all steps into sample.nc instead of one file per step");
+  sub->add_option("--step-seconds", opt->step_seconds, "Seconds between time steps")
+      ->capture_default_str();
+  sub->add_option("--deflate", opt->deflate, "Deflate level 0-9 (with shuffle; 0: none)")
+      ->capture_default_str();
+  sub->add_flag("--json", opt->json, "Print a JSON summary on stdout");
+  sub->callback([&action, opt] { action = [opt] { return run_sample(*opt); }; });
+}
+
 }  // namespace strielad::convert_cmd
