@@ -85,15 +85,20 @@ void register_convert(CLI::App& app, cli::Action& action) {
   app.add_option("-o,--output", f->output, "Store directory to create or resume");
   app.add_option("--vars", f->vars, "Variables to convert (default: every 3D variable)")
       ->delimiter(',');
-  app.add_option("--brick", f->brick, "Cells per brick edge (default 16; the paper used 20)")
-      ->capture_default_str();
+  // Ranges are checked here because CLI11 2.1 wraps "-1" into a huge unsigned value.
+  app.add_option("--brick", f->brick, "Cells per brick edge (the paper used 20)")
+      ->capture_default_str()
+      ->check(CLI::Range(2, 1024));
   app.add_option("--time", f->time, "Input time steps to include, inclusive: A:B, A:, :B or A");
   app.add_option("--steps", f->steps,
                  "Convert only these steps of the store (inclusive A:B), e.g. one Slurm task");
-  app.add_option("--threads", f->threads, "Worker threads (default: all cores)");
+  app.add_option("--threads", f->threads, "Worker threads (default: all cores)")
+      ->check(CLI::Range(0, 4096));
   app.add_option("--codec", f->codec.name, "Blosc codec: blosclz, lz4, lz4hc, zlib, zstd")
       ->capture_default_str();
-  app.add_option("--level", f->codec.level, "Compression level 0-9")->capture_default_str();
+  app.add_option("--level", f->codec.level, "Compression level 0-9")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 9));
   app.add_option("--shuffle", f->codec.shuffle, "Blosc shuffle: none, byte, bit")
       ->capture_default_str();
   app.add_flag("--nan-as-fill", f->nan_as_fill, "Treat NaN/Inf in the data as missing values");

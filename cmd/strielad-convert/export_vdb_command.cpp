@@ -27,8 +27,12 @@ void register_export_vdb(CLI::App& app, cli::Action& action) {
   auto f = std::make_shared<ExportFlags>();
   sub->add_option("store", f->store, "Store directory")->required();
   sub->add_option("--var", f->var, "Variable name")->required();
-  sub->add_option("--time", f->step, "Time-step index")->capture_default_str();
-  sub->add_option("--level", f->level, "Octree level (0 = full resolution)")->capture_default_str();
+  sub->add_option("--time", f->step, "Time-step index")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--level", f->level, "Octree level (0 = full resolution)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   sub->add_option("--background", f->background,
                   "Value left inactive (sparse) in the VDB; fill is always inactive")
       ->capture_default_str();

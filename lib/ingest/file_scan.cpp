@@ -220,7 +220,8 @@ std::optional<Error> FileScanner::detect_unstructured(
         break;
       }
       any_unresolved = any_unresolved || unresolved(*i);
-      dim_names.push_back("'" + dimension_name(grpid, d) + "'");
+      dim_names.push_back(fmt::format("'{}'", dimension_name(grpid, d)));  // not "'" + s:
+                                                                           // GCC 12 -O3 PR 105651
     }
     if (!all_ours || !any_unresolved) continue;
     std::vector<std::string> names;
@@ -244,7 +245,7 @@ ScannedVariable FileScanner::scan_variable(int grpid, int varid, const std::stri
   for (int d : dimids) sv.dimensions.push_back(dimension_name(grpid, d));
   const bool is_coordinate = dimids.size() == 1 && sv.dimensions[0] == short_name;
   sv.auxiliary = is_coordinate || auxiliary_.count(short_name) > 0;
-  const std::string dims_text = "(" + join(sv.dimensions, ", ") + ")";
+  const std::string dims_text = fmt::format("({})", join(sv.dimensions, ", "));
 
   auto fail = [&](VariableClass klass, Error error) {
     sv.klass = klass;
@@ -305,7 +306,7 @@ ScannedVariable FileScanner::scan_variable(int grpid, int varid, const std::stri
   }
   std::vector<std::string> role_names;
   for (R r : roles) role_names.emplace_back(dimension_role_name(r));
-  const std::string roles_text = "(" + join(role_names, ", ") + ")";
+  const std::string roles_text = fmt::format("({})", join(role_names, ", "));
   for (std::size_t i = 0; i < roles.size(); ++i) {
     if (roles[i] == R::kUnknown) {
       return fail(VariableClass::kInvalid,

@@ -42,7 +42,15 @@ std::optional<Raw> as_raw(long double v) {
   }
 }
 
+template <typename Raw>
+inline constexpr Raw kNaNRawImpl = std::numeric_limits<Raw>::quiet_NaN();
+
 }  // namespace detail
+
+// A NaN of a floating raw type: compares unequal to everything, so an absent fill value
+// never matches.
+template <typename Raw>
+inline constexpr Raw kNaNRaw = detail::kNaNRawImpl<Raw>;
 
 template <typename Raw, typename Out>
 ConversionResult convert_samples(std::span<const Raw> raw, const CfValueAttributes& attrs,
@@ -73,6 +81,35 @@ ConversionResult convert_samples(std::span<const Raw> raw, const CfValueAttribut
   const double offset = attrs.add_offset.value_or(0.0);
 
   ConversionResult result;
+  if constexpr (kFloating) {
+    // Fast path for the common case (model output): unpacked floating-point data with at
+    // most two fill values and no valid range. Same result as the general loop below.
+    if (!packed && !has_min && !has_max && fills.size() <= 2) {
+      const Raw f0 = fills.empty() ? kNaNRaw<Raw> : fills[0];
+      const Raw f1 = fills.size() < 2 ? f0 : fills[1];
+      // Branch-free pass (vectorizes); the rare undeclared NaN/Inf is located afterwards.
+      bool any_undeclared = false;
+      for (std::size_t i = 0; i < raw.size(); ++i) {
+        const Raw r = raw[i];
+        const bool finite = r - r == Raw(0);  // false for NaN and +-Inf
+        const bool missing = r == f0 || r == f1 || (nan_is_missing && r != r);
+        out[i] = (missing || !finite) ? kNaN : static_cast<Out>(r);
+        any_undeclared |= !missing && !finite;
+      }
+      if (any_undeclared && !nan_as_fill) {
+        for (std::size_t i = 0; i < raw.size(); ++i) {
+          const Raw r = raw[i];
+          const bool missing = r == f0 || r == f1 || (nan_is_missing && r != r);
+          if (!missing && !std::isfinite(r)) {
+            result.first_non_finite = i;
+            result.non_finite_value = static_cast<double>(r);
+            break;
+          }
+        }
+      }
+      return result;
+    }
+  }
   for (std::size_t i = 0; i < raw.size(); ++i) {
     const Raw r = raw[i];
     bool missing = false;

@@ -91,7 +91,8 @@ const VariableHandle& SlabReader::Impl::variable(OpenFile& of, std::size_t file,
   h.grpid = of.file.id();
   std::string short_name = name;
   if (const auto slash = name.rfind('/'); slash != std::string::npos) {
-    const std::string group = "/" + name.substr(0, slash);
+    std::string group = "/";  // not "/" + substr: GCC 12 -O3 warns falsely (PR 105651)
+    group.append(name, 0, slash);
     short_name = name.substr(slash + 1);
     if (nc_inq_grp_full_ncid(of.file.id(), group.c_str(), &h.grpid) != NC_NOERR) {
       throw make_error(ErrorCode::kInvalidInput, "{}: group '{}' not found (file changed since "

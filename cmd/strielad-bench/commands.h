@@ -1,0 +1,14 @@
+// SPDX-License-Identifier: Apache-2.0
+// The suites of strielad-bench; each registers its subcommand from its own file.
+#pragma once
+
+#include <string>
+
+#include "cli/tool_main.h"
+
+namespace strielad::bench_cmd {
+
+// `command_line`: how the tool was invoked, quoted into reports.
+void register_io(CLI::App& app, cli::Action& action, std::string command_line);
+
+}  // namespace strielad::bench_cmd

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: Apache-2.0
+// strielad-bench io [--dims XxYxZ] [--vars a,b] [--work DIR] [--repeat N] [--reads N]
+//                   [--quick] [--csv FILE] [--json FILE] [--keep] ...
+#include <fmt/ranges.h>
+#include <spdlog/spdlog.h>
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "bench/io_suite.h"
+#include "bench/table_writer.h"
+#include "commands.h"
+#include "sample/sample_args.h"
+
+namespace strielad::bench_cmd {
+namespace {
+
+struct IoFlags {
+  std::string dims = "1429x1556x150";
+  std::string vars = "clw,qr,ta,ua";
+  std::string work = "/tmp/strielad-bench-io";
+  int repeat = 3;
+  std::size_t reads = 1000;
+  bool quick = false, keep = false, no_nccopy = false, no_sweeps = false, nccopy_untuned = false;
+  std::string csv, json;
+  std::uint32_t brick = 16;
+  format::CodecSpec codec;
+  int threads = 0;
+  std::uint64_t seed = 1;
+  std::string sweep_dims = "512x512x150";
+  std::vector<std::uint32_t> sweep_bricks{12, 16, 20, 24, 32};
+  std::size_t sweep_reads = 300;
+  int sweep_repeat = 0;
+  std::vector<std::string> nccopy_args;
+  std::string command_line;
+  CLI::App* sub = nullptr;
+};
+
+bool given(const IoFlags& f, const char* name) { return f.sub->count(name) > 0; }
+
+int run(const IoFlags& f) {
+  bench::IoSuiteOptions o;
+  if (f.quick) o = bench::quick_io_options(o);
+  if (!f.quick || given(f, "--dims")) o.dims = sample::parse_dims(f.dims);
+  o.variables = sample::parse_variable_list(f.vars);
+  o.work = f.work;
+  if (!f.quick || given(f, "--repeat")) o.repeat = f.repeat;
+  if (!f.quick || given(f, "--reads")) o.reads = f.reads;
+  o.keep = f.keep;
+  o.brick = f.brick;
+  o.codec = f.codec;
+  o.threads = f.threads;
+  o.seed = f.seed;
+  o.nccopy = !f.no_nccopy;
+  o.nccopy_extra = f.nccopy_args;
+  o.nccopy_tuned_cache = !f.nccopy_untuned;
+  o.sweeps = !f.no_sweeps;
+  if (!f.quick || given(f, "--sweep-dims")) o.sweep_dims = sample::parse_dims(f.sweep_dims);
+  if (!f.quick || given(f, "--sweep-bricks")) o.sweep_bricks = f.sweep_bricks;
+  if (!f.quick || given(f, "--sweep-reads")) o.sweep_reads = f.sweep_reads;
+  if (!f.quick || given(f, "--sweep-repeat")) o.sweep_repeat = f.sweep_repeat;
+  o.command_line = f.command_line;
+
+  const bench::IoSuiteReport report = bench::run_io_suite(o);
+  const auto tables = bench::io_report_tables(report);
+  std::cout << "strielad-bench io: " << o.dims.x << "x" << o.dims.y << "x" << o.dims.z << ", "
+            << fmt::format("{}", fmt::join(o.variables, ",")) << ", 1 step; suite took "
+            << fmt::format("{:.0f}", report.seconds) << " s\n\n";
+  for (const auto& t : tables) bench::print_table(std::cout, t);
+  std::cout.flush();
+  if (!f.csv.empty()) {
+    std::ostringstream csv;
+    bench::write_csv(csv, tables);
+    bench::write_text_file(f.csv, csv.str());
+    spdlog::info("bench: wrote {}", f.csv);
+  }
+  if (!f.json.empty()) {
+    bench::write_text_file(f.json, bench::io_report_json(report, tables).dump(2) + "\n");
+    spdlog::info("bench: wrote {}", f.json);
+  }
+  return 0;
+}
+
+}  // namespace
+
+void register_io(CLI::App& app, cli::Action& action, std::string command_line) {
+  auto f = std::make_shared<IoFlags>();
+  auto* sub = app.add_subcommand(
+      "io", "Conversion throughput vs nccopy and copy, store sizes vs deflate, brick read latency");
+  f->sub = sub;
+  sub->add_option("--dims", f->dims, "Grid XxYxZ of the generated input (one time step)")
+      ->capture_default_str();
+  sub->add_option("--vars", f->vars, "Sample variables")->capture_default_str();
+  sub->add_option("--work", f->work, "Scratch directory (inputs are reused from it with --keep)")
+      ->capture_default_str();
+  sub->add_option("--repeat", f->repeat, "Rounds per throughput measurement (medians)")
+      ->capture_default_str();
+  sub->add_option("--reads", f->reads, "Random brick reads per latency set")->capture_default_str();
+  sub->add_flag("--quick", f->quick, "Tiny grid, one round, few reads: checks the harness (CI)");
+  sub->add_option("--csv", f->csv, "Write the tables as tidy CSV (table,row,column,value)");
+  sub->add_option("--json", f->json, "Write the tables, targets and machine info as JSON");
+  sub->add_flag("--keep", f->keep, "Keep the generated inputs, stores and NetCDF copies");
+  sub->add_option("--brick", f->brick, "Brick size of the main measurements")->capture_default_str();
+  sub->add_option("--codec", f->codec.name, "Codec of the main measurements")->capture_default_str();
+  sub->add_option("--level", f->codec.level, "Codec level of the main measurements")
+      ->capture_default_str();
+  sub->add_option("--shuffle", f->codec.shuffle, "Shuffle of the main measurements")
+      ->capture_default_str();
+  sub->add_option("--threads", f->threads, "Converter threads (default: all cores)");
+  sub->add_option("--seed", f->seed, "Seed of the sample data")->capture_default_str();
+  sub->add_flag("--no-nccopy", f->no_nccopy, "Skip the NetCDF competitors");
+  sub->add_flag("--nccopy-default-cache", f->nccopy_untuned,
+                "Run nccopy with netCDF's default chunk cache (thrashes on large grids)");
+  sub->add_flag("--no-sweeps", f->no_sweeps, "Skip the brick-size and codec sweeps");
+  sub->add_option("--sweep-dims", f->sweep_dims, "Grid of the sweeps")->capture_default_str();
+  sub->add_option("--sweep-bricks", f->sweep_bricks, "Brick sizes of the sweep")
+      ->delimiter(',')
+      ->capture_default_str();
+  sub->add_option("--sweep-reads", f->sweep_reads, "Brick reads per sweep configuration")
+      ->capture_default_str();
+  sub->add_option("--sweep-repeat", f->sweep_repeat, "Rounds per sweep configuration (0: --repeat)")
+      ->capture_default_str();
+  sub->add_option("--nccopy-arg", f->nccopy_args,
+                  "Extra nccopy argument (repeatable), e.g. --nccopy-arg=-h --nccopy-arg=256M")
+      ->allow_extra_args(false);
+  f->command_line = std::move(command_line);
+  sub->callback([&action, f] { action = [f] { return run(*f); }; });
+}
+
+}  // namespace strielad::bench_cmd

@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <string>
+#include <vector>
+
+#include "bench/process_runner.h"
+#include "cli/tool_main.h"
+#include "commands.h"
+
+int main(int argc, char** argv) {
+  using namespace strielad;
+  const std::string command_line = bench::shell_command(std::vector<std::string>(argv, argv + argc));
+  const cli::ToolSpec spec{
+      "strielad-bench",
+      "Benchmark suites for STRIELAD (io; more to come: extract, latency, view, advect, "
+      "robustness, report)",
+      [&command_line](CLI::App& app, cli::Action& action) {
+        bench_cmd::register_io(app, action, command_line);
+      }};
+  return cli::run_tool(spec, argc, argv);
+}

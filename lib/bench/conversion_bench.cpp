@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "bench/conversion_bench.h"
+
+#include <fmt/ranges.h>
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <algorithm>
+
+#include "bench/cpu_time.h"
+#include "bench/file_copy.h"
+#include "bench/latency_stats.h"
+#include "bench/page_cache.h"
+#include "bench/process_runner.h"
+#include "bench/stopwatch.h"
+#include "build/converter.h"
+#include "core/error.h"
+
+namespace strielad::bench {
+namespace {
+
+ContenderRuns contender(std::string name, std::string command) {
+  ContenderRuns c;
+  c.name = std::move(name);
+  c.command = std::move(command);
+  return c;
+}
+
+void remove_all_quietly(const std::filesystem::path& p) {
+  std::error_code ec;
+  std::filesystem::remove_all(p, ec);
+}
+
+}  // namespace
+
+double ContenderRuns::median_seconds() const { return median(seconds); }
+double ContenderRuns::min_seconds() const {
+  return seconds.empty() ? 0 : *std::min_element(seconds.begin(), seconds.end());
+}
+double ContenderRuns::max_seconds() const {
+  return seconds.empty() ? 0 : *std::max_element(seconds.begin(), seconds.end());
+}
+double ContenderRuns::median_cpu_seconds() const { return median(cpu_seconds); }
+double ContenderRuns::median_mb_per_s() const {
+  const double s = median_seconds();
+  return s > 0 ? static_cast<double>(input_bytes) / 1e6 / s : 0;
+}
+
+const ContenderRuns* ConversionBench::find(const std::string& name) const {
+  for (const auto& c : contenders) {
+    if (c.name == name) return &c;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> nccopy_cache_args(std::size_t nx, std::size_t ny, std::uint32_t brick) {
+  const std::uint64_t layer = std::uint64_t{nx} * ny * brick * sizeof(float);
+  std::uint64_t bytes = std::uint64_t{64} << 20;
+  while (bytes < layer + layer / 2) bytes *= 2;
+  const std::uint64_t chunks = ((nx + brick - 1) / brick) * ((ny + brick - 1) / brick);
+  const auto is_prime = [](std::uint64_t n) {
+    if (n < 2) return false;
+    for (std::uint64_t d = 2; d * d <= n; ++d) {
+      if (n % d == 0) return false;
+    }
+    return true;
+  };
+  std::uint64_t slots = std::max<std::uint64_t>(1009, 2 * chunks + 1);
+  while (!is_prime(slots)) ++slots;
+  return {"-h", std::to_string(bytes), "-e", std::to_string(slots)};
+}
+
+std::string nccopy_chunk_spec(std::uint32_t brick) {
+  return fmt::format("time/1,height/{0},lat/{0},lon/{0}", brick);
+}
+
+std::vector<std::string> nccopy_argv(const std::filesystem::path& in,
+                                     const std::filesystem::path& out, std::uint32_t brick,
+                                     const std::vector<std::string>& extra,
+                                     const std::vector<std::string>& only_variables) {
+  std::vector<std::string> argv = {"nccopy", "-k", "nc4", "-d1", "-s", "-c",
+                                   nccopy_chunk_spec(brick)};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  if (!only_variables.empty()) {
+    argv.push_back("-V");
+    argv.push_back(fmt::format("{}", fmt::join(only_variables, ",")));
+  }
+  argv.push_back(in.string());
+  argv.push_back(out.string());
+  return argv;
+}
+
+double evict_inputs(const std::vector<std::filesystem::path>& inputs) {
+  ::sync();
+  double worst = 0;
+  for (const auto& f : inputs) {
+    evict_file(f);
+    worst = std::max(worst, page_cache_residency(f).fraction());
+  }
+  return worst;
+}
+
+ConversionBench run_conversion_bench(const ConversionBenchOptions& o) {
+  if (o.inputs.empty()) throw make_error(ErrorCode::kInvalidArgument, "conversion bench: no inputs");
+  if (o.with_nccopy && o.inputs.size() != 1) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "conversion bench: nccopy is compared on one input file (one time step), "
+                     "got {}", o.inputs.size());
+  }
+  std::filesystem::create_directories(o.work);
+  std::uint64_t input_bytes = 0;
+  for (const auto& f : o.inputs) input_bytes += std::filesystem::file_size(f);
+
+  ConversionBench bench;
+  bench.store = o.work / "store";
+  const auto round_store = o.work / "store.round";
+  const auto copy_dir = o.work / "copy";
+  std::filesystem::create_directories(copy_dir);
+  const auto nccopy_out = o.work / "nccopy-d1.nc";
+  const auto nccopy_log = o.work / "nccopy.log";
+  bench.nccopy_argv = nccopy_argv(o.inputs.front(), nccopy_out, o.brick, o.nccopy_extra);
+  const std::string threads = o.threads > 0 ? std::to_string(o.threads) : "all cores";
+
+  ContenderRuns read = contender("read", fmt::format("read(2) every input file to the end, {} MiB buffer",
+                                         kCopyBufferBytes >> 20));
+  ContenderRuns copy = contender("read+copy",
+                     fmt::format("read(2) + write(2) a copy of every input file, {} MiB buffer, "
+                                 "fsync", kCopyBufferBytes >> 20));
+  // The main converter run (kept store) first, then one per extra codec.
+  std::vector<format::CodecSpec> codecs = {o.codec};
+  codecs.insert(codecs.end(), o.extra_codecs.begin(), o.extra_codecs.end());
+  std::vector<ContenderRuns> converts;
+  for (std::size_t i = 0; i < codecs.size(); ++i) {
+    const auto& c = codecs[i];
+    converts.push_back(contender(
+        i == 0 ? std::string("strielad-convert")
+               : fmt::format("strielad-convert ({} {} {})", c.name, c.level, c.shuffle),
+        fmt::format("build::convert in process, brick {}, blosc {} level {} {}-shuffle, threads {}; "
+                    "includes NetCDF reads, fsync and finalize",
+                    o.brick, c.name, c.level, c.shuffle, threads)));
+  }
+  ContenderRuns nccopy =
+      contender("nccopy", shell_command(bench.nccopy_argv) + " (+ fsync of the output)");
+  for (auto* c : {&read, &copy, &nccopy}) c->input_bytes = input_bytes;
+  for (auto& c : converts) c.input_bytes = input_bytes;
+
+  for (int round = 0; round < std::max(1, o.repeat); ++round) {
+    // read only
+    read.max_resident_before = std::max(read.max_resident_before, evict_inputs(o.inputs));
+    double cpu0 = process_cpu_seconds();
+    const CopyResult r = read_files(o.inputs);
+    read.cpu_seconds.push_back(process_cpu_seconds() - cpu0);
+    read.seconds.push_back(r.seconds);
+    read.output_bytes = 0;
+
+    // read + copy
+    copy.max_resident_before = std::max(copy.max_resident_before, evict_inputs(o.inputs));
+    cpu0 = process_cpu_seconds();
+    const CopyResult c = copy_files(o.inputs, copy_dir);
+    copy.cpu_seconds.push_back(process_cpu_seconds() - cpu0);
+    copy.seconds.push_back(c.seconds);
+    copy.output_bytes = c.bytes;
+    remove_all_quietly(copy_dir);
+    std::filesystem::create_directories(copy_dir);
+
+    // strielad converter, once per codec
+    for (std::size_t i = 0; i < codecs.size(); ++i) {
+      ContenderRuns& conv = converts[i];
+      remove_all_quietly(round_store);
+      conv.max_resident_before = std::max(conv.max_resident_before, evict_inputs(o.inputs));
+      build::ConvertOptions co;
+      co.inputs = o.inputs;
+      co.store = round_store;
+      co.scan.variables = o.variables;
+      co.brick = o.brick;
+      co.codec = codecs[i];
+      co.threads = o.threads;
+      cpu0 = process_cpu_seconds();
+      const Stopwatch clock;
+      const build::ConvertResult result = build::convert(co);
+      conv.seconds.push_back(clock.seconds());
+      conv.cpu_seconds.push_back(process_cpu_seconds() - cpu0);
+      conv.output_bytes = result.written_bytes;
+      if (i == 0) {
+        bench.converter_input_bytes = result.input_bytes;
+        bench.converter_internal_seconds = result.seconds;
+        remove_all_quietly(bench.store);
+        std::filesystem::rename(round_store, bench.store);
+      } else {
+        remove_all_quietly(round_store);
+      }
+    }
+
+    // nccopy
+    if (o.with_nccopy) {
+      std::error_code ec;
+      std::filesystem::remove(nccopy_out, ec);
+      nccopy.max_resident_before = std::max(nccopy.max_resident_before, evict_inputs(o.inputs));
+      const ProcessResult p = run_process(bench.nccopy_argv, nccopy_log);
+      if (p.exit_status != 0) {
+        throw make_error(ErrorCode::kIo, "'{}' failed with status {}: {}",
+                         shell_command(bench.nccopy_argv), p.exit_status, p.output_tail);
+      }
+      cpu0 = process_cpu_seconds();
+      const Stopwatch sync_clock;
+      fsync_file(nccopy_out);
+      const double fsync_s = sync_clock.seconds();
+      nccopy.seconds.push_back(p.seconds + fsync_s);
+      nccopy.fsync_seconds.push_back(fsync_s);
+      nccopy.cpu_seconds.push_back(p.cpu_seconds + process_cpu_seconds() - cpu0);
+      nccopy.output_bytes = std::filesystem::file_size(nccopy_out);
+      bench.nccopy_output = nccopy_out;
+    }
+    std::string line;
+    for (const auto& conv : converts) line += fmt::format(", {} {:.2f} s", conv.name, conv.seconds.back());
+    spdlog::info("bench: conversion round {}/{}: read {:.2f} s, read+copy {:.2f} s{}{}", round + 1,
+                 std::max(1, o.repeat), read.seconds.back(), copy.seconds.back(), line,
+                 o.with_nccopy ? fmt::format(", nccopy {:.2f} s", nccopy.seconds.back()) : "");
+  }
+  remove_all_quietly(copy_dir);
+  remove_all_quietly(round_store);
+  for (auto& conv : converts) bench.contenders.push_back(std::move(conv));
+  if (o.with_nccopy) bench.contenders.push_back(std::move(nccopy));
+  bench.contenders.push_back(std::move(copy));
+  bench.contenders.push_back(std::move(read));
+  return bench;
+}
+
+}  // namespace strielad::bench
