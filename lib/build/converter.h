@@ -16,7 +16,10 @@
 
 namespace strielad::build {
 
-inline constexpr std::uint32_t kDefaultBrick = 16;
+// Chosen by the strielad-bench io brick sweep (BENCHMARKS.md): 24 is the smallest brick whose
+// cold reads stay under 1.25x read amplification (page rounding of the chunk), with the
+// smallest stores; the paper used 20.
+inline constexpr std::uint32_t kDefaultBrick = 24;
 
 struct ConvertOptions {
   std::vector<std::filesystem::path> inputs;

@@ -16,9 +16,12 @@
 
 namespace strielad::format {
 
+// Defaults from the strielad-bench io codec sweep (BENCHMARKS.md): Blosc level 1 (zstd
+// level 1) converts 2.4x faster than level 5 (zstd 9) for 9% more bytes; byte shuffle
+// beats bit shuffle by 1.5x in size on dense fields.
 struct CodecSpec {
   std::string name = "zstd";    // blosclz, lz4, lz4hc, zlib, zstd
-  int level = 5;                // 0..9
+  int level = 1;                // 0..9
   std::string shuffle = "byte"; // none, byte, bit
   friend bool operator==(const CodecSpec&, const CodecSpec&) = default;
 };
@@ -56,7 +59,7 @@ struct Manifest {
   Axis x, y, z;
   TimeAxis time;
   std::vector<StoreVariable> variables;
-  std::uint32_t brick = 16;
+  std::uint32_t brick = 24;
   CodecSpec codec;
   bool nan_as_fill = false;
   std::vector<SourceRecord> sources;
