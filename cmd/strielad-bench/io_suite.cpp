@@ -11,6 +11,7 @@
 #include "bench/io_suite.h"
 #include "bench/table_writer.h"
 #include "commands.h"
+#include "core/error.h"
 #include "sample/sample_args.h"
 
 namespace strielad::bench_cmd {
@@ -33,11 +34,31 @@ struct IoFlags {
   std::size_t sweep_reads = 300;
   int sweep_repeat = 0;
   std::vector<std::string> nccopy_args;
+  std::vector<std::string> sweep_codecs;  // name:level:shuffle
   std::string command_line;
   CLI::App* sub = nullptr;
 };
 
 bool given(const IoFlags& f, const char* name) { return f.sub->count(name) > 0; }
+
+// "zstd:3:byte" -> CodecSpec; checked by format::validate_codec.
+format::CodecSpec parse_codec(const std::string& text) {
+  const auto a = text.find(':'), b = text.rfind(':');
+  if (a == std::string::npos || a == b) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "--sweep-codecs: '{}' is not NAME:LEVEL:SHUFFLE (e.g. zstd:3:byte)", text);
+  }
+  format::CodecSpec c;
+  c.name = text.substr(0, a);
+  try {
+    c.level = std::stoi(text.substr(a + 1, b - a - 1));
+  } catch (const std::exception&) {
+    throw make_error(ErrorCode::kInvalidArgument, "--sweep-codecs: bad level in '{}'", text);
+  }
+  c.shuffle = text.substr(b + 1);
+  format::validate_codec(c);
+  return c;
+}
 
 int run(const IoFlags& f) {
   bench::IoSuiteOptions o;
@@ -60,6 +81,10 @@ int run(const IoFlags& f) {
   if (!f.quick || given(f, "--sweep-bricks")) o.sweep_bricks = f.sweep_bricks;
   if (!f.quick || given(f, "--sweep-reads")) o.sweep_reads = f.sweep_reads;
   if (!f.quick || given(f, "--sweep-repeat")) o.sweep_repeat = f.sweep_repeat;
+  if (given(f, "--sweep-codecs")) {
+    o.sweep_codecs.clear();
+    for (const auto& c : f.sweep_codecs) o.sweep_codecs.push_back(parse_codec(c));
+  }
   o.command_line = f.command_line;
 
   const bench::IoSuiteReport report = bench::run_io_suite(o);
@@ -121,6 +146,10 @@ void register_io(CLI::App& app, cli::Action& action, std::string command_line) {
       ->capture_default_str();
   sub->add_option("--sweep-repeat", f->sweep_repeat, "Rounds per sweep configuration (0: --repeat)")
       ->capture_default_str();
+  sub->add_option("--sweep-codecs", f->sweep_codecs,
+                  "Codecs of the codec sweep as NAME:LEVEL:SHUFFLE (default: zstd 1/3/5 and lz4 5, "
+                  "byte and bit shuffle)")
+      ->delimiter(',');
   sub->add_option("--nccopy-arg", f->nccopy_args,
                   "Extra nccopy argument (repeatable), e.g. --nccopy-arg=-h --nccopy-arg=256M")
       ->allow_extra_args(false);
