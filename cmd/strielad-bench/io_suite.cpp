@@ -25,7 +25,7 @@ struct IoFlags {
   std::size_t reads = 1000;
   bool quick = false, keep = false, no_nccopy = false, no_sweeps = false, nccopy_untuned = false;
   std::string csv, json;
-  std::uint32_t brick = 16;
+  std::uint32_t brick = build::kDefaultBrick;
   format::CodecSpec codec;
   int threads = 0;
   std::uint64_t seed = 1;

@@ -21,6 +21,7 @@
 #include "bench/sample_input.h"
 #include "bench/store_sizes.h"
 #include "bench/table_writer.h"
+#include "build/converter.h"
 #include "format/manifest.h"
 #include "grid/axis.h"
 
@@ -37,7 +38,7 @@ struct IoSuiteOptions {
   std::uint64_t seed = 1;         // of the sample data
   std::uint64_t read_seed = 42;   // of the random brick choice
   int threads = 0;                // converter threads, 0 = all cores
-  std::uint32_t brick = 16;       // main measurements (the current default)
+  std::uint32_t brick = build::kDefaultBrick;  // main measurements: the converter default
   format::CodecSpec codec;        // main measurements (the current default)
   bool nccopy = true;             // false: skip the NetCDF competitors
   std::vector<std::string> nccopy_extra;  // extra nccopy flags, after the cache flags
