@@ -85,7 +85,9 @@ IoSuiteReport run_io_suite(const IoSuiteOptions& options) {
   co.repeat = o.repeat;
   co.with_nccopy = have_nccopy;
   co.nccopy_extra = nccopy_extra;
-  co.extra_codecs = o.extra_codecs;
+  for (const auto& c : o.extra_codecs) {
+    if (!(c == o.codec)) co.extra_codecs.push_back(c);
+  }
   spdlog::info("bench: conversion throughput, {} round(s)", o.repeat);
   report.conversion = run_conversion_bench(co);
 

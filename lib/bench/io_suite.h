@@ -43,8 +43,10 @@ struct IoSuiteOptions {
   bool nccopy = true;             // false: skip the NetCDF competitors
   std::vector<std::string> nccopy_extra;  // extra nccopy flags, after the cache flags
   bool nccopy_tuned_cache = true;         // pass nccopy_cache_args() (see conversion_bench.h)
-  // Further converter contenders in the main conversion table (same brick, other codecs).
-  std::vector<format::CodecSpec> extra_codecs{{"lz4", 5, "byte"}, {"zstd", 1, "byte"}};
+  // Further converter contenders in the main conversion table (same brick, other codecs;
+  // one equal to `codec` is skipped).
+  std::vector<format::CodecSpec> extra_codecs{
+      {"lz4", 5, "byte"}, {"zstd", 1, "byte"}, {"zstd", 5, "byte"}};
   bool sweeps = true;
   Dims3 sweep_dims{512, 512, 150};
   std::vector<std::uint32_t> sweep_bricks{12, 16, 20, 24, 32};
