@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: Apache-2.0
+// A closed, outward-oriented triangle mesh of one sub-volume inside one octree node
+// (formats/scene.md, "Extraction output").
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace strielad {
+
+// Where a triangle lies: on a limit's iso-surface, on the node's boundary faces (shared
+// with the neighbouring node; a seamless export drops these), or on the scene's domain
+// box.
+enum class FaceKind : std::uint8_t { kLimit = 0, kNodeBoundary = 1, kDomainBox = 2 };
+
+struct Mesh {
+  std::uint32_t subvolume_id = 0;
+  // Vertex positions in the dataset's axis coordinates (x, y, z as in the manifest:
+  // e.g. lon degrees, lat degrees, height metres).
+  std::vector<std::array<float, 3>> positions;
+  // Unit outward normals in the same frame (never NaN, never zero-length).
+  std::vector<std::array<float, 3>> normals;
+  // Counter-clockwise seen from outside.
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<FaceKind> face_kinds;  // one per triangle
+  // Per-vertex attribute values, attributes[a][vertex]; NaN where the attribute is
+  // missing at that point.
+  std::vector<std::string> attribute_names;
+  std::vector<std::vector<float>> attributes;
+
+  std::size_t vertex_count() const { return positions.size(); }
+  std::size_t triangle_count() const { return triangles.size(); }
+  bool empty() const { return triangles.empty(); }
+};
+
+}  // namespace strielad
