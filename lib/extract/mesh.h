@@ -18,8 +18,10 @@ enum class FaceKind : std::uint8_t { kLimit = 0, kNodeBoundary = 1, kDomainBox =
 struct Mesh {
   std::uint32_t subvolume_id = 0;
   // Vertex positions in the dataset's axis coordinates (x, y, z as in the manifest:
-  // e.g. lon degrees, lat degrees, height metres).
-  std::vector<std::array<float, 3>> positions;
+  // e.g. lon degrees, lat degrees, height metres). Double: in float, a lon of 170
+  // degrees resolves only 1/1000 of a full-resolution cell, which would collapse
+  // distinct vertices into zero-area triangles (the wire format quantizes per node).
+  std::vector<std::array<double, 3>> positions;
   // Unit outward normals in the same frame (never NaN, never zero-length).
   std::vector<std::array<float, 3>> normals;
   // Counter-clockwise seen from outside.

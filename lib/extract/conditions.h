@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: Apache-2.0
+// A sub-volume inside one node as a list of half-space conditions on the sample
+// lattice: each condition has a value per sample and the region is where every
+// condition's piecewise-linear interpolant is >= 0. Limits give `value - min` and
+// `max - value`, the domain box gives signed index distances, fill gives a validity
+// condition (+1 valid, -1 missing, so the region ends half-way to a missing sample).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "extract/extract_request.h"
+#include "extract/node_samples.h"
+
+namespace strielad {
+
+enum class ConditionKind : std::uint8_t { kLimitMin, kLimitMax, kBox, kValidity };
+
+struct Condition {
+  ConditionKind kind = ConditionKind::kLimitMin;
+  std::uint32_t field = 0;  // limits: the field
+  int axis = 0;             // box: the axis (0 x, 1 y, 2 z)
+  int side = 0;             // box: 0 lower bound, 1 upper bound
+  std::vector<double> values;  // one per sample, x fastest; inside where >= 0
+};
+
+inline constexpr std::size_t kMaxConditions = 60;
+
+struct ConditionSet {
+  std::vector<Condition> conditions;  // only conditions not met everywhere
+  bool empty = false;                 // a condition excludes every sample
+  std::vector<std::uint64_t> inside;  // per sample: bit c set iff condition c holds
+  std::uint64_t all = 0;              // bits of every condition
+};
+
+// Throws kInvalidArgument for a request the samples cannot serve (field index out of
+// range, min > max, NaN bounds, too many conditions).
+ConditionSet build_conditions(const NodeSamples& samples, const ExtractRequest& request);
+
+// Fractional sample index of axis coordinate `value` on `coords` (ascending or
+// descending); below the first sample gives -1, beyond the last gives size().
+double fractional_index(const std::vector<double>& coords, double value);
+
+}  // namespace strielad

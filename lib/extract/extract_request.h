@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: Apache-2.0
+// What to extract from one node: one sub-volume (the intersection of scalar limits
+// and an axis-aligned domain box) and the attributes its vertices carry
+// (formats/scene.md, "Extraction").
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace strielad {
+
+inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+
+// min <= value <= max on the interpolated field of NodeSamples::fields[field]; an
+// infinite bound is open.
+struct ExtractLimit {
+  std::uint32_t field = 0;
+  double min = -kUnbounded;
+  double max = kUnbounded;
+};
+
+struct ExtractRequest {
+  std::uint32_t subvolume_id = 0;
+  std::vector<ExtractLimit> limits;
+  // Domain box per axis x, y, z in axis coordinates, {lo, hi} with lo <= hi whatever
+  // the axis direction; infinite = unbounded.
+  std::array<std::array<double, 2>, 3> box{{{-kUnbounded, kUnbounded},
+                                            {-kUnbounded, kUnbounded},
+                                            {-kUnbounded, kUnbounded}}};
+  std::vector<std::uint32_t> attribute_fields;  // indices into NodeSamples::fields
+  std::vector<std::string> attribute_names;     // same length as attribute_fields
+};
+
+// What the kernel did for one node (for --json output and the benchmarks).
+struct ExtractStats {
+  std::uint64_t cells = 0;          // cells of the node
+  std::uint64_t inside_cells = 0;   // cells wholly inside the region
+  std::uint64_t cut_cells = 0;      // cells the region's boundary passes through
+  std::uint64_t clipped_tets = 0;   // tetrahedra clipped by at least one condition
+  std::uint64_t conditions = 0;     // half-space conditions left after trivial ones
+  bool empty_by_condition = false;  // some condition excludes the whole node
+};
+
+}  // namespace strielad

@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: Apache-2.0
+// Extraction of one sub-volume inside one octree node as a closed, outward-oriented
+// triangle mesh (formats/scene.md, "Extraction").
+//
+// Method: each lattice cell is split into six tetrahedra along its main diagonal
+// (Kuhn), so neighbouring cells split shared faces the same way. Every condition of
+// the sub-volume (ExtractRequest -> conditions.h) is linear inside a tetrahedron, so
+// the region inside it is a convex polytope (TetClipper). The mesh is the union of
+// the polytope faces that lie on a condition's zero plane (limit and domain-box
+// surfaces) or on the node's boundary. The limit surfaces pass through the exact
+// crossings of the trilinear field on every lattice edge, like the paper's clip
+// pipeline. Cells wholly inside or outside are classified by bit masks and cost a few
+// instructions.
+#pragma once
+
+#include "extract/extract_request.h"
+#include "extract/mesh.h"
+#include "extract/node_samples.h"
+
+namespace strielad {
+
+Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request,
+                       ExtractStats* stats = nullptr);
+
+}  // namespace strielad

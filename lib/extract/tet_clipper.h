@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: Apache-2.0
+// Clips one tetrahedron of the sample lattice by half-space conditions whose values
+// are linear inside it, leaving a convex polytope whose faces lie on the tetrahedron's
+// faces or on the conditions' zero planes.
+//
+// Watertightness across tetrahedra rests on canonical vertices: a vertex on a lattice
+// edge or lattice triangle is computed from the corners of that edge or triangle only,
+// in ascending sample order, so every tetrahedron sharing it computes the same bits.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "extract/conditions.h"
+
+namespace strielad {
+
+using Vec3 = std::array<double, 3>;
+
+class TetClipper {
+ public:
+  struct Face {
+    int tag = 0;  // 0..3: the tetrahedron face opposite that corner; 4 + c: condition c
+    std::uint32_t first = 0, count = 0;  // range in loop()
+  };
+
+  // corners: sample ids in ascending order and their lattice positions; conditions:
+  // bit c set = clip by condition c of `set`. Returns false when nothing is left.
+  bool clip(const std::array<std::size_t, 4>& corners, const std::array<Vec3, 4>& positions,
+            const ConditionSet& set, std::uint64_t conditions);
+
+  const std::vector<Face>& faces() const { return faces_; }
+  const std::vector<std::uint32_t>& loop() const { return loop_; }
+  const Vec3& position(std::uint32_t vertex) const { return vertices_[vertex].p; }
+  // Gradient (lattice units) of condition c inside the tetrahedron.
+  Vec3 gradient(std::size_t c) const;
+  // Gradient of the tetrahedron's barycentric coordinate of corner k.
+  Vec3 barycentric_gradient(int k) const;
+
+ private:
+  struct Vertex {
+    std::array<double, 4> w{};  // barycentric weights on the corners
+    std::uint64_t planes = 0;   // bit k < 4: on the face opposite corner k; 4 + c: condition c
+    Vec3 p{};
+  };
+  std::uint32_t add_vertex(const std::array<double, 4>& w, std::uint64_t planes);
+  std::uint32_t crossing(std::uint32_t a, std::uint32_t b, std::size_t c);
+  double value(std::uint32_t v, std::size_t c) const;
+  bool clip_by(std::size_t c);
+
+  std::array<Vec3, 4> corner_pos_{};
+  std::array<double, 4 * kMaxConditions> corner_values_{};  // [c * 4 + k]
+  std::array<std::array<double, 3>, 3> inverse_edges_{};  // for gradients
+  std::vector<Vertex> vertices_;
+  std::vector<Face> faces_, next_faces_;
+  std::vector<std::uint32_t> loop_, next_loop_;
+  std::vector<double> vertex_values_;
+  std::vector<std::array<std::uint32_t, 3>> crossings_;  // (a, b, new vertex) of one clip
+  std::vector<std::uint32_t> cap_;
+  std::vector<std::pair<double, std::uint32_t>> angle_order_;
+  std::vector<std::pair<double, std::uint32_t>>& angle_scratch();
+};
+
+}  // namespace strielad

@@ -1,0 +1,254 @@
+// SPDX-License-Identifier: Apache-2.0
+// extract_node_mesh: closed, outward-oriented meshes of sub-volumes with the right
+// volume, on uniform, non-uniform and descending axes, with fill, extreme values and
+// thresholds that hit sample values exactly.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <numbers>
+
+#include "core/error.h"
+#include "extract/mesh_metrics.h"
+#include "extract/node_extractor.h"
+#include "support/expect_error.h"
+
+namespace strielad {
+namespace {
+
+std::vector<double> axis(std::size_t n, double lo, double hi, double stretch = 1.0) {
+  std::vector<double> c(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) / static_cast<double>(n - 1);
+    c[i] = lo + (hi - lo) * std::pow(t, stretch);
+  }
+  return c;
+}
+
+NodeSamples sampled(std::array<std::vector<double>, 3> coords,
+                    const std::vector<std::function<double(double, double, double)>>& fields) {
+  NodeSamples s;
+  s.coords = std::move(coords);
+  const auto d = s.dims();
+  for (const auto& f : fields) {
+    std::vector<float> values(s.sample_count());
+    for (std::size_t z = 0; z < d[2]; ++z)
+      for (std::size_t y = 0; y < d[1]; ++y)
+        for (std::size_t x = 0; x < d[0]; ++x)
+          values[(z * d[1] + y) * d[0] + x] =
+              static_cast<float>(f(s.coords[0][x], s.coords[1][y], s.coords[2][z]));
+    s.fields.push_back(std::move(values));
+  }
+  return s;
+}
+
+double radius(double x, double y, double z) { return std::sqrt(x * x + y * y + z * z); }
+
+void expect_clean(const Mesh& mesh) {
+  const MeshCheck c = check_mesh(mesh);
+  EXPECT_EQ(c.open_edges, 0u);
+  EXPECT_EQ(c.nonmanifold_edges, 0u);
+  EXPECT_EQ(c.misoriented_edges, 0u);
+  EXPECT_EQ(c.degenerate_triangles, 0u);
+  EXPECT_EQ(c.bad_normals, 0u);
+  EXPECT_EQ(c.bad_positions, 0u);
+  EXPECT_EQ(mesh.normals.size(), mesh.positions.size());
+  EXPECT_EQ(mesh.face_kinds.size(), mesh.triangles.size());
+}
+
+TEST(SubvolumeMesh, SphereIsClosedWithTheRightVolume) {
+  const NodeSamples s = sampled({axis(33, -1, 1), axis(33, -1, 1), axis(33, -1, 1)}, {radius});
+  ExtractRequest r;
+  r.subvolume_id = 7;
+  r.limits = {{0, -kUnbounded, 0.7}};
+  ExtractStats stats;
+  const Mesh mesh = extract_node_mesh(s, r, &stats);
+  expect_clean(mesh);
+  EXPECT_EQ(mesh.subvolume_id, 7u);
+  const double exact = 4.0 / 3.0 * std::numbers::pi * 0.7 * 0.7 * 0.7;
+  EXPECT_NEAR(enclosed_volume(mesh) / exact, 1.0, 0.01);
+  EXPECT_GT(stats.cut_cells, 0u);
+  EXPECT_GT(stats.inside_cells, 0u);
+  for (auto k : mesh.face_kinds) EXPECT_EQ(k, FaceKind::kLimit);
+  // Normals point away from the centre.
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    const auto& p = mesh.positions[v];
+    const auto& n = mesh.normals[v];
+    EXPECT_GT(p[0] * n[0] + p[1] * n[1] + p[2] * n[2], 0.0f);
+  }
+}
+
+TEST(SubvolumeMesh, RegionCutByTheNodeBoundaryIsCappedThere) {
+  // Half the sphere lies outside the node (x from 0 to 1).
+  const NodeSamples s = sampled({axis(17, 0, 1), axis(33, -1, 1), axis(33, -1, 1)}, {radius});
+  ExtractRequest r;
+  r.limits = {{0, -kUnbounded, 0.7}};
+  const Mesh mesh = extract_node_mesh(s, r);
+  expect_clean(mesh);
+  const double exact = 2.0 / 3.0 * std::numbers::pi * 0.343;
+  EXPECT_NEAR(enclosed_volume(mesh) / exact, 1.0, 0.01);
+  bool any_boundary = false;
+  for (auto k : mesh.face_kinds) any_boundary = any_boundary || k == FaceKind::kNodeBoundary;
+  EXPECT_TRUE(any_boundary);
+}
+
+TEST(SubvolumeMesh, ShellOfTwoLimitsOnStretchedDescendingAxes) {
+  // x non-uniform (stretched), y descending, z strongly stretched.
+  auto y = axis(29, -1, 1);
+  std::reverse(y.begin(), y.end());
+  const NodeSamples s = sampled({axis(31, -1, 1, 1.0), y, axis(41, -1, 1)}, {radius});
+  ExtractRequest r;
+  r.limits = {{0, 0.4, 0.8}};
+  const Mesh mesh = extract_node_mesh(s, r);
+  expect_clean(mesh);
+  const double exact = 4.0 / 3.0 * std::numbers::pi * (0.512 - 0.064);
+  EXPECT_NEAR(enclosed_volume(mesh) / exact, 1.0, 0.02);
+}
+
+TEST(SubvolumeMesh, DomainBoxAloneGivesTheBoxOnUnevenAxes) {
+  // Spacing ratio 1:1000 along z.
+  std::vector<double> z{0, 1, 2, 1002, 2002};
+  const NodeSamples s =
+      sampled({axis(9, 0, 8), axis(5, 10, 0), z}, {[](double, double, double) { return 1.0; }});
+  ExtractRequest r;
+  r.limits = {{0, 0.5, kUnbounded}};
+  r.box = {{{1.5, 6.25}, {2.5, 7.5}, {0.5, 1500}}};
+  const Mesh mesh = extract_node_mesh(s, r);
+  expect_clean(mesh);
+  EXPECT_NEAR(enclosed_volume(mesh), 4.75 * 5.0 * 1499.5, 1e-6 * 4.75 * 5 * 1499.5 * 10);
+  bool any_box = false;
+  for (auto k : mesh.face_kinds) any_box = any_box || k == FaceKind::kDomainBox;
+  EXPECT_TRUE(any_box);
+}
+
+TEST(SubvolumeMesh, ConstantInsideGivesTheNodeBoxAndOutsideGivesNothing) {
+  const NodeSamples s = sampled({axis(5, 0, 4), axis(5, 0, 4), axis(3, 0, 2)},
+                                {[](double, double, double) { return 2.0; }});
+  ExtractRequest inside;
+  inside.limits = {{0, 2.0, 2.0}};  // bounds equal to the value: inside (inclusive)
+  const Mesh box = extract_node_mesh(s, inside);
+  expect_clean(box);
+  EXPECT_DOUBLE_EQ(enclosed_volume(box), 4.0 * 4.0 * 2.0);
+  ExtractRequest outside;
+  outside.limits = {{0, 2.5, kUnbounded}};
+  ExtractStats stats;
+  EXPECT_TRUE(extract_node_mesh(s, outside, &stats).empty());
+  EXPECT_TRUE(stats.empty_by_condition);
+}
+
+TEST(SubvolumeMesh, ThresholdsExactlyOnSampleValuesGiveNoDegenerateTriangles) {
+  // Integer-valued fields, thresholds at integers: crossings fall on samples.
+  const NodeSamples s = sampled({axis(9, 0, 8), axis(9, 0, 8), axis(9, 0, 8)},
+                                {[](double x, double y, double z) { return std::floor(x + y) + z; },
+                                 [](double x, double, double z) { return x - z; }});
+  for (double t : {3.0, 6.0, 10.0}) {
+    ExtractRequest r;
+    r.limits = {{0, t, kUnbounded}, {1, -2.0, 2.0}};
+    const Mesh mesh = extract_node_mesh(s, r);
+    SCOPED_TRACE(t);
+    expect_clean(mesh);
+    EXPECT_GT(enclosed_volume(mesh), 0.0);
+  }
+}
+
+TEST(SubvolumeMesh, FillAndNonFiniteSamplesAreOutside) {
+  NodeSamples s = sampled({axis(11, 0, 10), axis(11, 0, 10), axis(11, 0, 10)},
+                          {[](double, double, double) { return 1.0; }});
+  const float nan = std::nanf("");
+  s.fields[0][(5 * 11 + 5) * 11 + 5] = nan;   // a hole in the middle
+  s.fields[0][(2 * 11 + 7) * 11 + 3] = INFINITY;
+  s.fields[0][0] = -INFINITY;
+  ExtractRequest r;
+  r.limits = {{0, 0.5, kUnbounded}};
+  r.attribute_fields = {0};
+  r.attribute_names = {"f"};
+  const Mesh mesh = extract_node_mesh(s, r);
+  expect_clean(mesh);
+  const double v = enclosed_volume(mesh);
+  EXPECT_LT(v, 1000.0);
+  EXPECT_GT(v, 990.0);
+}
+
+TEST(SubvolumeMesh, ExtremeMagnitudesAndDenormals) {
+  for (double scale : {1.0, 1e-30, 1e-40, 1e30}) {
+    const NodeSamples s = sampled({axis(17, -1, 1), axis(17, -1, 1), axis(17, -1, 1)},
+                                  {[scale](double x, double y, double z) {
+                                    return scale * (1.0 - radius(x, y, z));
+                                  }});
+    ExtractRequest r;
+    r.limits = {{0, 0.3 * scale, kUnbounded}};
+    const Mesh mesh = extract_node_mesh(s, r);
+    SCOPED_TRACE(scale);
+    expect_clean(mesh);
+    const double exact = 4.0 / 3.0 * std::numbers::pi * 0.343;
+    EXPECT_NEAR(enclosed_volume(mesh) / exact, 1.0, 0.05);
+  }
+}
+
+TEST(SubvolumeMesh, OneCellThickNode) {
+  const NodeSamples s = sampled({axis(2, 0, 1), axis(9, -1, 1), axis(9, -1, 1)},
+                                {[](double, double y, double z) { return y * y + z * z; }});
+  ExtractRequest r;
+  r.limits = {{0, -kUnbounded, 0.5}};
+  const Mesh mesh = extract_node_mesh(s, r);
+  expect_clean(mesh);
+  EXPECT_GT(enclosed_volume(mesh), 0.0);
+}
+
+TEST(SubvolumeMesh, NeighbouringNodesMeetWithoutCracks) {
+  // One domain split at x = 0 into two nodes sharing the boundary samples; without
+  // the node-boundary faces the two meshes together are closed.
+  auto f = [](double x, double y, double z) { return radius(x - 0.05, y * 1.3, z) + 0.1 * x * y; };
+  const auto y = axis(21, -1, 1), z = axis(21, -1, 1, 1.3);
+  const NodeSamples left = sampled({axis(11, -1, 0), y, z}, {f});
+  const NodeSamples right = sampled({axis(11, 0, 1), y, z}, {f});
+  ExtractRequest r;
+  r.limits = {{0, -kUnbounded, 0.75}};
+  Mesh joined;
+  for (const NodeSamples* s : {&left, &right}) {
+    const Mesh m = extract_node_mesh(*s, r);
+    expect_clean(m);
+    const auto offset = static_cast<std::uint32_t>(joined.positions.size());
+    joined.positions.insert(joined.positions.end(), m.positions.begin(), m.positions.end());
+    joined.normals.insert(joined.normals.end(), m.normals.begin(), m.normals.end());
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      if (m.face_kinds[t] == FaceKind::kNodeBoundary) continue;
+      joined.triangles.push_back({m.triangles[t][0] + offset, m.triangles[t][1] + offset,
+                                  m.triangles[t][2] + offset});
+      joined.face_kinds.push_back(m.face_kinds[t]);
+    }
+  }
+  expect_clean(joined);
+}
+
+TEST(SubvolumeMesh, OutputIsDeterministic) {
+  const NodeSamples s = sampled({axis(17, -1, 1), axis(17, -1, 1), axis(17, -1, 1)},
+                                {radius, [](double x, double, double) { return x; }});
+  ExtractRequest r;
+  r.limits = {{0, -kUnbounded, 0.8}, {1, -0.2, kUnbounded}};
+  r.attribute_fields = {1};
+  r.attribute_names = {"x"};
+  const Mesh a = extract_node_mesh(s, r), b = extract_node_mesh(s, r);
+  EXPECT_EQ(a.positions, b.positions);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.attributes, b.attributes);
+  expect_clean(a);
+  // The attribute carries x at each vertex.
+  for (std::size_t v = 0; v < a.positions.size(); ++v) {
+    EXPECT_NEAR(a.attributes[0][v], a.positions[v][0], 1e-5);
+  }
+}
+
+TEST(SubvolumeMesh, BadRequestsAreRejectedByName) {
+  const NodeSamples s = sampled({axis(3, 0, 1), axis(3, 0, 1), axis(3, 0, 1)}, {radius});
+  ExtractRequest r;
+  r.limits = {{3, 0, 1}};
+  testing::expect_error([&] { extract_node_mesh(s, r); }, ErrorCode::kInvalidArgument,
+                        {"field 3"});
+  r.limits = {{0, 2, 1}};
+  testing::expect_error([&] { extract_node_mesh(s, r); }, ErrorCode::kInvalidArgument,
+                        {"bad range"});
+}
+
+}  // namespace
+}  // namespace strielad
