@@ -5,10 +5,10 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
-#include <unordered_map>
 
 #include "core/error.h"
 #include "extract/conditions.h"
+#include "extract/mesh_builder.h"
 #include "extract/tet_clipper.h"
 
 namespace strielad {
@@ -21,6 +21,9 @@ Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
+// Set bits of a 4-bit mask (std::popcount is a library call without -mpopcnt).
+constexpr std::array<int, 16> kBits4{0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+
 // The six Kuhn tetrahedra of a cell: corners as cube indices (bit 0 x, 1 y, 2 z), in
 // ascending order, which is also ascending sample order.
 constexpr std::array<std::array<int, 4>, 6> kTets{{{0, 1, 3, 7},
@@ -29,98 +32,6 @@ constexpr std::array<std::array<int, 4>, 6> kTets{{{0, 1, 3, 7},
                                                    {0, 2, 6, 7},
                                                    {0, 4, 5, 7},
                                                    {0, 4, 6, 7}}};
-
-struct VertexKey {
-  std::uint32_t group;
-  Vec3 p;
-  bool operator==(const VertexKey& o) const {
-    return group == o.group && std::memcmp(p.data(), o.p.data(), sizeof(Vec3)) == 0;
-  }
-};
-
-struct VertexKeyHash {
-  std::size_t operator()(const VertexKey& k) const noexcept {
-    std::uint64_t h = k.group * 0x9E3779B97F4A7C15ull;
-    for (double d : k.p) {
-      std::uint64_t bits;
-      std::memcpy(&bits, &d, 8);
-      h ^= bits + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
-    }
-    return static_cast<std::size_t>(h);
-  }
-};
-
-class MeshBuilder {
- public:
-  explicit MeshBuilder(std::size_t node_sides_group) : side_group_(node_sides_group) {}
-
-  // A convex planar polygon (lattice coordinates) whose outward side is `outward`.
-  void polygon(std::uint32_t group, std::vector<Vec3>& pts, const Vec3& outward) {
-    // Drop repeated positions (degenerate crossings at sample values).
-    std::size_t m = 0;
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      if (m > 0 && pts[i] == pts[m - 1]) continue;
-      pts[m++] = pts[i];
-    }
-    while (m > 1 && pts[m - 1] == pts[0]) --m;
-    if (m < 3) return;
-    pts.resize(m);
-    Vec3 normal{0, 0, 0};
-    for (std::size_t i = 0; i < m; ++i) {
-      const Vec3& a = pts[i];
-      const Vec3& b = pts[(i + 1) % m];
-      normal[0] += (a[1] - b[1]) * (a[2] + b[2]);
-      normal[1] += (a[2] - b[2]) * (a[0] + b[0]);
-      normal[2] += (a[0] - b[0]) * (a[1] + b[1]);
-    }
-    const double facing = dot(normal, outward);
-    if (facing == 0.0 || !std::isfinite(facing)) return;
-    if (facing < 0) std::reverse(pts.begin(), pts.end());
-    // Fan from the first apex whose triangles all have area (a polygon may carry
-    // collinear vertices where a crossing fell on a sample).
-    std::size_t apex = 0;
-    for (; apex < m; ++apex) {
-      bool ok = true;
-      for (std::size_t i = 1; i + 1 < m && ok; ++i) {
-        const Vec3 c = cross(sub(pts[(apex + i) % m], pts[apex]), sub(pts[(apex + i + 1) % m], pts[apex]));
-        ok = dot(c, c) > 0;
-      }
-      if (ok) break;
-    }
-    const bool all_good = apex < m;
-    if (!all_good) apex = 0;
-    const std::uint32_t first = vertex(group, pts[apex]);
-    for (std::size_t i = 1; i + 1 < m; ++i) {
-      const Vec3& b = pts[(apex + i) % m];
-      const Vec3& c = pts[(apex + i + 1) % m];
-      if (!all_good) {
-        const Vec3 n = cross(sub(b, pts[apex]), sub(c, pts[apex]));
-        if (!(dot(n, n) > 0)) continue;
-      }
-      triangles_.push_back({first, vertex(group, b), vertex(group, c)});
-      groups_.push_back(group);
-    }
-  }
-
-  std::uint32_t vertex(std::uint32_t group, const Vec3& p) {
-    const auto [it, inserted] =
-        index_.try_emplace(VertexKey{group, p}, static_cast<std::uint32_t>(points_.size()));
-    if (inserted) {
-      points_.push_back(p);
-      vertex_groups_.push_back(group);
-    }
-    return it->second;
-  }
-
-  std::vector<Vec3> points_;
-  std::vector<std::uint32_t> vertex_groups_;
-  std::vector<std::array<std::uint32_t, 3>> triangles_;
-  std::vector<std::uint32_t> groups_;  // per triangle
-
- private:
-  std::size_t side_group_;
-  std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> index_;
-};
 
 // Trilinear value and lattice-space gradient of a field at lattice position p.
 struct Trilinear {
@@ -201,10 +112,10 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
 
   const std::size_t c_count = set.conditions.size();
   const std::uint32_t side_group = static_cast<std::uint32_t>(c_count);  // + 2 * axis + side
-  MeshBuilder builder(side_group);
+  MeshBuilder builder;
   TetClipper clipper;
   std::vector<Vec3> pts;
-  pts.reserve(16);
+  pts.reserve(64);
 
   const std::size_t sx = 1, sy = dims[0], sz = dims[0] * dims[1];
   const std::array<std::size_t, 8> offsets{0, sx, sy, sx + sy, sz, sz + sx, sz + sy, sz + sx + sy};
@@ -212,10 +123,10 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
 
   // Node-boundary triangle of a tetrahedron face or a cell face, oriented outward.
   auto boundary_face = [&](int axis, int side, const Vec3& a, const Vec3& b, const Vec3& c) {
-    pts.assign({a, b, c});
+    Vec3 tri[3]{a, b, c};
     Vec3 outward{0, 0, 0};
     outward[axis] = side == 0 ? -1.0 : 1.0;
-    builder.polygon(side_group + static_cast<std::uint32_t>(2 * axis + side), pts, outward);
+    builder.polygon(side_group + static_cast<std::uint32_t>(2 * axis + side), tri, 3, outward);
   };
 
   for (std::size_t z = 0; z + 1 < dims[2]; ++z) {
@@ -281,6 +192,12 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
             }
             return -1;
           };
+          auto touches_boundary = [&](const std::array<int, 4>&) {
+            for (int opposite = 0; opposite < 4; ++opposite) {
+              if (face_side(opposite) >= 0) return true;
+            }
+            return false;
+          };
           if (t_and == all) {
             if (boundary == 0) continue;
             for (int opposite = 0; opposite < 4; ++opposite) {
@@ -292,6 +209,52 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
               }
               boundary_face(side / 2, side % 2, f[0], f[1], f[2]);
             }
+            continue;
+          }
+          const std::uint64_t mixed = all & ~t_and;
+          if ((mixed & (mixed - 1)) == 0 && !(boundary != 0 && touches_boundary(tet))) {
+            // One condition crosses and no face is on the node boundary: the marching-
+            // tetrahedra case, without the general clipper. Same canonical points.
+            ++local.simple_tets;
+            const std::size_t c = static_cast<std::size_t>(std::countr_zero(mixed));
+            const auto& values = set.conditions[c].values;
+            const std::array<double, 4> sv{values[ids[0]], values[ids[1]], values[ids[2]],
+                                           values[ids[3]]};
+            auto edge_point = [&](int p, int q) {  // p < q
+              const double t = sv[p] / (sv[p] - sv[q]);
+              std::array<double, 4> w{};
+              w[p] = 1.0 - t;
+              w[q] = t;
+              return lattice_point(pos, w);
+            };
+            int in = 0;
+            for (int k = 0; k < 4; ++k) in |= (sv[k] >= 0 ? 1 : 0) << k;
+            Vec3 poly[4];
+            std::size_t m = 0;
+            const int n_in = kBits4[in];
+            if (n_in == 1 || n_in == 3) {
+              const int lone = std::countr_zero(static_cast<unsigned>(n_in == 1 ? in : ~in & 15));
+              for (int k = 0; k < 4; ++k) {
+                if (k != lone) poly[m++] = edge_point(std::min(k, lone), std::max(k, lone));
+              }
+            } else {
+              int a = -1, b = -1, cc = -1, d = -1;
+              for (int k = 0; k < 4; ++k) {
+                if (in & (1 << k)) (a < 0 ? a : b) = k;
+                else (cc < 0 ? cc : d) = k;
+              }
+              poly[m++] = edge_point(std::min(a, cc), std::max(a, cc));
+              poly[m++] = edge_point(std::min(a, d), std::max(a, d));
+              poly[m++] = edge_point(std::min(b, d), std::max(b, d));
+              poly[m++] = edge_point(std::min(b, cc), std::max(b, cc));
+            }
+            // Gradient: Kuhn edges are unit steps along one axis each.
+            Vec3 outward{0, 0, 0};
+            for (int k = 0; k < 3; ++k) {
+              const int axis = std::countr_zero(static_cast<unsigned>(tet[k + 1] ^ tet[k]));
+              outward[axis] = sv[k] - sv[k + 1];
+            }
+            builder.polygon(static_cast<std::uint32_t>(c), poly, m, outward);
             continue;
           }
           ++local.clipped_tets;
@@ -316,7 +279,7 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
             for (std::uint32_t i = 0; i < face.count; ++i) {
               pts.push_back(clipper.position(loop[face.first + i]));
             }
-            builder.polygon(group, pts, outward);
+            builder.polygon(group, pts.data(), pts.size(), outward);
           }
         }
       }
@@ -326,26 +289,26 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
   // Lattice to axis coordinates, normals, attributes.
   int descending = 0;
   for (int a = 0; a < 3; ++a) descending += samples.coords[a].back() < samples.coords[a].front();
-  const std::size_t nv = builder.points_.size();
+  const std::size_t nv = builder.points.size();
   mesh.positions.resize(nv);
   mesh.normals.assign(nv, {0.f, 0.f, 0.f});
   std::vector<Vec3> spacing(nv);
   std::vector<Vec3> positions(nv);
   for (std::size_t v = 0; v < nv; ++v) {
     for (int a = 0; a < 3; ++a) {
-      const auto [coord, h] = to_axis(samples.coords[a], builder.points_[v][a]);
+      const auto [coord, h] = to_axis(samples.coords[a], builder.points[v][a]);
       positions[v][a] = coord;
       spacing[v][a] = h;
       mesh.positions[v][a] = coord;
     }
   }
-  mesh.triangles = std::move(builder.triangles_);
+  mesh.triangles = std::move(builder.triangles);
   if (descending % 2 == 1) {
     for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
   }
   mesh.face_kinds.resize(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const std::uint32_t g = builder.groups_[t];
+    const std::uint32_t g = builder.triangle_groups[t];
     mesh.face_kinds[t] = g >= side_group ? FaceKind::kNodeBoundary
                          : set.conditions[g].kind == ConditionKind::kBox ? FaceKind::kDomainBox
                                                                           : FaceKind::kLimit;
@@ -360,7 +323,7 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
     }
   }
   for (std::size_t v = 0; v < nv; ++v) {
-    const std::uint32_t g = builder.vertex_groups_[v];
+    const std::uint32_t g = builder.vertex_groups[v];
     Vec3 lattice_normal{0, 0, 0};  // a covector in lattice coordinates
     if (g >= side_group) {
       const int side = static_cast<int>(g - side_group);
@@ -370,7 +333,7 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
       if (c.kind == ConditionKind::kBox) {
         lattice_normal[c.axis] = c.side == 0 ? -1.0 : 1.0;
       } else if (c.kind != ConditionKind::kValidity) {
-        const Trilinear t = trilinear(samples.fields[c.field], dims, builder.points_[v]);
+        const Trilinear t = trilinear(samples.fields[c.field], dims, builder.points[v]);
         const double sign = c.kind == ConditionKind::kLimitMin ? -1.0 : 1.0;
         for (int a = 0; a < 3; ++a) lattice_normal[a] = sign * t.gradient[a];
       }
@@ -394,7 +357,7 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
     out.resize(nv);
     const auto& field = samples.fields[request.attribute_fields[a]];
     for (std::size_t v = 0; v < nv; ++v) {
-      out[v] = static_cast<float>(trilinear(field, dims, builder.points_[v]).value);
+      out[v] = static_cast<float>(trilinear(field, dims, builder.points[v]).value);
     }
   }
   if (stats) *stats = local;

@@ -25,19 +25,7 @@ std::uint32_t TetClipper::add_vertex(const std::array<double, 4>& w, std::uint64
     if (w[k] == 0.0) v.planes |= std::uint64_t{1} << k;
   }
   // Canonical sum: corners in ascending sample order, zero weights add exact zeros.
-  // A point on a lattice face keeps that face's coordinate exactly ((1-t)*10 + t*10
-  // need not round to 10), so nodes sharing the face compute the same positions.
-  for (int a = 0; a < 3; ++a) {
-    double s = 0, lo = INFINITY, hi = -INFINITY;
-    for (int k = 0; k < 4; ++k) {
-      s += w[k] * corner_pos_[k][a];
-      if (w[k] != 0.0) {
-        lo = std::min(lo, corner_pos_[k][a]);
-        hi = std::max(hi, corner_pos_[k][a]);
-      }
-    }
-    v.p[a] = lo == hi ? lo : s;
-  }
+  v.p = lattice_point(corner_pos_, w);
   vertices_.push_back(v);
   return static_cast<std::uint32_t>(vertices_.size() - 1);
 }
@@ -58,7 +46,8 @@ std::uint32_t TetClipper::crossing(std::uint32_t a, std::uint32_t b, std::size_t
   const std::uint64_t common = va.planes & vb.planes;
   const std::uint64_t new_plane = std::uint64_t{1} << (4 + c);
   const std::uint64_t face_bits = common & 0xF;
-  const int faces_shared = std::popcount(face_bits);
+  constexpr int kBits4[16]{0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+  const int faces_shared = kBits4[face_bits];
   const double* s = &corner_values_[c * 4];
   std::array<double, 4> w{};
   if (faces_shared >= 2) {
@@ -77,7 +66,7 @@ std::uint32_t TetClipper::crossing(std::uint32_t a, std::uint32_t b, std::size_t
   } else if (faces_shared == 1) {
     // On a lattice triangle, where this condition meets an earlier one.
     const std::uint64_t condition_bits = common >> 4;
-    if (std::popcount(condition_bits) == 1) {
+    if (condition_bits != 0 && (condition_bits & (condition_bits - 1)) == 0) {
       const std::size_t c1 = static_cast<std::size_t>(std::countr_zero(condition_bits));
       const std::size_t u1 = std::min(c1, c), u2 = std::max(c1, c);
       const int face = std::countr_zero(face_bits);

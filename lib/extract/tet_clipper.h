@@ -9,16 +9,36 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
 
 #include "extract/conditions.h"
+#include "extract/mesh_builder.h"
 
 namespace strielad {
 
-using Vec3 = std::array<double, 3>;
+// The point with barycentric weights w on the corners (in ascending sample order):
+// the canonical sum, and a lattice face's coordinate kept exactly ((1-t)*10 + t*10
+// need not round to 10), so every tetrahedron and every node sharing the point
+// computes the same bits.
+inline Vec3 lattice_point(const std::array<Vec3, 4>& corners, const std::array<double, 4>& w) {
+  Vec3 p;
+  for (int a = 0; a < 3; ++a) {
+    double s = 0, lo = INFINITY, hi = -INFINITY;
+    for (int k = 0; k < 4; ++k) {
+      s += w[k] * corners[k][a];
+      if (w[k] != 0.0) {
+        lo = lo < corners[k][a] ? lo : corners[k][a];
+        hi = hi > corners[k][a] ? hi : corners[k][a];
+      }
+    }
+    p[a] = lo == hi ? lo : s;
+  }
+  return p;
+}
 
 class TetClipper {
  public:

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: Apache-2.0
+// Collects the polygons of one node's extraction into indexed triangles. Vertices are
+// welded by (group, exact lattice position): the kernel computes shared vertices
+// canonically, so equal points are bit-identical. A group is one surface (a
+// condition's zero plane or a node side) whose vertices share a normal rule.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace strielad {
+
+using Vec3 = std::array<double, 3>;
+
+class MeshBuilder {
+ public:
+  MeshBuilder();
+
+  // A convex planar polygon in lattice coordinates whose outward side faces
+  // `outward`; repeated points are dropped, collinear points never make a zero-area
+  // triangle. `pts` is scratch (reordered).
+  void polygon(std::uint32_t group, Vec3* pts, std::size_t count, const Vec3& outward);
+
+  std::uint32_t vertex(std::uint32_t group, const Vec3& p);
+
+  std::vector<Vec3> points;
+  std::vector<std::uint32_t> vertex_groups;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::uint32_t> triangle_groups;
+
+ private:
+  void grow();
+  std::vector<std::uint32_t> slots_;  // vertex index + 1; 0 = empty
+  std::size_t mask_ = 0;
+};
+
+}  // namespace strielad
