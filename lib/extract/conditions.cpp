@@ -117,6 +117,10 @@ ConditionSet build_conditions(const NodeSamples& samples, const ExtractRequest& 
     // Index range covered by [lo, hi] (a descending axis swaps the ends).
     const double i_first = fractional_index(coords, ascending ? lo : hi);
     const double i_last = fractional_index(coords, ascending ? hi : lo);
+    if (!(i_first < i_last)) {  // lo = hi: a box without volume, no region
+      empty = true;
+      continue;
+    }
     for (int side = 0; side < 2; ++side) {
       Condition c;
       c.kind = ConditionKind::kBox;

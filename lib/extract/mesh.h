@@ -10,10 +10,15 @@
 
 namespace strielad {
 
-// Where a triangle lies: on a limit's iso-surface, on the node's boundary faces (shared
-// with the neighbouring node; a seamless export drops these), or on the scene's domain
-// box.
-enum class FaceKind : std::uint8_t { kLimit = 0, kNodeBoundary = 1, kDomainBox = 2 };
+// Where a triangle lies: on a limit's iso-surface (or the edge of missing data), on a
+// node face shared with a neighbouring node (a seamless export drops these), on the
+// scene's domain box, or on a node face that is the edge of the dataset's grid.
+enum class FaceKind : std::uint8_t {
+  kLimit = 0,
+  kNodeBoundary = 1,
+  kDomainBox = 2,
+  kGridBoundary = 3,
+};
 
 struct Mesh {
   std::uint32_t subvolume_id = 0;

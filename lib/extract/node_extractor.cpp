@@ -309,7 +309,8 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
   mesh.face_kinds.resize(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const std::uint32_t g = builder.triangle_groups[t];
-    mesh.face_kinds[t] = g >= side_group ? FaceKind::kNodeBoundary
+    mesh.face_kinds[t] = g >= side_group ? (samples.grid_edge[g - side_group] ? FaceKind::kGridBoundary
+                                                                             : FaceKind::kNodeBoundary)
                          : set.conditions[g].kind == ConditionKind::kBox ? FaceKind::kDomainBox
                                                                           : FaceKind::kLimit;
   }

@@ -15,6 +15,9 @@ struct NodeSamples {
   std::array<std::vector<double>, 3> coords;
   // fields[f] holds dims[0]*dims[1]*dims[2] values, x fastest; NaN = missing (fill).
   std::vector<std::vector<float>> fields;
+  // Node sides (x lo, x hi, y lo, y hi, z lo, z hi) that are the edge of the dataset's
+  // grid: their faces are FaceKind::kGridBoundary, not shared with a neighbour.
+  std::array<bool, 6> grid_edge{};
 
   std::array<std::size_t, 3> dims() const {
     return {coords[0].size(), coords[1].size(), coords[2].size()};

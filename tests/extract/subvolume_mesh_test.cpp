@@ -121,6 +121,17 @@ TEST(SubvolumeMesh, DomainBoxAloneGivesTheBoxOnUnevenAxes) {
   EXPECT_TRUE(any_box);
 }
 
+TEST(SubvolumeMesh, DomainRangeWithoutWidthGivesNothing) {
+  const NodeSamples s = sampled({axis(5, 0, 4), axis(5, 0, 4), axis(3, 0, 2)},
+                                {[](double, double, double) { return 2.0; }});
+  ExtractRequest r;
+  r.limits = {{0, 1.0, kUnbounded}};
+  r.box = {{{1.5, 1.5}, {-kUnbounded, kUnbounded}, {-kUnbounded, kUnbounded}}};
+  ExtractStats stats;
+  EXPECT_TRUE(extract_node_mesh(s, r, &stats).empty());
+  EXPECT_TRUE(stats.empty_by_condition);
+}
+
 TEST(SubvolumeMesh, ConstantInsideGivesTheNodeBoxAndOutsideGivesNothing) {
   const NodeSamples s = sampled({axis(5, 0, 4), axis(5, 0, 4), axis(3, 0, 2)},
                                 {[](double, double, double) { return 2.0; }});

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: Apache-2.0
+// Batch extraction of every node of one octree level that a scene needs, in parallel
+// (oneTBB), with totals for `--json` output. Results are in node order whatever the
+// thread count, so output files are deterministic.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "extract/node_extraction.h"
+#include "scene/scene.h"
+
+namespace strielad {
+
+struct LevelExtractionOptions {
+  std::uint32_t step = 0;
+  std::uint32_t level = 0;
+  int threads = 0;                            // 0: all cores
+  std::uint64_t cache_bytes = 256ull << 20;   // brick cache shared by the workers
+  std::function<void(std::uint64_t done, std::uint64_t total)> progress;
+};
+
+struct LevelExtractionTotals {
+  std::uint64_t nodes = 0;
+  std::array<std::uint64_t, 5> outcomes{};  // per NodeOutcome, over node x sub-volume
+  std::uint64_t bricks_used = 0;
+  std::uint64_t chunks_read = 0;        // data bricks fetched from disk and decompressed
+  std::uint64_t chunk_bytes = 0;        // their compressed bytes
+  std::uint64_t cells = 0, cut_cells = 0;
+  std::uint64_t triangles = 0, vertices = 0;
+  double seconds = 0;                   // wall time of the extraction
+};
+
+struct LevelExtraction {
+  std::vector<NodeExtraction> nodes;  // every node of the level, in node-id order
+  LevelExtractionTotals totals;
+};
+
+LevelExtraction extract_level(const Store& store, const ResolvedScene& scene,
+                              const LevelExtractionOptions& options);
+
+}  // namespace strielad

@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "extract/node_extraction.h"
+
+#include <algorithm>
+#include <map>
+
+#include "core/error.h"
+#include "extract/node_extractor.h"
+#include "store/brick_cache.h"
+#include "store/store.h"
+
+namespace strielad {
+
+std::string_view node_outcome_name(NodeOutcome outcome) {
+  switch (outcome) {
+    case NodeOutcome::kMesh: return "mesh";
+    case NodeOutcome::kEmpty: return "empty";
+    case NodeOutcome::kSkippedValueRange: return "skipped-value-range";
+    case NodeOutcome::kSkippedDomain: return "skipped-domain";
+    case NodeOutcome::kSkippedNoData: return "skipped-no-data";
+  }
+  return "unknown";
+}
+
+NodeGeometry node_geometry(const Store& store, NodeId node) {
+  const OctreeLayout& octree = store.octree();
+  const NodeKey key = octree.key(node);
+  const IndexBox box = octree.level_box(key);
+  const format::Manifest& m = store.manifest();
+  const std::array<const Axis*, 3> axes{&m.x, &m.y, &m.z};
+  NodeGeometry g;
+  const LevelShape& shape = octree.level(key.level);
+  for (int a = 0; a < 3; ++a) {
+    g.grid_edge[2 * a] = box.lo[a] == 0;
+    g.grid_edge[2 * a + 1] = box.hi[a] + 1 >= shape.samples[a];
+    for (std::size_t c = box.lo[a]; c <= box.hi[a]; ++c) {
+      g.coords[a].push_back(axes[a]->values[octree.fine_index(key.level, a, c)]);
+    }
+  }
+  return g;
+}
+
+namespace {
+
+// Why the limit excludes the node, or "" when it may not.
+std::string range_miss(const format::IndexEntry& e, const ResolvedLimit& limit,
+                       const format::Manifest& m) {
+  if (e.max < limit.min || e.min > limit.max) {
+    return fmt::format("{} in [{}, {}] never within [{}, {}]", m.variables[limit.variable].name,
+                       e.min, e.max, limit.min, limit.max);
+  }
+  return "";
+}
+
+bool disjoint(const std::vector<double>& coords, const AxisRange& range) {
+  const double lo = std::min(coords.front(), coords.back());
+  const double hi = std::max(coords.front(), coords.back());
+  return range.hi < lo || range.lo > hi;
+}
+
+}  // namespace
+
+NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
+                            std::uint32_t step, NodeId node) {
+  const format::Manifest& m = store.manifest();
+  if (!store.octree().contains(node)) {
+    throw make_error(ErrorCode::kNotFound, "node {} is not in the octree of {} ({} nodes)", node,
+                     store.path().string(), store.octree().node_count());
+  }
+  NodeExtraction out;
+  out.node = node;
+  const NodeGeometry geometry = node_geometry(store, node);
+  const std::size_t samples =
+      geometry.coords[0].size() * geometry.coords[1].size() * geometry.coords[2].size();
+  const std::array<std::string_view, 3> axis_names{m.x.name, m.y.name, m.z.name};
+
+  // Decide per sub-volume from the index and the geometry alone.
+  struct Plan {
+    std::size_t subvolume;
+    std::vector<ResolvedLimit> limits;  // those that cut the node
+  };
+  std::vector<Plan> plans;
+  out.results.resize(scene.subvolumes.size());
+  for (std::size_t i = 0; i < scene.subvolumes.size(); ++i) {
+    const ResolvedSubVolume& sv = scene.subvolumes[i];
+    SubVolumeResult& r = out.results[i];
+    r.subvolume_id = sv.id;
+    for (int a = 0; a < 3 && r.reason.empty(); ++a) {
+      if (disjoint(geometry.coords[a], sv.box[a])) {
+        r.outcome = NodeOutcome::kSkippedDomain;
+        r.reason = fmt::format("{} range [{}, {}] misses the node", axis_names[a], sv.box[a].lo,
+                               sv.box[a].hi);
+      }
+    }
+    Plan plan{i, {}};
+    for (const ResolvedLimit& limit : sv.limits) {
+      if (!r.reason.empty()) break;
+      const format::IndexEntry& e = store.node_entry(step, limit.variable, node);
+      if (!e.has_valid_data()) {
+        r.outcome = NodeOutcome::kSkippedNoData;
+        r.reason = fmt::format("{} has no valid sample in the node", m.variables[limit.variable].name);
+        break;
+      }
+      r.reason = range_miss(e, limit, m);
+      if (!r.reason.empty()) {
+        r.outcome = NodeOutcome::kSkippedValueRange;
+        break;
+      }
+      // A constant brick (no fill: every sample equals the constant) inside the limit:
+      // the limit cannot cut the node and its brick is not needed.
+      const bool inside = e.kind == format::BrickKind::kConstant && e.constant >= limit.min &&
+                          e.constant <= limit.max;
+      if (!inside) plan.limits.push_back(limit);
+    }
+    if (r.reason.empty()) plans.push_back(std::move(plan));
+  }
+  if (plans.empty()) return out;
+
+  // Fetch each needed brick once.
+  std::map<std::uint32_t, std::uint32_t> field_of;  // variable -> NodeSamples field
+  NodeSamples ns;
+  ns.coords = geometry.coords;
+  ns.grid_edge = geometry.grid_edge;
+  auto field = [&](std::uint32_t variable) {
+    const auto [it, inserted] = field_of.try_emplace(variable, static_cast<std::uint32_t>(ns.fields.size()));
+    if (inserted) {
+      std::shared_ptr<const Brick> brick =
+          cache ? store.read_brick(step, variable, node, *cache)
+                : std::make_shared<const Brick>(store.read_brick(step, variable, node));
+      ++out.bricks_used;
+      if (brick->sample_count() != samples) {
+        throw make_error(ErrorCode::kCorrupt, "{}: brick holds {} samples, the node has {}",
+                         store.describe_node(variable, node), brick->sample_count(), samples);
+      }
+      ns.fields.push_back(brick->to_vector<float>());
+    }
+    return it->second;
+  };
+  std::vector<std::uint32_t> attribute_fields;
+  std::vector<std::string> attribute_names;
+  for (std::uint32_t v : scene.attributes) {
+    attribute_fields.push_back(field(v));
+    attribute_names.push_back(m.variables[v].name);
+  }
+  for (const Plan& plan : plans) {
+    const ResolvedSubVolume& sv = scene.subvolumes[plan.subvolume];
+    ExtractRequest request;
+    request.subvolume_id = sv.id;
+    for (const ResolvedLimit& limit : plan.limits) {
+      request.limits.push_back({field(limit.variable), limit.min, limit.max});
+    }
+    for (int a = 0; a < 3; ++a) request.box[a] = {sv.box[a].lo, sv.box[a].hi};
+    request.attribute_fields = attribute_fields;
+    request.attribute_names = attribute_names;
+    SubVolumeResult& r = out.results[plan.subvolume];
+    r.mesh = extract_node_mesh(ns, request, &r.stats);
+    r.outcome = r.mesh.empty() ? NodeOutcome::kEmpty : NodeOutcome::kMesh;
+  }
+  return out;
+}
+
+}  // namespace strielad

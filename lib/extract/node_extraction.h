@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: Apache-2.0
+// Extraction of a resolved scene's sub-volumes in one octree node of a store, leaving
+// out what the scene does not need: a sub-volume whose value range or domain box
+// excludes the node is skipped from the index alone (no brick read, no decompression),
+// a node wholly inside every limit needs no limit bricks, and only the scene's
+// variables are ever read (formats/scene.md, "Leaving out").
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "extract/extract_request.h"
+#include "extract/mesh.h"
+#include "octree/octree_layout.h"
+#include "scene/scene.h"
+
+namespace strielad {
+
+class Store;
+class BrickCache;
+
+enum class NodeOutcome : std::uint8_t {
+  kMesh = 0,              // extracted, the mesh has triangles
+  kEmpty = 1,             // extracted (bricks read), nothing inside
+  kSkippedValueRange = 2, // a limit's range misses the node's exact value range
+  kSkippedDomain = 3,     // the domain box misses the node
+  kSkippedNoData = 4,     // a limit variable has no valid sample in the node
+};
+
+std::string_view node_outcome_name(NodeOutcome outcome);
+
+struct SubVolumeResult {
+  std::uint32_t subvolume_id = 0;
+  NodeOutcome outcome = NodeOutcome::kEmpty;
+  std::string reason;  // for skips: which variable or axis, and the ranges
+  Mesh mesh;
+  ExtractStats stats;
+};
+
+struct NodeExtraction {
+  NodeId node = 0;
+  std::vector<SubVolumeResult> results;  // one per scene sub-volume, in scene order
+  std::uint32_t bricks_used = 0;         // bricks fetched (cache or disk) for this node
+};
+
+// Throws strielad::Error (naming the file, variable and node) when a needed brick is
+// damaged; other nodes are unaffected.
+NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
+                            std::uint32_t step, NodeId node);
+
+// The node's samples on the manifest's axes, and the given variables' values
+// (reads them; missing = NaN).
+struct NodeGeometry {
+  std::array<std::vector<double>, 3> coords;
+  std::array<bool, 6> grid_edge{};  // as NodeSamples::grid_edge
+};
+NodeGeometry node_geometry(const Store& store, NodeId node);
+
+}  // namespace strielad

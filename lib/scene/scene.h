@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: Apache-2.0
+// The scene (formats/scene.md): which time step, which sub-volumes (scalar limits and a
+// domain box) and which per-vertex attributes to extract. Parsing, validation and the
+// canonical JSON form, then resolution of names against a store's manifest.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace strielad {
+
+namespace format {
+struct Manifest;
+}
+
+// Version of formats/scene.md this library reads and writes, and its size limits.
+inline constexpr std::uint32_t kSceneFormatVersion = 1;
+inline constexpr std::size_t kMaxSceneBytes = 1u << 20;
+inline constexpr std::size_t kMaxSceneNesting = 32;
+inline constexpr std::size_t kMaxSubVolumes = 64;
+inline constexpr std::size_t kMaxLimitsPerSubVolume = 16;
+inline constexpr std::size_t kMaxSceneAttributes = 64;
+inline constexpr std::uint32_t kMaxSubVolumeId = 65535;
+inline constexpr std::size_t kMaxSubVolumeNameBytes = 256;
+
+// One scalar limit: min <= var <= max, inclusive; an absent bound is open.
+struct Limit {
+  std::string var;
+  std::optional<double> min, max;
+  friend bool operator==(const Limit&, const Limit&) = default;
+};
+
+// An inclusive coordinate range, lo <= hi whatever the axis's storage order.
+struct AxisRange {
+  double lo = 0, hi = 0;
+  friend bool operator==(const AxisRange&, const AxisRange&) = default;
+};
+
+struct SubVolume {
+  std::uint32_t id = 0;  // 1..65535, unique in the scene
+  std::string name;      // label, at most 256 bytes
+  std::vector<Limit> limits;
+  std::map<std::string, AxisRange> domain;  // axis name -> range; absent axis = unbounded
+  friend bool operator==(const SubVolume&, const SubVolume&) = default;
+};
+
+struct Scene {
+  std::uint32_t time = 0;  // index of the store's time step
+  std::vector<SubVolume> subvolumes;
+  std::vector<std::string> attributes;  // variables carried per vertex, in this order
+  friend bool operator==(const Scene&, const Scene&) = default;
+};
+
+// Parses and validates scene JSON (syntax, keys, types, limits; no store needed).
+// `what` names the scene (its file name) in messages; every message also names the
+// offending value's path, e.g. "scene.json: subvolumes[1].limits[0].min: ...".
+// \error kInvalidInput for anything formats/scene.md says to reject;
+// \error kVersionTooNew when format_version is greater than kSceneFormatVersion.
+Scene parse_scene(std::string_view json_text, std::string_view what);
+
+// Reads a scene file (refusing one larger than kMaxSceneBytes without reading it) and
+// parses it; messages name the file.
+// \error kNotFound when the file does not exist; kIo when it cannot be read;
+// otherwise as parse_scene.
+Scene load_scene_file(const std::filesystem::path& path);
+
+// The rules of formats/scene.md that need no store, for scenes built in code (a viewer's
+// panel). parse_scene and resolve_scene apply them.
+// \error kInvalidInput naming `what` and the path of the offending value.
+void validate_scene(const Scene& scene, std::string_view what);
+
+// The canonical form (formats/scene.md, "Canonical form"): compact JSON that parses back
+// to an equal Scene and is byte-identical when written again.
+// \error kInvalidInput (as validate_scene, `what` = "scene") for an invalid scene.
+std::string scene_to_json(const Scene& scene);
+
+// A limit on a variable of the store: min <= value <= max, open bounds as -inf/+inf.
+struct ResolvedLimit {
+  std::uint32_t variable = 0;  // index into Manifest::variables
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  friend bool operator==(const ResolvedLimit&, const ResolvedLimit&) = default;
+};
+
+struct ResolvedSubVolume {
+  std::uint32_t id = 0;
+  std::string name;
+  std::vector<ResolvedLimit> limits;
+  // Per x, y, z of the manifest: the domain range, or [-inf, +inf] when the scene does
+  // not name the axis. Not clamped to the grid's extent.
+  std::array<AxisRange, 3> box;
+  friend bool operator==(const ResolvedSubVolume&, const ResolvedSubVolume&) = default;
+};
+
+struct ResolvedScene {
+  std::uint32_t time = 0;
+  std::vector<ResolvedSubVolume> subvolumes;    // in scene order
+  std::vector<std::uint32_t> attributes;        // variable indices, in scene order
+  std::vector<std::uint32_t> needed_variables;  // sorted, distinct: limit vars and attributes
+  friend bool operator==(const ResolvedScene&, const ResolvedScene&) = default;
+};
+
+// Validates the scene, then checks it against the store's manifest and turns names into
+// indices (formats/scene.md, "Resolution against a store").
+// \error kNotFound for a time step, variable or axis the store does not have (the
+// message lists what it has); kInvalidInput for a domain range outside its axis's
+// extent, and for whatever validate_scene rejects.
+ResolvedScene resolve_scene(const Scene& scene, const format::Manifest& manifest,
+                            std::string_view what);
+
+}  // namespace strielad

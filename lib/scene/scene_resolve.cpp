@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: Apache-2.0
+// Checks a scene against a store's manifest and turns names into indices
+// (formats/scene.md, "Resolution against a store").
+#include <algorithm>
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+#include "format/manifest.h"
+#include "scene/scene.h"
+#include "scene/scene_errors.h"
+
+namespace strielad {
+namespace {
+
+using scene_detail::fail;
+using scene_detail::index_path;
+using scene_detail::key_path;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+class Names {
+ public:
+  Names(const format::Manifest& m, std::string_view what) : manifest_(m), what_(what) {}
+
+  std::uint32_t variable(const std::string& name, const std::string& path) const {
+    for (std::size_t i = 0; i < manifest_.variables.size(); ++i) {
+      if (manifest_.variables[i].name == name) return static_cast<std::uint32_t>(i);
+    }
+    std::string list;
+    for (const format::StoreVariable& v : manifest_.variables) {
+      list += list.empty() ? v.name : fmt::format(", {}", v.name);
+    }
+    fail(ErrorCode::kNotFound, what_, path, "variable '{}' is not in the store (it has: {})", scene_detail::shown(name),
+         list);
+  }
+
+  std::size_t axis(const std::string& name, const std::string& path) const {
+    const Axis* axes[3] = {&manifest_.x, &manifest_.y, &manifest_.z};
+    for (std::size_t a = 0; a < 3; ++a) {
+      if (axes[a]->name == name) return a;
+    }
+    fail(ErrorCode::kNotFound, what_, path,
+         "axis '{}' is not an axis of the store (its axes: x {}, y {}, z {})", scene_detail::shown(name),
+         manifest_.x.name, manifest_.y.name, manifest_.z.name);
+  }
+
+ private:
+  const format::Manifest& manifest_;
+  std::string_view what_;
+};
+
+// Smallest and largest coordinate of an axis (its values are strictly monotonic).
+AxisRange extent(const Axis& axis) {
+  if (axis.values.empty()) return AxisRange{kInf, -kInf};  // matches nothing
+  return AxisRange{std::min(axis.values.front(), axis.values.back()),
+                   std::max(axis.values.front(), axis.values.back())};
+}
+
+}  // namespace
+
+ResolvedScene resolve_scene(const Scene& scene, const format::Manifest& manifest,
+                            std::string_view what) {
+  validate_scene(scene, what);
+  const Names names(manifest, what);
+  const std::size_t steps = manifest.time.size();
+  if (scene.time >= steps) {
+    if (steps == 0) {
+      fail(ErrorCode::kNotFound, what, "time", "time step {} is out of range: the store has no time steps",
+           scene.time);
+    }
+    fail(ErrorCode::kNotFound, what, "time",
+         "time step {} is out of range: the store has {} time steps (0..{})", scene.time, steps,
+         steps - 1);
+  }
+  ResolvedScene out;
+  out.time = scene.time;
+  const Axis* axes[3] = {&manifest.x, &manifest.y, &manifest.z};
+  for (std::size_t i = 0; i < scene.subvolumes.size(); ++i) {
+    const SubVolume& sv = scene.subvolumes[i];
+    const std::string path = index_path("subvolumes", i);
+    ResolvedSubVolume r;
+    r.id = sv.id;
+    r.name = sv.name;
+    for (std::size_t j = 0; j < sv.limits.size(); ++j) {
+      const Limit& l = sv.limits[j];
+      const std::string limit_path = index_path(key_path(path, "limits"), j);
+      r.limits.push_back(ResolvedLimit{names.variable(l.var, key_path(limit_path, "var")),
+                                       l.min.value_or(-kInf), l.max.value_or(kInf)});
+      out.needed_variables.push_back(r.limits.back().variable);
+    }
+    r.box.fill(AxisRange{-kInf, kInf});
+    for (const auto& [axis_name, range] : sv.domain) {
+      const std::string p = key_path(key_path(path, "domain"), axis_name);
+      const std::size_t a = names.axis(axis_name, p);
+      const AxisRange e = extent(*axes[a]);
+      if (range.hi < e.lo || range.lo > e.hi) {
+        fail(ErrorCode::kInvalidInput, what, p, "[{}, {}] lies outside the store's {} axis [{}, {}]",
+             range.lo, range.hi, scene_detail::shown(axis_name), e.lo, e.hi);
+      }
+      r.box[a] = range;
+    }
+    out.subvolumes.push_back(std::move(r));
+  }
+  for (std::size_t k = 0; k < scene.attributes.size(); ++k) {
+    out.attributes.push_back(names.variable(scene.attributes[k], index_path("attributes", k)));
+    out.needed_variables.push_back(out.attributes.back());
+  }
+  std::sort(out.needed_variables.begin(), out.needed_variables.end());
+  out.needed_variables.erase(std::unique(out.needed_variables.begin(), out.needed_variables.end()),
+                             out.needed_variables.end());
+  return out;
+}
+
+}  // namespace strielad
