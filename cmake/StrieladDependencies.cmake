@@ -18,6 +18,20 @@ find_package(fmt REQUIRED CONFIG)
 find_package(CLI11 REQUIRED CONFIG)
 find_package(nlohmann_json REQUIRED CONFIG)
 
+# VTK 9.1 for the paper's extraction pipeline (lib/peers) and .vtp export (lib/export).
+# Only the modules used: every extra module adds imported targets and transitive
+# find_package calls. Found after TBB and OpenVDB (toolchain.md pitfall 2). None of these
+# modules depends on VTK's HDF5, so hdf5-mpi is not pulled into the build (pitfall 3).
+find_package(VTK 9.1 REQUIRED COMPONENTS
+  CommonCore            # vtkFloatArray, vtkSMPTools
+  CommonDataModel       # vtkRectilinearGrid, vtkImageData, vtkPolyData, vtkPlane
+  CommonExecutionModel  # vtkAlgorithm (pipelines)
+  FiltersCore           # vtkFlyingEdges3D, vtkTriangleFilter, vtkPolyDataNormals,
+                        # vtkMassProperties, vtkFeatureEdges, vtkThreshold
+  FiltersGeneral        # vtkTableBasedClipDataSet
+  FiltersGeometry       # vtkDataSetSurfaceFilter
+  IOXML)                # vtkXMLPolyDataWriter/Reader
+
 function(strielad_warnings target)
   target_compile_options(${target} PRIVATE -Wall -Wextra)
   if(STRIELAD_WERROR)

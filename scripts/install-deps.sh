@@ -8,7 +8,7 @@ packages=(
   g++ cmake ninja-build pkg-config
   libhdf5-dev libnetcdf-dev netcdf-bin libblosc-dev libzstd-dev libxxhash-dev
   libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libtbb-dev
-  libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev
+  libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev libvtk9-dev
   libgtest-dev libgmock-dev
 )
 if [[ "${1:-}" == "--tests" ]]; then

@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "cli/progress_bar.h"
+#include "commands.h"
+#include "core/error.h"
+#include "export/vtp_writer.h"
+#include "extract/level_extraction.h"
+#include "scene/scene.h"
+#include "store/store.h"
+
+namespace strielad::serve_cmd {
+
+namespace {
+
+struct ExtractArgs {
+  std::string store, scene, output;
+  std::optional<std::uint32_t> time;
+  std::uint32_t level = 0;
+  int threads = 0;
+  bool seamless = false;
+  bool json = false;
+};
+
+int run_extract(const ExtractArgs& args) {
+  const auto store = Store::open(args.store);
+  Scene scene = load_scene_file(args.scene);
+  if (args.time) scene.time = *args.time;
+  const ResolvedScene resolved = resolve_scene(scene, store->manifest(), args.scene);
+
+  LevelExtractionOptions options;
+  options.step = resolved.time;
+  options.level = args.level;
+  options.threads = args.threads;
+  std::unique_ptr<cli::ProgressBar> bar;
+  std::mutex bar_mutex;
+  options.progress = [&](std::uint64_t done, std::uint64_t total) {
+    std::lock_guard lock(bar_mutex);
+    if (!bar) bar = std::make_unique<cli::ProgressBar>("extracting", total, "nodes");
+    (void)done;
+    bar->advance();
+  };
+  const LevelExtraction result = extract_level(*store, resolved, options);
+  if (bar) bar->finish();
+
+  std::vector<NodeMeshRef> meshes;
+  for (const NodeExtraction& n : result.nodes) {
+    for (const SubVolumeResult& r : n.results) {
+      if (r.outcome == NodeOutcome::kMesh) meshes.push_back({static_cast<std::uint32_t>(n.node), &r.mesh});
+    }
+  }
+  VtpOptions vtp;
+  vtp.drop_node_boundary_faces = args.seamless;
+  const VtpSummary written = write_vtp(args.output, meshes, vtp);
+
+  const LevelExtractionTotals& t = result.totals;
+  nlohmann::json j;
+  j["store"] = args.store;
+  j["scene"] = args.scene;
+  j["output"] = args.output;
+  j["time_step"] = options.step;
+  j["level"] = options.level;
+  j["nodes"] = t.nodes;
+  nlohmann::json outcomes;
+  for (std::size_t i = 0; i < t.outcomes.size(); ++i) {
+    outcomes[std::string(node_outcome_name(static_cast<NodeOutcome>(i)))] = t.outcomes[i];
+  }
+  j["node_subvolumes"] = outcomes;
+  j["bricks_used"] = t.bricks_used;
+  j["bricks_read_from_disk"] = t.chunks_read;
+  j["chunk_bytes_read"] = t.chunk_bytes;
+  j["cells_extracted"] = t.cells;
+  j["cut_cells"] = t.cut_cells;
+  j["triangles"] = t.triangles;
+  j["vertices"] = t.vertices;
+  j["extract_seconds"] = t.seconds;
+  j["file_triangles"] = written.triangles;
+  j["file_points"] = written.points;
+  j["dropped_boundary_triangles"] = written.dropped_triangles;
+  j["file_bytes"] = written.bytes;
+  if (args.json) {
+    std::cout << j.dump(2) << "\n";
+  } else {
+    spdlog::info(
+        "extracted level {} of step {}: {} nodes x {} sub-volumes: {} meshes, {} empty, {} "
+        "skipped by value range, {} by domain, {} without data; {} bricks ({} from disk, {:.1f} "
+        "MB); {} triangles in {:.2f} s",
+        options.level, options.step, t.nodes, resolved.subvolumes.size(), t.outcomes[0],
+        t.outcomes[1], t.outcomes[2], t.outcomes[3], t.outcomes[4], t.bricks_used, t.chunks_read,
+        static_cast<double>(t.chunk_bytes) / 1e6, t.triangles, t.seconds);
+    spdlog::info("wrote {} ({} triangles, {} points, {:.1f} MB)", args.output, written.triangles,
+                 written.points, static_cast<double>(written.bytes) / 1e6);
+  }
+  return 0;
+}
+
+}  // namespace
+
+void register_extract(CLI::App& app, cli::Action& action) {
+  auto* sub = app.add_subcommand(
+      "extract", "Extract every node of a level that a scene needs into one .vtp file (ParaView)");
+  auto args = std::make_shared<ExtractArgs>();
+  sub->add_option("--store", args->store, "Store directory")->required();
+  sub->add_option("--scene", args->scene, "Scene JSON (formats/scene.md)")->required();
+  sub->add_option("-o,--output", args->output, "Output .vtp file")->required();
+  sub->add_option("--time", args->time, "Time step (overrides the scene's \"time\")");
+  sub->add_option("--level", args->level, "Octree level (0 = full resolution)")
+      ->capture_default_str();
+  sub->add_option("--threads", args->threads, "Worker threads (0 = all cores)")
+      ->check(CLI::Range(0, 1024));
+  sub->add_flag("--seamless", args->seamless,
+                "Leave out the faces on shared node boundaries (one seamless surface)");
+  sub->add_flag("--json", args->json, "Print counts and timings as JSON on stdout");
+  sub->callback([&action, args] {
+    action = [args] {
+      if (!args->output.ends_with(".vtp")) {
+        throw make_error(ErrorCode::kInvalidArgument,
+                         "--output {}: only .vtp output is supported", args->output);
+      }
+      return run_extract(*args);
+    };
+  });
+}
+
+}  // namespace strielad::serve_cmd

@@ -1,0 +1,12 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "cli/tool_main.h"
+#include "commands.h"
+
+int main(int argc, char** argv) {
+  using namespace strielad;
+  const cli::ToolSpec spec{
+      "strielad-serve",
+      "Extract sub-volume meshes from a STRIELAD store (batch export; the server comes next)",
+      [](CLI::App& app, cli::Action& action) { serve_cmd::register_extract(app, action); }};
+  return cli::run_tool(spec, argc, argv);
+}

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "export/vtp_reader.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include <system_error>
+
+#include "core/error.h"
+#include "export/vtk_error_capture.h"
+
+namespace strielad {
+namespace {
+
+std::vector<VtpArray> read_arrays(vtkFieldData* data) {
+  std::vector<VtpArray> arrays;
+  for (int i = 0; i < data->GetNumberOfArrays(); ++i) {
+    vtkDataArray* array = data->GetArray(i);
+    if (array == nullptr) continue;  // string or other abstract arrays
+    VtpArray out;
+    out.name = array->GetName() != nullptr ? array->GetName() : "";
+    out.type = array->GetDataTypeAsString();
+    out.components = array->GetNumberOfComponents();
+    const vtkIdType n = array->GetNumberOfTuples();
+    out.values.resize(std::size_t(n) * std::size_t(out.components));
+    for (vtkIdType t = 0; t < n; ++t) {
+      for (int c = 0; c < out.components; ++c) {
+        out.values[std::size_t(t) * std::size_t(out.components) + std::size_t(c)] =
+            array->GetComponent(t, c);
+      }
+    }
+    arrays.push_back(std::move(out));
+  }
+  return arrays;
+}
+
+const VtpArray* find_array(const std::vector<VtpArray>& arrays, std::string_view name) {
+  for (const auto& a : arrays) {
+    if (a.name == name) return &a;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+const VtpArray* VtpContents::point_array(std::string_view name) const {
+  return find_array(point_arrays, name);
+}
+
+const VtpArray* VtpContents::cell_array(std::string_view name) const {
+  return find_array(cell_arrays, name);
+}
+
+VtpContents read_vtp(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw make_error(ErrorCode::kNotFound, "{}: no such file", path.string());
+  }
+  vtkNew<vtk_support::ErrorCapture> errors;
+  vtkNew<vtkXMLPolyDataReader> reader;
+  errors->watch(reader);
+  reader->SetReaderErrorObserver(errors);  // its internal readers and XML parser
+  reader->SetParserErrorObserver(errors);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* poly = reader->GetOutput();
+  if (errors->failed() || poly == nullptr) {
+    throw make_error(ErrorCode::kInvalidInput, "{}: not a readable VTK XML PolyData file: {}",
+                     path.string(), errors->failed() ? errors->message() : "no output");
+  }
+  VtpContents contents;
+  const vtkIdType np = poly->GetNumberOfPoints();
+  contents.points.resize(std::size_t(np));
+  for (vtkIdType p = 0; p < np; ++p) {
+    poly->GetPoint(p, contents.points[std::size_t(p)].data());
+  }
+  if (poly->GetPoints() != nullptr) {
+    contents.points_type = poly->GetPoints()->GetData()->GetDataTypeAsString();
+  }
+  vtkCellArray* polys = poly->GetPolys();
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);) {
+    if (count == 3) {
+      contents.triangles.push_back(
+          {std::uint32_t(ids[0]), std::uint32_t(ids[1]), std::uint32_t(ids[2])});
+    } else {
+      ++contents.other_cells;
+    }
+  }
+  contents.other_cells += std::uint64_t(poly->GetNumberOfVerts() + poly->GetNumberOfLines() +
+                                        poly->GetNumberOfStrips());
+  contents.point_arrays = read_arrays(poly->GetPointData());
+  contents.cell_arrays = read_arrays(poly->GetCellData());
+  if (vtkDataArray* normals = poly->GetPointData()->GetNormals()) {
+    contents.normals_name = normals->GetName() != nullptr ? normals->GetName() : "";
+  }
+  return contents;
+}
+
+}  // namespace strielad
