@@ -64,10 +64,20 @@ std::uint32_t MeshBuilder::vertex(std::uint32_t group, const Vec3& p) {
   return v;
 }
 
-void MeshBuilder::polygon(std::uint32_t group, Vec3* pts, std::size_t count, const Vec3& outward) {
+void MeshBuilder::begin_edges(std::size_t slots) {
+  if (edges_.size() < slots) edges_.resize(slots);
+  if (++stamp_ == 0) {  // wrapped: forget every slot
+    std::fill(edges_.begin(), edges_.end(), EdgeSlot{});
+    stamp_ = 1;
+  }
+}
+
+void MeshBuilder::polygon(std::uint32_t group, Vec3* pts, std::size_t count, const Vec3& outward,
+                          std::uint32_t* indices) {
   std::size_t m = 0;
   for (std::size_t i = 0; i < count; ++i) {
     if (m > 0 && pts[i] == pts[m - 1]) continue;
+    if (indices) indices[m] = indices[i];
     pts[m++] = pts[i];
   }
   while (m > 1 && pts[m - 1] == pts[0]) --m;
@@ -82,7 +92,10 @@ void MeshBuilder::polygon(std::uint32_t group, Vec3* pts, std::size_t count, con
   }
   const double facing = normal[0] * outward[0] + normal[1] * outward[1] + normal[2] * outward[2];
   if (facing == 0.0 || !std::isfinite(facing)) return;
-  if (facing < 0) std::reverse(pts, pts + m);
+  if (facing < 0) {
+    std::reverse(pts, pts + m);
+    if (indices) std::reverse(indices, indices + m);
+  }
   // Fan from the first apex whose triangles all have area.
   std::size_t apex = 0;
   bool all_good = false;
@@ -94,12 +107,12 @@ void MeshBuilder::polygon(std::uint32_t group, Vec3* pts, std::size_t count, con
     if (all_good) break;
   }
   if (!all_good) apex = 0;
-  const std::uint32_t first = vertex(group, pts[apex]);
+  auto id = [&](std::size_t i) { return indices ? indices[i] : vertex(group, pts[i]); };
+  const std::uint32_t first = id(apex);
   for (std::size_t i = 1; i + 1 < m; ++i) {
-    const Vec3& b = pts[(apex + i) % m];
-    const Vec3& c = pts[(apex + i + 1) % m];
-    if (!all_good && !has_area(pts[apex], b, c)) continue;
-    triangles.push_back({first, vertex(group, b), vertex(group, c)});
+    const std::size_t b = (apex + i) % m, c = (apex + i + 1) % m;
+    if (!all_good && !has_area(pts[apex], pts[b], pts[c])) continue;
+    triangles.push_back({first, id(b), id(c)});
     triangle_groups.push_back(group);
   }
 }

@@ -21,9 +21,23 @@ class MeshBuilder {
   // A convex planar polygon in lattice coordinates whose outward side faces
   // `outward`; repeated points are dropped, collinear points never make a zero-area
   // triangle. `pts` is scratch (reordered).
-  void polygon(std::uint32_t group, Vec3* pts, std::size_t count, const Vec3& outward);
+  // `indices` (optional, same length) are the points' vertex ids when known.
+  void polygon(std::uint32_t group, Vec3* pts, std::size_t count, const Vec3& outward,
+               std::uint32_t* indices = nullptr);
 
   std::uint32_t vertex(std::uint32_t group, const Vec3& p);
+
+  // Per-extraction cache of one vertex per lattice edge slot (sample * 7 + direction),
+  // so a crossing shared by up to six tetrahedra is welded without hashing. Call
+  // begin_edges once per extraction.
+  void begin_edges(std::size_t slots);
+  std::uint32_t edge_vertex(std::uint32_t group, std::size_t slot, const Vec3& p) {
+    EdgeSlot& e = edges_[slot];
+    if (e.stamp == stamp_ && e.group == group) return e.vertex;
+    const std::uint32_t v = vertex(group, p);
+    if (e.stamp != stamp_) e = EdgeSlot{stamp_, group, v};
+    return v;
+  }
 
   std::vector<Vec3> points;
   std::vector<std::uint32_t> vertex_groups;
@@ -31,7 +45,12 @@ class MeshBuilder {
   std::vector<std::uint32_t> triangle_groups;
 
  private:
+  struct EdgeSlot {
+    std::uint32_t stamp = 0, group = 0, vertex = 0;
+  };
   void grow();
+  std::vector<EdgeSlot> edges_;
+  std::uint32_t stamp_ = 0;
   std::vector<std::uint32_t> slots_;  // vertex index + 1; 0 = empty
   std::size_t mask_ = 0;
 };

@@ -129,9 +129,33 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
     builder.polygon(side_group + static_cast<std::uint32_t>(2 * axis + side), tri, 3, outward);
   };
 
+  builder.begin_edges(samples.sample_count() * 7);
   for (std::size_t z = 0; z + 1 < dims[2]; ++z) {
     for (std::size_t y = 0; y + 1 < dims[1]; ++y) {
+      // A row of cells: skip it whole when a condition fails on all four sample rows,
+      // and visit only its end cells when every condition holds on all of them.
+      const std::uint64_t* r0 = &set.inside[(z * dims[1] + y) * dims[0]];
+      const std::uint64_t* r1 = r0 + sy;
+      const std::uint64_t* r2 = r0 + sz;
+      const std::uint64_t* r3 = r0 + sz + sy;
+      std::uint64_t row_or = 0, row_and = all;
+      for (std::size_t x = 0; x < dims[0]; ++x) {
+        const std::uint64_t o = r0[x] | r1[x] | r2[x] | r3[x];
+        const std::uint64_t a = r0[x] & r1[x] & r2[x] & r3[x];
+        row_or |= o;
+        row_and &= a;
+      }
+      if ((row_or & all) != all) continue;
+      const bool row_inside = row_and == all;
+      const bool row_on_yz_boundary = y == 0 || y + 2 == dims[1] || z == 0 || z + 2 == dims[2];
+      if (row_inside && !row_on_yz_boundary && dims[0] > 2) {
+        local.inside_cells += dims[0] - 1;
+      }
       for (std::size_t x = 0; x + 1 < dims[0]; ++x) {
+        if (row_inside && !row_on_yz_boundary) {
+          if (x != 0 && x + 2 != dims[0]) continue;  // inside, not on the node boundary
+          if (dims[0] > 2) --local.inside_cells;       // counted again below
+        }
         const std::size_t base = (z * dims[1] + y) * dims[0] + x;
         std::array<std::uint64_t, 8> masks;
         std::uint64_t all_and = all, any_or = 0;
@@ -192,12 +216,6 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
             }
             return -1;
           };
-          auto touches_boundary = [&](const std::array<int, 4>&) {
-            for (int opposite = 0; opposite < 4; ++opposite) {
-              if (face_side(opposite) >= 0) return true;
-            }
-            return false;
-          };
           if (t_and == all) {
             if (boundary == 0) continue;
             for (int opposite = 0; opposite < 4; ++opposite) {
@@ -212,9 +230,9 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
             continue;
           }
           const std::uint64_t mixed = all & ~t_and;
-          if ((mixed & (mixed - 1)) == 0 && !(boundary != 0 && touches_boundary(tet))) {
-            // One condition crosses and no face is on the node boundary: the marching-
-            // tetrahedra case, without the general clipper. Same canonical points.
+          if ((mixed & (mixed - 1)) == 0) {
+            // One condition crosses: the marching-tetrahedra case, without the general
+            // clipper, and the same canonical points.
             ++local.simple_tets;
             const std::size_t c = static_cast<std::size_t>(std::countr_zero(mixed));
             const auto& values = set.conditions[c].values;
@@ -227,6 +245,11 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
               w[q] = t;
               return lattice_point(pos, w);
             };
+            // Lattice edge slot: lower sample * 7 + direction (corner difference 1..7).
+            auto edge_slot = [&](int p, int q) {
+              return ids[p] * 7 + static_cast<std::size_t>(tet[q] - tet[p] - 1);
+            };
+            std::uint32_t poly_ids[4];
             int in = 0;
             for (int k = 0; k < 4; ++k) in |= (sv[k] >= 0 ? 1 : 0) << k;
             Vec3 poly[4];
@@ -235,7 +258,11 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
             if (n_in == 1 || n_in == 3) {
               const int lone = std::countr_zero(static_cast<unsigned>(n_in == 1 ? in : ~in & 15));
               for (int k = 0; k < 4; ++k) {
-                if (k != lone) poly[m++] = edge_point(std::min(k, lone), std::max(k, lone));
+                if (k == lone) continue;
+                const int p = std::min(k, lone), q = std::max(k, lone);
+                poly[m] = edge_point(p, q);
+                poly_ids[m] = builder.edge_vertex(static_cast<std::uint32_t>(c), edge_slot(p, q), poly[m]);
+                ++m;
               }
             } else {
               int a = -1, b = -1, cc = -1, d = -1;
@@ -243,10 +270,12 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
                 if (in & (1 << k)) (a < 0 ? a : b) = k;
                 else (cc < 0 ? cc : d) = k;
               }
-              poly[m++] = edge_point(std::min(a, cc), std::max(a, cc));
-              poly[m++] = edge_point(std::min(a, d), std::max(a, d));
-              poly[m++] = edge_point(std::min(b, d), std::max(b, d));
-              poly[m++] = edge_point(std::min(b, cc), std::max(b, cc));
+              for (const auto& [u, v] : {std::pair{a, cc}, {a, d}, {b, d}, {b, cc}}) {
+                const int p = std::min(u, v), q = std::max(u, v);
+                poly[m] = edge_point(p, q);
+                poly_ids[m] = builder.edge_vertex(static_cast<std::uint32_t>(c), edge_slot(p, q), poly[m]);
+                ++m;
+              }
             }
             // Gradient: Kuhn edges are unit steps along one axis each.
             Vec3 outward{0, 0, 0};
@@ -254,7 +283,28 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
               const int axis = std::countr_zero(static_cast<unsigned>(tet[k + 1] ^ tet[k]));
               outward[axis] = sv[k] - sv[k + 1];
             }
-            builder.polygon(static_cast<std::uint32_t>(c), poly, m, outward);
+            builder.polygon(static_cast<std::uint32_t>(c), poly, m, outward, poly_ids);
+            // Faces on the node boundary: the triangle's inside part (Sutherland-Hodgman
+            // by the one condition, crossings from the same canonical points).
+            for (int opposite = 0; boundary != 0 && opposite < 4; ++opposite) {
+              const int side = face_side(opposite);
+              if (side < 0) continue;
+              int f[3];
+              for (int k = 0, j = 0; k < 4; ++k) {
+                if (k != opposite) f[j++] = k;
+              }
+              Vec3 clipped[4];
+              std::size_t q = 0;
+              for (int i = 0; i < 3; ++i) {
+                const int cur = f[i], nxt = f[(i + 1) % 3];
+                const bool cin = (in >> cur) & 1, nin = (in >> nxt) & 1;
+                if (cin) clipped[q++] = pos[cur];
+                if (cin != nin) clipped[q++] = edge_point(std::min(cur, nxt), std::max(cur, nxt));
+              }
+              Vec3 face_out{0, 0, 0};
+              face_out[side / 2] = side % 2 == 0 ? -1.0 : 1.0;
+              builder.polygon(side_group + static_cast<std::uint32_t>(side), clipped, q, face_out);
+            }
             continue;
           }
           ++local.clipped_tets;
