@@ -10,6 +10,9 @@ list(APPEND CMAKE_MODULE_PATH /usr/lib/x86_64-linux-gnu/cmake/OpenVDB)
 find_package(OpenVDB REQUIRED)
 
 find_package(netCDF REQUIRED CONFIG)
+# HDF5 directly only to silence its per-thread error printing (lib/ingest/netcdf_call.cpp);
+# the serial build, which netCDF links (toolchain.md pitfall 3: VTK pulls in the MPI one).
+pkg_check_modules(HDF5_SERIAL REQUIRED IMPORTED_TARGET hdf5-serial)
 pkg_check_modules(BLOSC REQUIRED IMPORTED_TARGET blosc)
 pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
 pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)

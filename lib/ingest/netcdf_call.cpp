@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ingest/netcdf_call.h"
 
+#include <H5Epublic.h>
 #include <netcdf.h>
 
 #include "core/error.h"
@@ -9,6 +10,14 @@ namespace strielad::ingest {
 
 std::mutex& netcdf_mutex() {
   static std::mutex mutex;
+  // netCDF turns HDF5's automatic error printing off only on the thread that first
+  // initialises it, and HDF5 keeps that setting per thread: without this, netCDF-4
+  // reads on pipeline threads print "HDF5-DIAG" noise for attributes netCDF probes.
+  static thread_local const bool quiet = [] {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    return true;
+  }();
+  (void)quiet;
   return mutex;
 }
 
