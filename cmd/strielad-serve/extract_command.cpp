@@ -13,6 +13,7 @@
 #include "extract/level_extraction.h"
 #include "scene/scene.h"
 #include "store/store.h"
+#include "vdb/level_grid.h"
 
 namespace strielad::serve_cmd {
 
@@ -33,6 +34,20 @@ int run_extract(const ExtractArgs& args) {
   if (args.time) scene.time = *args.time;
   const ResolvedScene resolved = resolve_scene(scene, store->manifest(), args.scene);
 
+  if (args.output.ends_with(".vdb")) {
+    const auto grids = vdb::write_subvolume_vdb(*store, resolved, args.level, args.output);
+    nlohmann::json j = nlohmann::json::array();
+    for (const auto& g : grids) {
+      j.push_back({{"subvolume_id", g.subvolume_id}, {"active_voxels", g.active_voxels},
+                   {"nodes_skipped", g.nodes_skipped}, {"bricks_read", g.bricks_read}});
+      if (!args.json) {
+        spdlog::info("sub-volume {}: {} active voxels ({} nodes skipped, {} bricks read)",
+                     g.subvolume_id, g.active_voxels, g.nodes_skipped, g.bricks_read);
+      }
+    }
+    if (args.json) std::cout << nlohmann::json{{"output", args.output}, {"grids", j}}.dump(2) << "\n";
+    return 0;
+  }
   LevelExtractionOptions options;
   options.step = resolved.time;
   options.level = args.level;
@@ -107,7 +122,9 @@ void register_extract(CLI::App& app, cli::Action& action) {
   auto args = std::make_shared<ExtractArgs>();
   sub->add_option("--store", args->store, "Store directory")->required();
   sub->add_option("--scene", args->scene, "Scene JSON (formats/scene.md)")->required();
-  sub->add_option("-o,--output", args->output, "Output .vtp file")->required();
+  sub->add_option("-o,--output", args->output,
+                  "Output: .vtp (meshes for ParaView) or .vdb (one fog volume per sub-volume)")
+      ->required();
   sub->add_option("--time", args->time, "Time step (overrides the scene's \"time\")");
   sub->add_option("--level", args->level, "Octree level (0 = full resolution)")
       ->capture_default_str();
@@ -118,9 +135,10 @@ void register_extract(CLI::App& app, cli::Action& action) {
   sub->add_flag("--json", args->json, "Print counts and timings as JSON on stdout");
   sub->callback([&action, args] {
     action = [args] {
-      if (!args->output.ends_with(".vtp")) {
+      if (!args->output.ends_with(".vtp") && !args->output.ends_with(".vdb")) {
         throw make_error(ErrorCode::kInvalidArgument,
-                         "--output {}: only .vtp output is supported", args->output);
+                         "--output {}: give a .vtp (meshes) or .vdb (fog volumes) file",
+                         args->output);
       }
       return run_extract(*args);
     };

@@ -102,6 +102,124 @@ openvdb::FloatGrid::Ptr build_level_grid(const Store& store, std::uint32_t step,
   return grid;
 }
 
+namespace {
+
+// Every limit holds at sample value v of each limit's brick (NaN = missing: outside).
+bool inside_limits(const std::vector<const Brick*>& bricks, const ResolvedSubVolume& sv,
+                   std::size_t i) {
+  for (std::size_t k = 0; k < sv.limits.size(); ++k) {
+    const double v = bricks[k]->sample(i);
+    if (!(v >= sv.limits[k].min && v <= sv.limits[k].max)) return false;
+  }
+  return true;
+}
+
+void write_grids(const openvdb::GridCPtrVec& grids, const std::filesystem::path& out) {
+  const auto temp = temporary_sibling(out);
+  try {
+    openvdb::io::File file(temp.string());
+    file.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
+    file.write(grids);
+    file.close();
+  } catch (const openvdb::Exception& e) {
+    std::error_code ignored;
+    std::filesystem::remove(temp, ignored);
+    throw make_error(ErrorCode::kIo, "{}: cannot write VDB file: {}", out.string(), e.what());
+  }
+  std::filesystem::rename(temp, out);
+}
+
+}  // namespace
+
+std::vector<SubVolumeGridSummary> write_subvolume_vdb(const Store& store,
+                                                      const ResolvedScene& scene,
+                                                      std::uint32_t level,
+                                                      const std::filesystem::path& out) {
+  initialize_openvdb();
+  const OctreeLayout& layout = store.octree();
+  if (level >= layout.level_count()) {
+    throw make_error(ErrorCode::kNotFound, "{}: level {} does not exist (the octree has {} levels)",
+                     store.path().string(), level, layout.level_count());
+  }
+  const LevelShape& shape = layout.level(level);
+  const auto& m = store.manifest();
+  const std::uint32_t step = scene.time;
+  openvdb::GridCPtrVec grids;
+  std::vector<SubVolumeGridSummary> summaries;
+  for (const ResolvedSubVolume& sv : scene.subvolumes) {
+    SubVolumeGridSummary summary;
+    summary.subvolume_id = sv.id;
+    auto grid = openvdb::FloatGrid::create(0.0f);
+    grid->setName(sv.name.empty() ? fmt::format("subvolume-{}", sv.id) : sv.name);
+    openvdb::math::Mat4d scale(openvdb::math::Mat4d::identity());
+    scale.preScale(openvdb::Vec3d(double(shape.stride[0]), double(shape.stride[1]),
+                                  double(shape.stride[2])));
+    grid->setTransform(openvdb::math::Transform::createLinearTransform(scale));
+    auto accessor = grid->getAccessor();
+    for (NodeId n = shape.first_node; n < shape.first_node + shape.node_count(); ++n) {
+      const NodeKey key = layout.key(n);
+      const IndexBox box = layout.level_box(key);
+      // Skip from the index alone: a limit's range misses the node's, or no valid data.
+      bool skip = false;
+      for (const ResolvedLimit& limit : sv.limits) {
+        const auto& e = store.node_entry(step, limit.variable, n);
+        skip = skip || !e.has_valid_data() || e.max < limit.min || e.min > limit.max;
+      }
+      // Domain box per axis, as sample index ranges of this level.
+      std::array<std::array<std::size_t, 2>, 3> range{};
+      const std::array<const Axis*, 3> axes{&m.x, &m.y, &m.z};
+      for (int a = 0; a < 3 && !skip; ++a) {
+        range[a] = {box.hi[a] + 1, box.lo[a]};  // empty until a sample fits
+        for (std::size_t c = box.lo[a]; c <= box.hi[a]; ++c) {
+          const double coord = axes[a]->values[layout.fine_index(level, a, c)];
+          if (coord >= sv.box[a].lo && coord <= sv.box[a].hi) {
+            range[a][0] = std::min(range[a][0], c);
+            range[a][1] = std::max(range[a][1], c);
+          }
+        }
+        skip = range[a][0] > range[a][1];
+      }
+      if (skip) {
+        ++summary.nodes_skipped;
+        continue;
+      }
+      std::vector<Brick> bricks;
+      bricks.reserve(sv.limits.size());
+      for (const ResolvedLimit& limit : sv.limits) {
+        bricks.push_back(store.read_brick(step, limit.variable, n));
+        ++summary.bricks_read;
+      }
+      std::vector<const Brick*> ptrs;
+      for (const Brick& b : bricks) ptrs.push_back(&b);
+      const std::size_t nx = box.extent(0), ny = box.extent(1);
+      for (std::size_t z = range[2][0]; z <= range[2][1]; ++z)
+        for (std::size_t y = range[1][0]; y <= range[1][1]; ++y)
+          for (std::size_t x = range[0][0]; x <= range[0][1]; ++x) {
+            const std::size_t i =
+                ((z - box.lo[2]) * ny + (y - box.lo[1])) * nx + (x - box.lo[0]);
+            if (inside_limits(ptrs, sv, i)) {
+              accessor.setValue(openvdb::Coord(int(x), int(y), int(z)), 1.0f);
+            }
+          }
+    }
+    grid->pruneGrid();
+    summary.active_voxels = grid->activeVoxelCount();
+    grid->setGridClass(openvdb::GRID_FOG_VOLUME);
+    grid->insertMeta("strielad:subvolume_id", openvdb::Int64Metadata(sv.id));
+    grid->insertMeta("strielad:step", openvdb::Int64Metadata(step));
+    grid->insertMeta("strielad:time", openvdb::DoubleMetadata(m.time.values.at(step)));
+    grid->insertMeta("strielad:time_units", openvdb::StringMetadata(m.time.units));
+    grid->insertMeta("strielad:level", openvdb::Int64Metadata(level));
+    add_axis_metadata(*grid, "x", m.x);
+    add_axis_metadata(*grid, "y", m.y);
+    add_axis_metadata(*grid, "z", m.z);
+    grids.push_back(grid);
+    summaries.push_back(summary);
+  }
+  write_grids(grids, out);
+  return summaries;
+}
+
 LevelGridSummary write_level_vdb(const Store& store, std::uint32_t step, std::uint32_t variable,
                                  std::uint32_t level, const std::filesystem::path& out,
                                  const LevelGridOptions& options) {

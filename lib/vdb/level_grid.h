@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <vector>
 
+#include "scene/scene.h"
 #include "store/store.h"
 
 namespace strielad::vdb {
@@ -31,5 +33,22 @@ struct LevelGridSummary {
 LevelGridSummary write_level_vdb(const Store& store, std::uint32_t step, std::uint32_t variable,
                                  std::uint32_t level, const std::filesystem::path& out,
                                  const LevelGridOptions& options = {});
+
+struct SubVolumeGridSummary {
+  std::uint32_t subvolume_id = 0;
+  std::uint64_t active_voxels = 0;
+  std::uint64_t nodes_skipped = 0;  // by value range, missing data or domain (no read)
+  std::uint64_t bricks_read = 0;
+};
+
+// Writes one fog volume per sub-volume of `scene` (a FloatGrid named "subvolume-ID" or
+// after the sub-volume) at octree level `level`, atomically: density 1 at the samples
+// where every limit holds, the sample is valid and inside the domain box; inactive
+// elsewhere. Same index-space transform and metadata as write_level_vdb (Blender and
+// Houdini read it as a volume; the non-uniform axes are in the metadata).
+std::vector<SubVolumeGridSummary> write_subvolume_vdb(const Store& store,
+                                                      const ResolvedScene& scene,
+                                                      std::uint32_t level,
+                                                      const std::filesystem::path& out);
 
 }  // namespace strielad::vdb
