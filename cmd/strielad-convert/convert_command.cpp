@@ -20,7 +20,8 @@ struct ConvertFlags {
   std::uint32_t brick = build::kDefaultBrick;
   std::string time, steps;
   int threads = 0;
-  format::CodecSpec codec;
+  format::CodecSpec codec{.predictor = std::string(build::kPredictorAuto)};
+  std::vector<std::string> codec_for;  // VARIABLE=CODEC:LEVEL:SHUFFLE[:PREDICTOR]
   bool nan_as_fill = false, no_finalize = false, json = false;
 };
 
@@ -31,6 +32,12 @@ void log_summary(const build::ConvertResult& r) {
                r.seconds > 0 ? r.input_bytes / 1e6 / r.seconds : 0.0, r.written_bytes / 1e6);
   spdlog::info("bricks: {} with data, {} constant, {} empty (no voxel data stored)", r.data,
                r.constant, r.empty);
+  std::string predictors;
+  for (const auto& [name, codec] : r.codecs.items()) {
+    if (!predictors.empty()) predictors += ", ";
+    predictors += fmt::format("{} {}", name, codec.value("predictor", "?"));
+  }
+  if (!predictors.empty()) spdlog::info("predictors: {}", predictors);
   if (!r.finalized) return;
   const auto& s = r.summary;
   spdlog::info("store: {:.1f} MB from {:.1f} MB of input (ratio {:.2f}), {} nodes per step in {} "
@@ -61,6 +68,13 @@ int run(const ConvertFlags& f) {
   }
   o.brick = f.brick;
   o.codec = f.codec;
+  for (const auto& text : f.codec_for) {
+    auto [variable, codec] = build::parse_codec_for(text, f.codec.predictor);
+    if (!o.codec_for.emplace(variable, codec).second) {
+      throw make_error(ErrorCode::kInvalidArgument, "--codec-for: variable '{}' given twice",
+                       variable);
+    }
+  }
   o.threads = f.threads;
   o.finalize = !f.no_finalize;
   std::unique_ptr<cli::ProgressBar> bar;
@@ -101,6 +115,14 @@ void register_convert(CLI::App& app, cli::Action& action) {
       ->check(CLI::Range(0, 9));
   app.add_option("--shuffle", f->codec.shuffle, "Blosc shuffle: none, byte, bit")
       ->capture_default_str();
+  app.add_option("--predictor", f->codec.predictor,
+                 "Lossless predictor before Blosc: auto (per variable, from sample bricks of "
+                 "the first step), none, lorenzo3")
+      ->capture_default_str();
+  app.add_option("--codec-for", f->codec_for,
+                 "A variable's own codec, VARIABLE=CODEC:LEVEL:SHUFFLE[:PREDICTOR], e.g. "
+                 "clw=zstd:5:byte:none (repeatable or comma-separated)")
+      ->delimiter(',');
   app.add_flag("--nan-as-fill", f->nan_as_fill, "Treat NaN/Inf in the data as missing values");
   app.add_flag("--no-finalize", f->no_finalize,
                "Do not finalize even if every step is present (finalize runs separately)");

@@ -128,7 +128,8 @@ EncodedBrick encode_brick(const PlaneBlock<T>& planes, const IndexBox& box, cons
     out.entry.kind = format::BrickKind::kData;
     const std::span<const std::byte> raw(reinterpret_cast<const std::byte*>(samples.data()),
                                          samples.size() * sizeof(T));
-    out.chunk = compress_brick(raw, sizeof(T) == 4 ? DType::kFloat32 : DType::kFloat64, codec);
+    out.chunk = compress_brick(raw, sizeof(T) == 4 ? DType::kFloat32 : DType::kFloat64,
+                               BrickDims{box.extent(0), box.extent(1), box.extent(2)}, codec);
     out.entry.chunk_size = static_cast<std::uint32_t>(out.chunk.size());
     out.entry.chunk_checksum = checksum64(out.chunk);
   }

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "build/converter.h"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 
@@ -20,13 +22,20 @@ namespace {
 
 using nlohmann::json;
 
-// Names the first top-level part of the plan that differs, for the refusal message.
+// Names the top-level parts of the plan that differ, for the refusal message: "'octree'
+// differs", "'codec', 'octree' differ" (a new brick size can change the predictors that
+// `auto` picks too).
 std::string plan_difference(const format::Manifest& a, const format::Manifest& b) {
   const json pa = format::manifest_plan_json(a), pb = format::manifest_plan_json(b);
+  std::vector<std::string> keys;
   for (const auto& [key, value] : pa.items()) {
-    if (!pb.contains(key) || pb[key] != value) return key;
+    if (!pb.contains(key) || pb[key] != value) keys.push_back(fmt::format("'{}'", key));
   }
-  return "unknown";
+  for (const auto& [key, value] : pb.items()) {
+    if (!pa.contains(key)) keys.push_back(fmt::format("'{}'", key));
+  }
+  if (keys.empty()) return "'store_id' differs";
+  return fmt::format("{} differ{}", fmt::join(keys, ", "), keys.size() == 1 ? "s" : "");
 }
 
 void remove_stale_temporaries(const std::filesystem::path& store, std::uint32_t first,
@@ -69,11 +78,83 @@ json ConvertResult::to_json() const {
               {"seconds", seconds},
               {"input_mb_per_s", seconds > 0 ? double(input_bytes) / 1e6 / seconds : 0.0},
               {"finalized", finalized},
+              {"codecs", codecs},
               {"summary", summary}};
 }
 
-format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOptions& options) {
-  format::validate_codec(options.codec);
+namespace {
+
+// The converter's codec rules: format::validate_codec plus predictor "auto".
+void validate_convert_codec(const format::CodecSpec& codec, std::string_view what) {
+  if (codec.predictor != kPredictorAuto && codec.predictor != format::kPredictorNone &&
+      codec.predictor != format::kPredictorLorenzo3) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "{}predictor '{}' is not one of auto, none, lorenzo3", what, codec.predictor);
+  }
+  format::CodecSpec blosc = codec;
+  blosc.predictor = format::kPredictorNone;
+  try {
+    format::validate_codec(blosc);
+  } catch (const Error& e) {
+    throw make_error(ErrorCode::kInvalidArgument, "{}{}", what, e.what());
+  }
+}
+
+bool same_blosc(const format::CodecSpec& a, const format::CodecSpec& b) {
+  return a.name == b.name && a.level == b.level && a.shuffle == b.shuffle;
+}
+
+}  // namespace
+
+std::pair<std::string, format::CodecSpec> parse_codec_for(std::string_view text,
+                                                          std::string_view default_predictor) {
+  const auto bad = [&] {
+    return make_error(ErrorCode::kInvalidArgument,
+                      "--codec-for: '{}' is not VARIABLE=CODEC:LEVEL:SHUFFLE[:PREDICTOR] "
+                      "(e.g. clw=zstd:5:byte:none)",
+                      text);
+  };
+  const auto eq = text.rfind('=');
+  if (eq == std::string_view::npos || eq == 0) throw bad();
+  std::vector<std::string> parts;
+  std::string_view rest = text.substr(eq + 1);
+  while (true) {
+    const auto colon = rest.find(':');
+    parts.emplace_back(rest.substr(0, colon));
+    if (colon == std::string_view::npos) break;
+    rest = rest.substr(colon + 1);
+  }
+  if (parts.size() < 3 || parts.size() > 4) throw bad();
+  format::CodecSpec c;
+  c.name = parts[0];
+  const std::string& level = parts[1];
+  if (level.size() != 1 || level[0] < '0' || level[0] > '9') throw bad();
+  c.level = level[0] - '0';
+  c.shuffle = parts[2];
+  c.predictor = parts.size() == 4 ? parts[3] : std::string(default_predictor);
+  std::string variable(text.substr(0, eq));
+  validate_convert_codec(c, fmt::format("--codec-for {}: ", variable));
+  return {std::move(variable), std::move(c)};
+}
+
+format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOptions& options,
+                            std::vector<PredictorTrial>* trials) {
+  validate_convert_codec(options.codec, "");
+  for (const auto& [name, codec] : options.codec_for) {
+    validate_convert_codec(codec, fmt::format("--codec-for {}: ", name));
+    bool found = false;
+    for (const auto& v : catalog.variables) found = found || v.name == name;
+    if (!found) {
+      std::string names;
+      for (const auto& v : catalog.variables) {
+        if (!names.empty()) names += ", ";
+        names += v.name;
+      }
+      throw make_error(ErrorCode::kInvalidArgument,
+                       "--codec-for names variable '{}', which is not converted (converted: {})",
+                       name, names);
+    }
+  }
   format::Manifest m;
   m.tool_version = kToolVersion;
   m.x = catalog.x;
@@ -87,12 +168,55 @@ format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOp
                                                 v.scale_factor, v.add_offset});
   }
   m.brick = options.brick;
-  m.codec = options.codec;
   m.nan_as_fill = options.scan.nan_as_fill;
   for (const auto& f : catalog.files) {
     m.sources.push_back(format::SourceRecord{f.path, f.size, f.header_checksum});
   }
   const OctreeLayout layout(m.dims(), m.brick);  // validates dims and brick
+
+  // Each variable's codec, "auto" resolved from sample bricks of step 0. One variable at
+  // a time: measured, running them in parallel made it 4x slower (HDF5 under the netCDF
+  // lock, the same file opened several times).
+  std::vector<format::CodecSpec> codecs;
+  for (std::size_t v = 0; v < catalog.variables.size(); ++v) {
+    const auto own = options.codec_for.find(catalog.variables[v].name);
+    codecs.push_back(own != options.codec_for.end() ? own->second : options.codec);
+  }
+  std::vector<std::optional<PredictorTrial>> auto_trials(codecs.size());
+  const auto started = std::chrono::steady_clock::now();
+  for (std::size_t v = 0; v < codecs.size(); ++v) {
+    if (codecs[v].predictor == kPredictorAuto) {
+      auto_trials[v] = choose_predictor(catalog, options.scan, v, layout, codecs[v]);
+    }
+  }
+  for (std::size_t v = 0; v < codecs.size(); ++v) {
+    if (!auto_trials[v]) continue;
+    PredictorTrial& t = *auto_trials[v];
+    spdlog::info("predictor for '{}': {} (lorenzo3 {:+.1f}% on {} of {} sampled bricks with "
+                 "data: {:.1f} KB without, {:.1f} KB with)",
+                 t.variable, t.chosen, -100.0 * t.saving(), t.data_bricks, t.bricks_sampled,
+                 t.bytes_none / 1e3, t.bytes_lorenzo3 / 1e3);
+    codecs[v].predictor = t.chosen;
+    if (trials) trials->push_back(std::move(t));
+  }
+  if (std::any_of(auto_trials.begin(), auto_trials.end(), [](const auto& t) { return t.has_value(); })) {
+    spdlog::info("predictors chosen in {:.0f} ms",
+                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
+                     .count());
+  }
+  // Store-wide codec: the predictor most variables with the common Blosc settings use.
+  m.codec = options.codec;
+  if (m.codec.predictor == kPredictorAuto) {
+    std::size_t lorenzo3 = 0, none = 0;
+    for (const auto& c : codecs) {
+      if (!same_blosc(c, m.codec)) continue;
+      (c.predictor == format::kPredictorLorenzo3 ? lorenzo3 : none) += 1;
+    }
+    m.codec.predictor = lorenzo3 > none ? format::kPredictorLorenzo3 : format::kPredictorNone;
+  }
+  for (std::size_t v = 0; v < codecs.size(); ++v) {
+    if (!(codecs[v] == m.codec)) m.variables[v].codec = codecs[v];
+  }
   m.store_id = format::compute_store_id(m);
   return m;
 }
@@ -105,7 +229,8 @@ ConvertResult convert(const ConvertOptions& options) {
                   static_cast<std::size_t>(options.threads));
   }
   const ingest::InputCatalog catalog = ingest::scan_inputs(options.inputs, options.scan);
-  format::Manifest plan = plan_store(catalog, options);
+  std::vector<PredictorTrial> trials;
+  format::Manifest plan = plan_store(catalog, options, &trials);
   const OctreeLayout layout(plan.dims(), plan.brick);
   const auto steps = static_cast<std::uint32_t>(plan.time.values.size());
   const std::uint32_t first = options.only_first.value_or(0);
@@ -118,13 +243,22 @@ ConvertResult convert(const ConvertOptions& options) {
   std::filesystem::create_directories(options.store / "steps");
   const auto manifest_path = options.store / "MANIFEST";
   ConvertResult result;
+  for (std::size_t v = 0; v < plan.variables.size(); ++v) {
+    const format::CodecSpec& c = plan.codec_of(v);
+    json entry{{"name", c.name}, {"level", c.level}, {"shuffle", c.shuffle},
+               {"predictor", c.predictor}};
+    for (const auto& t : trials) {
+      if (t.variable == plan.variables[v].name) entry["auto"] = t.to_json();
+    }
+    result.codecs[plan.variables[v].name] = std::move(entry);
+  }
   if (std::filesystem::exists(manifest_path)) {
     const format::Manifest existing =
         format::decode_manifest(read_file_bytes(manifest_path), manifest_path.string());
     if (existing.store_id != plan.store_id) {
       throw make_error(ErrorCode::kAlreadyExists,
-                       "{}: the store was started from different inputs or options (its '{}' "
-                       "differs); convert into a new directory or delete it",
+                       "{}: the store was started from different inputs or options (its {}); "
+                       "convert into a new directory or delete it",
                        options.store.string(), plan_difference(existing, plan));
     }
     if (existing.complete) {

@@ -8,9 +8,14 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
+#include "build/predictor_choice.h"
 #include "format/manifest.h"
 #include "ingest/input_catalog.h"
 
@@ -21,12 +26,19 @@ namespace strielad::build {
 // smallest stores; the paper used 20.
 inline constexpr std::uint32_t kDefaultBrick = 24;
 
+// A converter-only predictor value: decide per variable (build/predictor_choice.h).
+inline constexpr std::string_view kPredictorAuto = "auto";
+
 struct ConvertOptions {
   std::vector<std::filesystem::path> inputs;
   std::filesystem::path store;
   ingest::ScanOptions scan;
   std::uint32_t brick = kDefaultBrick;
-  format::CodecSpec codec;
+  // Every variable's codec; predictor "auto", "none" or "lorenzo3".
+  format::CodecSpec codec{.predictor = std::string(kPredictorAuto)};
+  // Per-variable codecs by variable name (predictor "auto" allowed), e.g. from
+  // --codec-for clw=zstd:5:byte:none.
+  std::map<std::string, format::CodecSpec> codec_for;
   int threads = 0;  // 0 = all cores
   // Convert only these steps of the store (inclusive), e.g. one Slurm array task.
   std::optional<std::uint32_t> only_first, only_last;
@@ -44,11 +56,23 @@ struct ConvertResult {
   double seconds = 0;
   bool finalized = false;
   nlohmann::json summary;  // the manifest summary when finalized
+  // Per variable: its codec in the store and, where it was "auto", the trial behind it.
+  nlohmann::json codecs = nlohmann::json::object();
   nlohmann::json to_json() const;
 };
 
-// Builds the manifest (plan) the inputs and options describe; store_id is set.
-format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOptions& options);
+// Builds the manifest (plan) the inputs and options describe; store_id is set. Resolves
+// predictor "auto" per variable by choose_predictor (logged; the trials are appended to
+// `trials` when given). The store-wide codec takes the predictor most variables with the
+// store-wide Blosc settings use (ties: none); other variables carry their own codec.
+// Throws kInvalidArgument for a bad codec or a codec_for naming a variable not converted.
+format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOptions& options,
+                            std::vector<PredictorTrial>* trials = nullptr);
+
+// "clw=zstd:5:byte:none" -> {"clw", codec}: NAME=CODEC:LEVEL:SHUFFLE[:PREDICTOR], the
+// predictor defaulting to `default_predictor`. Throws kInvalidArgument naming the text.
+std::pair<std::string, format::CodecSpec> parse_codec_for(std::string_view text,
+                                                          std::string_view default_predictor);
 
 ConvertResult convert(const ConvertOptions& options);
 

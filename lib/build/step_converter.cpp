@@ -66,7 +66,7 @@ void convert_variable(Context& ctx, std::uint32_t v) {
   const std::size_t nx = l0.samples[0], ny = l0.samples[1], nz = l0.samples[2];
   const std::size_t plane = nx * ny;
   const std::size_t B = layout.brick();
-  const format::CodecSpec& codec = ctx.manifest.codec;
+  const format::CodecSpec& codec = ctx.manifest.codec_of(v);
   const bool has_coarse = layout.level_count() > 1;
   const std::size_t src_size = source_type_size(ctx.manifest.variables[v].source_type);
 

@@ -68,6 +68,42 @@ Axis axis_from_json(const json& j, std::string_view what) {
   return a;
 }
 
+// A codec object as `version` writes it: version 1 had no predictor.
+json codec_json(const CodecSpec& c, std::uint32_t version) {
+  json j{{"name", c.name}, {"level", c.level}, {"shuffle", c.shuffle}};
+  if (version >= kManifestVersionPredictors) j["predictor"] = c.predictor;
+  return j;
+}
+
+CodecSpec codec_from_json(const json& j, std::uint32_t version, std::string_view what) {
+  if (!j.is_object()) throw make_error(ErrorCode::kCorrupt, "{}: codec is not an object", what);
+  CodecSpec c;
+  c.name = get<std::string>(j, "name", what);
+  c.level = get<int>(j, "level", what);
+  c.shuffle = get<std::string>(j, "shuffle", what);
+  if (version >= kManifestVersionPredictors) {
+    c.predictor = get<std::string>(j, "predictor", what);
+  } else if (j.contains("predictor")) {
+    throw make_error(ErrorCode::kCorrupt, "{}: key 'predictor' needs format version {} (this is {})",
+                     what, kManifestVersionPredictors, version);
+  }
+  try {
+    validate_codec(c);
+  } catch (const Error& e) {
+    throw make_error(ErrorCode::kCorrupt, "{}: {}", what, e.what());
+  }
+  return c;
+}
+
+void check_version(std::uint32_t version, std::string_view what) {
+  if (version > kManifestFormatVersion) {
+    throw make_error(ErrorCode::kVersionTooNew,
+                     "{}: format version {} is newer than this reader (max {})", what, version,
+                     kManifestFormatVersion);
+  }
+  if (version == 0) throw make_error(ErrorCode::kCorrupt, "{}: format version 0 is invalid", what);
+}
+
 json levels_json(const OctreeLayout& layout) {
   json levels = json::array();
   for (std::size_t l = 0; l < layout.level_count(); ++l) {
@@ -97,6 +133,10 @@ void validate_codec(const CodecSpec& codec) {
     throw make_error(ErrorCode::kInvalidArgument, "shuffle '{}' is not one of none, byte, bit",
                      codec.shuffle);
   }
+  if (codec.predictor != kPredictorNone && codec.predictor != kPredictorLorenzo3) {
+    throw make_error(ErrorCode::kInvalidArgument, "predictor '{}' is not one of none, lorenzo3",
+                     codec.predictor);
+  }
 }
 
 std::size_t Manifest::variable_index(std::string_view name) const {
@@ -112,6 +152,20 @@ std::size_t Manifest::variable_index(std::string_view name) const {
 std::string step_file_name(std::uint32_t step) { return fmt::format("steps/step-{:06d}.bricks", step); }
 
 json manifest_plan_json(const Manifest& m) {
+  const std::uint32_t version = m.format_version;
+  if (version == 0 || version > kManifestFormatVersion) {
+    throw make_error(ErrorCode::kInvalidArgument, "cannot write manifest format version {}",
+                     version);
+  }
+  if (version < kManifestVersionPredictors) {
+    bool v2_only = m.codec.predictor != kPredictorNone;
+    for (const StoreVariable& v : m.variables) v2_only = v2_only || v.codec.has_value();
+    if (v2_only) {
+      throw make_error(ErrorCode::kInvalidArgument,
+                       "a version {} manifest cannot hold predictors or per-variable codecs",
+                       version);
+    }
+  }
   json vars = json::array();
   for (const StoreVariable& v : m.variables) {
     json jv{{"name", v.name},
@@ -129,6 +183,7 @@ json manifest_plan_json(const Manifest& m) {
     put("valid_max", v.valid_max);
     put("scale_factor", v.scale_factor);
     put("add_offset", v.add_offset);
+    if (v.codec) jv["codec"] = codec_json(*v.codec, version);
     vars.push_back(std::move(jv));
   }
   json sources = json::array();
@@ -139,7 +194,7 @@ json manifest_plan_json(const Manifest& m) {
   const OctreeLayout layout(m.dims(), m.brick);
   return json{
       {"format", "strielad-store"},
-      {"format_version", kStoreFormatVersion},
+      {"format_version", version},
       {"grid", json{{"x", axis_json(m.x)}, {"y", axis_json(m.y)}, {"z", axis_json(m.z)}}},
       {"time", json{{"name", m.time.name},
                     {"units", m.time.units},
@@ -149,7 +204,7 @@ json manifest_plan_json(const Manifest& m) {
       {"octree", json{{"brick", m.brick},
                       {"node_count", layout.node_count()},
                       {"levels", levels_json(layout)}}},
-      {"codec", json{{"name", m.codec.name}, {"level", m.codec.level}, {"shuffle", m.codec.shuffle}}},
+      {"codec", codec_json(m.codec, version)},
       {"nan_as_fill", m.nan_as_fill},
       {"sources", std::move(sources)},
   };
@@ -185,12 +240,9 @@ Manifest manifest_from_json(const json& j, std::string_view what) {
     throw make_error(ErrorCode::kCorrupt, "{}: key 'format' is not \"strielad-store\"", what);
   }
   const auto version = get<std::uint32_t>(j, "format_version", what);
-  if (version > kStoreFormatVersion) {
-    throw make_error(ErrorCode::kVersionTooNew,
-                     "{}: format version {} is newer than this reader (max {})", what, version,
-                     kStoreFormatVersion);
-  }
+  check_version(version, what);
   Manifest m;
+  m.format_version = version;
   m.tool_version = get<std::string>(j, "tool_version", what);
   m.store_id = parse_hex64(get<std::string>(j, "store_id", what), "store_id", what);
   const auto state = get<std::string>(j, "state", what);
@@ -222,20 +274,20 @@ Manifest manifest_from_json(const json& j, std::string_view what) {
     v.valid_max = get_optional(jv, "valid_max", what);
     v.scale_factor = get_optional(jv, "scale_factor", what);
     v.add_offset = get_optional(jv, "add_offset", what);
+    if (const auto it = jv.find("codec"); it != jv.end()) {
+      const std::string where = fmt::format("{}: variable '{}'", what, v.name);
+      if (version < kManifestVersionPredictors) {
+        throw make_error(ErrorCode::kCorrupt, "{}: key 'codec' needs format version {} (this is {})",
+                         where, kManifestVersionPredictors, version);
+      }
+      v.codec = codec_from_json(*it, version, where);
+    }
     m.variables.push_back(std::move(v));
   }
   if (m.variables.empty()) throw make_error(ErrorCode::kCorrupt, "{}: no variables", what);
   const json& octree = get<json>(j, "octree", what);
   m.brick = get<std::uint32_t>(octree, "brick", what);
-  const json& codec = get<json>(j, "codec", what);
-  m.codec.name = get<std::string>(codec, "name", what);
-  m.codec.level = get<int>(codec, "level", what);
-  m.codec.shuffle = get<std::string>(codec, "shuffle", what);
-  try {
-    validate_codec(m.codec);
-  } catch (const Error& e) {
-    throw make_error(ErrorCode::kCorrupt, "{}: {}", what, e.what());
-  }
+  m.codec = codec_from_json(get<json>(j, "codec", what), version, what);
   m.nan_as_fill = get<bool>(j, "nan_as_fill", what);
   for (const json& js : get<json>(j, "sources", what)) {
     m.sources.push_back(SourceRecord{
@@ -281,7 +333,7 @@ std::vector<std::byte> encode_manifest(const Manifest& m) {
   const std::string payload = manifest_to_json(m).dump(1);
   ByteWriter w;
   w.text(kManifestMagic);
-  w.u32(kStoreFormatVersion);
+  w.u32(m.format_version);
   w.u32(0);
   w.u64(payload.size());
   w.text(payload);
@@ -296,12 +348,7 @@ Manifest decode_manifest(std::span<const std::byte> bytes, std::string_view what
     throw make_error(ErrorCode::kCorrupt, "{}: bad magic: not a STRIELAD manifest", what);
   }
   const std::uint32_t version = r.u32("format_version");
-  if (version > kStoreFormatVersion) {
-    throw make_error(ErrorCode::kVersionTooNew,
-                     "{}: format version {} is newer than this reader (max {})", what, version,
-                     kStoreFormatVersion);
-  }
-  if (version == 0) throw make_error(ErrorCode::kCorrupt, "{}: format version 0 is invalid", what);
+  check_version(version, what);
   if (const std::uint32_t flags = r.u32("flags"); flags != 0) {
     throw make_error(ErrorCode::kCorrupt, "{}: reserved flags are {} (must be 0)", what, flags);
   }
@@ -327,7 +374,13 @@ Manifest decode_manifest(std::span<const std::byte> bytes, std::string_view what
   } catch (const json::exception& e) {
     throw make_error(ErrorCode::kCorrupt, "{}: payload is not valid JSON: {}", what, e.what());
   }
-  return manifest_from_json(j, what);
+  Manifest m = manifest_from_json(j, what);
+  if (m.format_version != version) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: the frame says format version {} but the payload says {}", what, version,
+                     m.format_version);
+  }
+  return m;
 }
 
 }  // namespace strielad::format

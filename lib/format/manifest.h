@@ -16,17 +16,28 @@
 
 namespace strielad::format {
 
+// Manifest versions this code reads (1 and 2) and writes (2): formats/store.md.
+inline constexpr std::uint32_t kManifestFormatVersion = 2;
+// The first version with predictors and per-variable codecs.
+inline constexpr std::uint32_t kManifestVersionPredictors = 2;
+
+// Predictors (formats/store.md, "Predictors").
+inline constexpr std::string_view kPredictorNone = "none";
+inline constexpr std::string_view kPredictorLorenzo3 = "lorenzo3";
+
 // Defaults from the strielad-bench io codec sweep (BENCHMARKS.md): Blosc level 1 (zstd
 // level 1) converts 2.4x faster than level 5 (zstd 9) for 9% more bytes; byte shuffle
-// beats bit shuffle by 1.5x in size on dense fields.
+// beats bit shuffle by 1.5x in size on dense fields. The converter chooses the predictor
+// per variable (build/predictor_choice.h); "none" is what a version-1 store used.
 struct CodecSpec {
-  std::string name = "zstd";    // blosclz, lz4, lz4hc, zlib, zstd
-  int level = 1;                // 0..9
-  std::string shuffle = "byte"; // none, byte, bit
+  std::string name = "zstd";       // blosclz, lz4, lz4hc, zlib, zstd
+  int level = 1;                   // 0..9
+  std::string shuffle = "byte";    // none, byte, bit
+  std::string predictor = "none";  // none, lorenzo3 (format version 2)
   friend bool operator==(const CodecSpec&, const CodecSpec&) = default;
 };
 
-// Throws kInvalidArgument naming the bad field.
+// Throws kInvalidArgument naming the bad field (an unknown predictor included).
 void validate_codec(const CodecSpec& codec);
 
 struct StoreVariable {
@@ -34,6 +45,8 @@ struct StoreVariable {
   DType dtype = DType::kFloat32;
   std::string source_type;
   std::optional<double> fill_value, missing_value, valid_min, valid_max, scale_factor, add_offset;
+  // The variable's own codec (format version 2); absent: the store-wide Manifest::codec.
+  std::optional<CodecSpec> codec = std::nullopt;
   friend bool operator==(const StoreVariable&, const StoreVariable&) = default;
 };
 
@@ -53,6 +66,10 @@ struct StepRecord {
 };
 
 struct Manifest {
+  // The version the manifest was decoded from, and is encoded as: a rewritten version-1
+  // manifest (finalize of an old store) stays version 1, since its store_id and step
+  // files depend on its plan. New plans are version 2.
+  std::uint32_t format_version = kManifestFormatVersion;
   std::string tool_version;
   std::uint64_t store_id = 0;
   bool complete = false;
@@ -60,13 +77,18 @@ struct Manifest {
   TimeAxis time;
   std::vector<StoreVariable> variables;
   std::uint32_t brick = 24;
-  CodecSpec codec;
+  CodecSpec codec;  // store-wide; a variable's own codec overrides it
   bool nan_as_fill = false;
   std::vector<SourceRecord> sources;
   std::vector<StepRecord> steps;  // only when complete
   nlohmann::json summary = nlohmann::json::object();  // only when complete
 
   Dims3 dims() const { return Dims3{x.size(), y.size(), z.size()}; }
+  // The codec chunks of variable `v` are written with: its own, else the store-wide one.
+  const CodecSpec& codec_of(std::size_t v) const {
+    const auto& own = variables.at(v).codec;
+    return own ? *own : codec;
+  }
   // Index of a variable by name; throws kNotFound listing the store's variables.
   std::size_t variable_index(std::string_view name) const;
 };
@@ -74,15 +96,20 @@ struct Manifest {
 // Path of a step file relative to the store directory: "steps/step-000042.bricks".
 std::string step_file_name(std::uint32_t step);
 
-// The plan: everything that defines the store's content (formats/store.md).
+// The plan: everything that defines the store's content (formats/store.md), as the
+// manifest's format_version writes it. Throws kInvalidArgument when a version-1
+// manifest uses a version-2 feature (a predictor other than none, a variable's codec).
 nlohmann::json manifest_plan_json(const Manifest& manifest);
 std::uint64_t compute_store_id(const Manifest& manifest);
 
 nlohmann::json manifest_to_json(const Manifest& manifest);
-// Validates keys, types, axes and the octree level table; throws kCorrupt naming the key.
+// Validates keys, types, axes, codecs and the octree level table; throws kCorrupt naming
+// the key, kVersionTooNew for a format_version above kManifestFormatVersion.
 Manifest manifest_from_json(const nlohmann::json& json, std::string_view what);
 
+// Writes the frame and JSON with manifest.format_version (1 or 2).
 std::vector<std::byte> encode_manifest(const Manifest& manifest);
+// Reads versions 1 and 2; the frame's and the JSON's format_version must agree.
 Manifest decode_manifest(std::span<const std::byte> bytes, std::string_view what);
 
 }  // namespace strielad::format

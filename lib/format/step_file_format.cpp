@@ -59,10 +59,10 @@ void check_exact_size(std::span<const std::byte> bytes, std::size_t size, std::s
 }
 
 void check_version(std::uint32_t version, std::string_view what) {
-  if (version > kStoreFormatVersion) {
+  if (version > kStepFileFormatVersion) {
     throw make_error(ErrorCode::kVersionTooNew,
                      "{}: format version {} is newer than this reader (max {})", what, version,
-                     kStoreFormatVersion);
+                     kStepFileFormatVersion);
   }
   if (version == 0) {
     throw make_error(ErrorCode::kCorrupt, "{}: format version 0 is invalid", what);
@@ -74,7 +74,7 @@ void check_version(std::uint32_t version, std::string_view what) {
 std::vector<std::byte> encode_step_header(const StepHeader& h) {
   ByteWriter w;
   w.text(kHeaderMagic);
-  w.u32(kStoreFormatVersion);
+  w.u32(kStepFileFormatVersion);
   w.u32(kStepHeaderSize);
   w.u64(h.store_id);
   w.u32(h.step);

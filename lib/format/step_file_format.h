@@ -13,7 +13,10 @@
 
 namespace strielad::format {
 
-inline constexpr std::uint32_t kStoreFormatVersion = 1;
+// Step files have their own version: their layout is unchanged in store format version
+// 2 (only the manifest changed: how a chunk is decoded is the variable's codec, and the
+// header's store_id ties the file to that manifest), so they are still version 1.
+inline constexpr std::uint32_t kStepFileFormatVersion = 1;
 inline constexpr std::size_t kStepHeaderSize = 64;
 inline constexpr std::size_t kStepFooterSize = 64;
 inline constexpr std::size_t kSectionEntrySize = 48;

@@ -194,7 +194,7 @@ Brick Store::read_brick(std::uint32_t step, std::uint32_t variable, NodeId node)
                      what(), e.chunk_checksum, sum);
   }
   b.bytes.resize(b.sample_count() * dtype_size(b.dtype));
-  decompress_brick(chunk, b.dtype, b.bytes, what());
+  decompress_brick(chunk, b.dtype, b.dims, manifest_.codec_of(variable), b.bytes, what());
   return b;
 }
 

@@ -47,9 +47,10 @@ void describe_store(const Store& store, std::ostream& out) {
              m.time.values.front(), m.time.values.back(), m.time.units,
              m.time.calendar.empty() ? "" : " (" + m.time.calendar + ")");
   fmt::print(out, "variables  {}\n", m.variables.size());
-  for (const auto& v : m.variables) {
-    fmt::print(out, "  {:<9}{:<8} {:<12} {}\n", v.name, dtype_name(v.dtype),
-               v.units.empty() ? "-" : v.units, v.long_name);
+  for (std::size_t i = 0; i < m.variables.size(); ++i) {
+    const auto& v = m.variables[i];
+    fmt::print(out, "  {:<9}{:<8} {:<12} {:<9} {}\n", v.name, dtype_name(v.dtype),
+               v.units.empty() ? "-" : v.units, m.codec_of(i).predictor, v.long_name);
   }
   fmt::print(out, "octree     brick {}, {} levels, {} nodes per step, {:.1f}% sample overhead\n",
              m.brick, layout.level_count(), layout.node_count(),
@@ -59,8 +60,13 @@ void describe_store(const Store& store, std::ostream& out) {
     fmt::print(out, "  level {}  {} x {} x {} nodes, stride {} x {} x {}\n", l, s.nodes[0],
                s.nodes[1], s.nodes[2], s.stride[0], s.stride[1], s.stride[2]);
   }
-  fmt::print(out, "codec      blosc {} level {} shuffle {}\n", m.codec.name, m.codec.level,
-             m.codec.shuffle);
+  fmt::print(out, "codec      blosc {} level {} shuffle {}, predictor {} (format version {})\n",
+             m.codec.name, m.codec.level, m.codec.shuffle, m.codec.predictor, m.format_version);
+  for (const auto& v : m.variables) {
+    if (!v.codec) continue;
+    fmt::print(out, "  {:<9}blosc {} level {} shuffle {}, predictor {}\n", v.name, v.codec->name,
+               v.codec->level, v.codec->shuffle, v.codec->predictor);
+  }
   fmt::print(out, "sources    {} files\n", m.sources.size());
   fmt::print(out, "size       {:.1f} MB of step files\n", step_files_bytes(store) / 1e6);
   if (m.complete && m.summary.contains("ratio")) {

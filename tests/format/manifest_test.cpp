@@ -86,13 +86,17 @@ TEST(ManifestTest, InvalidVersion) {
   auto bytes = encode_manifest(sample_manifest());
   bytes[8] = std::byte{9};
   expect_error([&] { decode_manifest(bytes, "S/MANIFEST"); }, ErrorCode::kVersionTooNew,
-               {"version 9 is newer than this reader (max 1)"});
+               {"version 9 is newer than this reader (max 2)"});
+  bytes[8] = std::byte{0};
+  expect_error([&] { decode_manifest(bytes, "S/MANIFEST"); }, ErrorCode::kCorrupt,
+               {"version 0"});
 }
 
 // Re-frames a JSON payload with a valid checksum, so that only the content rules apply.
-std::vector<std::byte> frame(const std::string& payload) {
+std::vector<std::byte> frame(const std::string& payload, std::uint32_t version = 2) {
   auto bytes = encode_manifest(sample_manifest());
   std::vector<std::byte> out(bytes.begin(), bytes.begin() + 16);
+  std::memcpy(out.data() + 8, &version, 4);
   const std::uint64_t n = payload.size();
   out.resize(24);
   std::memcpy(out.data() + 16, &n, 8);
@@ -123,6 +127,110 @@ TEST(ManifestTest, ContentRulesAreEnforced) {
                {"store_id"});
   expect_error([&] { decode_manifest(frame("{not json"), "M"); }, ErrorCode::kCorrupt,
                {"not valid JSON"});
+}
+
+TEST(ManifestTest, WritesVersion2WithPredictorsAndPerVariableCodecs) {
+  Manifest m = sample_manifest();
+  m.codec.predictor = "lorenzo3";
+  m.variables.push_back(m.variables[0]);
+  m.variables[1].name = "ta";
+  m.variables[1].codec = CodecSpec{"lz4", 5, "bit", "none"};
+  m.store_id = compute_store_id(m);
+  const auto bytes = encode_manifest(m);
+  std::uint32_t frame_version = 0;
+  std::memcpy(&frame_version, bytes.data() + 8, 4);
+  EXPECT_EQ(frame_version, 2u);
+  const auto j = manifest_to_json(m);
+  EXPECT_EQ(j["format_version"], 2);
+  EXPECT_EQ(j["codec"]["predictor"], "lorenzo3");
+  EXPECT_FALSE(j["variables"][0].contains("codec"));
+  EXPECT_EQ(j["variables"][1]["codec"]["predictor"], "none");
+
+  const Manifest back = decode_manifest(bytes, "MANIFEST");
+  EXPECT_EQ(back.format_version, 2u);
+  EXPECT_EQ(back.codec, m.codec);
+  EXPECT_EQ(back.variables, m.variables);
+  EXPECT_EQ(back.codec_of(0).predictor, "lorenzo3");
+  EXPECT_EQ(back.codec_of(1), (CodecSpec{"lz4", 5, "bit", "none"}));
+}
+
+TEST(ManifestTest, StoreIdCoversPredictorsAndPerVariableCodecs) {
+  const Manifest a = sample_manifest();
+  Manifest b = a;
+  b.codec.predictor = "lorenzo3";
+  EXPECT_NE(compute_store_id(a), compute_store_id(b));
+  Manifest c = a;
+  c.variables[0].codec = a.codec;  // the same settings, but stated per variable
+  EXPECT_NE(compute_store_id(a), compute_store_id(c));
+  Manifest d = c;
+  d.variables[0].codec->predictor = "lorenzo3";
+  EXPECT_NE(compute_store_id(c), compute_store_id(d));
+}
+
+TEST(ManifestTest, UnknownOrMissingPredictorIsRejected) {
+  auto j = manifest_to_json(sample_manifest());
+  j["codec"]["predictor"] = "delta";
+  expect_error([&] { decode_manifest(frame(j.dump()), "M"); }, ErrorCode::kCorrupt,
+               {"M", "predictor 'delta' is not one of none, lorenzo3"});
+  j = manifest_to_json(sample_manifest());
+  j["codec"].erase("predictor");
+  expect_error([&] { decode_manifest(frame(j.dump()), "M"); }, ErrorCode::kCorrupt,
+               {"missing key 'predictor'"});
+  j = manifest_to_json(sample_manifest());
+  j["variables"][0]["codec"] = {{"name", "zstd"}, {"level", 1}, {"shuffle", "byte"},
+                                {"predictor", "lorenzo4"}};
+  expect_error([&] { decode_manifest(frame(j.dump()), "M"); }, ErrorCode::kCorrupt,
+               {"variable 'clw'", "predictor 'lorenzo4'"});
+  j = manifest_to_json(sample_manifest());
+  j["variables"][0]["codec"] = {{"name", "zstd"}, {"level", 1}, {"shuffle", "byte"}};
+  expect_error([&] { decode_manifest(frame(j.dump()), "M"); }, ErrorCode::kCorrupt,
+               {"variable 'clw'", "missing key 'predictor'"});
+  j = manifest_to_json(sample_manifest());
+  j["variables"][0]["codec"] = "zstd";
+  expect_error([&] { decode_manifest(frame(j.dump()), "M"); }, ErrorCode::kCorrupt,
+               {"variable 'clw'", "not an object"});
+}
+
+Manifest sample_manifest_v1() {
+  Manifest m = sample_manifest();
+  m.format_version = 1;
+  m.store_id = compute_store_id(m);
+  return m;
+}
+
+TEST(ManifestTest, Version1ReadsAsPredictorNone) {
+  const Manifest m = sample_manifest_v1();
+  const auto j = manifest_to_json(m);
+  EXPECT_EQ(j["format_version"], 1);
+  EXPECT_FALSE(j["codec"].contains("predictor"));
+  const auto bytes = encode_manifest(m);
+  EXPECT_EQ(bytes[8], std::byte{1});
+  const Manifest back = decode_manifest(bytes, "MANIFEST");
+  EXPECT_EQ(back.format_version, 1u);
+  EXPECT_EQ(back.codec.predictor, "none");
+  EXPECT_EQ(back.store_id, m.store_id);
+  // Re-encoding keeps version 1 and the store_id (finalize of an old store).
+  EXPECT_EQ(encode_manifest(back), bytes);
+}
+
+TEST(ManifestTest, Version1CannotHoldVersion2Features) {
+  auto j = manifest_to_json(sample_manifest_v1());
+  j["codec"]["predictor"] = "none";
+  expect_error([&] { decode_manifest(frame(j.dump(), 1), "M"); }, ErrorCode::kCorrupt,
+               {"'predictor' needs format version 2"});
+  j = manifest_to_json(sample_manifest_v1());
+  j["variables"][0]["codec"] = manifest_to_json(sample_manifest())["codec"];
+  expect_error([&] { decode_manifest(frame(j.dump(), 1), "M"); }, ErrorCode::kCorrupt,
+               {"variable 'clw'", "'codec' needs format version 2"});
+  Manifest m = sample_manifest_v1();
+  m.codec.predictor = "lorenzo3";
+  expect_error([&] { encode_manifest(m); }, ErrorCode::kInvalidArgument, {"version 1"});
+}
+
+TEST(ManifestTest, FrameAndPayloadVersionsMustAgree) {
+  const auto j = manifest_to_json(sample_manifest_v1());
+  expect_error([&] { decode_manifest(frame(j.dump(), 2), "M"); }, ErrorCode::kCorrupt,
+               {"frame says format version 2 but the payload says 1"});
 }
 
 }  // namespace

@@ -22,12 +22,25 @@ std::vector<std::vector<std::uint8_t>> strielad_fuzz_seeds() {
   m.brick = 4;
   m.store_id = compute_store_id(m);
   const auto plain = encode_manifest(m);
+  // Version 2 features: a store-wide predictor and a variable with its own codec.
+  Manifest v2 = m;
+  v2.codec.predictor = "lorenzo3";
+  v2.variables.push_back(v2.variables[0]);
+  v2.variables[1].name = "clw";
+  v2.variables[1].codec = CodecSpec{"lz4", 5, "bit", "none"};
+  v2.store_id = compute_store_id(v2);
+  const auto predictors = encode_manifest(v2);
+  // A version-1 manifest, as stores written before predictors have.
+  Manifest v1 = m;
+  v1.format_version = 1;
+  v1.store_id = compute_store_id(v1);
+  const auto version1 = encode_manifest(v1);
   m.complete = true;
   m.steps = {StepRecord{0, step_file_name(0), 10, 1}};
   m.summary = {{"ratio", 2.0}};
   const auto complete = encode_manifest(m);
   std::vector<std::vector<std::uint8_t>> seeds;
-  for (const auto* b : {&plain, &complete}) {
+  for (const auto* b : {&plain, &complete, &predictors, &version1}) {
     seeds.emplace_back(reinterpret_cast<const std::uint8_t*>(b->data()),
                        reinterpret_cast<const std::uint8_t*>(b->data()) + b->size());
   }

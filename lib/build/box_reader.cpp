@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "build/box_reader.h"
+
+#include <netcdf.h>
+#include <netcdf_filter.h>
+
+#include <array>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "ingest/netcdf_call.h"
+#include "ingest/netcdf_file.h"
+#include "ingest/sample_conversion.h"
+#include "ingest/variable_meta.h"
+
+namespace strielad::build {
+
+struct BoxReader::Impl {
+  std::string path, name;
+  std::string context;  // "file: variable 'x' time step t"
+  ingest::NcFile file;
+  int grpid = -1, varid = -1;
+  bool has_time = false;
+  std::size_t time_index = 0;
+  bool filtered = false;
+  bool nan_as_fill = false;
+  ingest::CfValueAttributes attrs;
+  // Raw samples of the last read; grown on demand, never zero-filled (netCDF fills it).
+  std::unique_ptr<std::byte[]> buffer;
+  std::size_t buffer_size = 0;
+
+  template <typename Out>
+  void read(const IndexBox& box, std::span<Out> out);
+};
+
+namespace {
+
+template <typename Raw, typename Out>
+void convert(const std::byte* buffer, const ingest::CfValueAttributes& attrs, bool nan_as_fill,
+             std::span<Out> out) {
+  const std::span<const Raw> raw(reinterpret_cast<const Raw*>(buffer), out.size());
+  ingest::convert_samples<Raw, Out>(raw, attrs, nan_as_fill, out);
+}
+
+template <typename Out>
+void convert_any(const std::byte* buffer, const ingest::CfValueAttributes& attrs,
+                 bool nan_as_fill, std::span<Out> out) {
+  switch (attrs.type) {
+    case NC_BYTE: return convert<signed char>(buffer, attrs, nan_as_fill, out);
+    case NC_UBYTE: return convert<unsigned char>(buffer, attrs, nan_as_fill, out);
+    case NC_SHORT: return convert<short>(buffer, attrs, nan_as_fill, out);
+    case NC_USHORT: return convert<unsigned short>(buffer, attrs, nan_as_fill, out);
+    case NC_INT: return convert<int>(buffer, attrs, nan_as_fill, out);
+    case NC_UINT: return convert<unsigned int>(buffer, attrs, nan_as_fill, out);
+    case NC_INT64: return convert<long long>(buffer, attrs, nan_as_fill, out);
+    case NC_UINT64: return convert<unsigned long long>(buffer, attrs, nan_as_fill, out);
+    case NC_FLOAT: return convert<float>(buffer, attrs, nan_as_fill, out);
+    case NC_DOUBLE: return convert<double>(buffer, attrs, nan_as_fill, out);
+    default: throw make_error(ErrorCode::kInternal, "unexpected netCDF type {}", attrs.type);
+  }
+}
+
+}  // namespace
+
+BoxReader::BoxReader(const ingest::InputCatalog& catalog, const ingest::ScanOptions& scan,
+                     std::size_t variable, std::size_t step)
+    : impl_(std::make_unique<Impl>()) {
+  if (variable >= catalog.variables.size() || variable >= catalog.locations.size() ||
+      step >= catalog.locations[variable].size()) {
+    throw make_error(ErrorCode::kInvalidArgument, "box reader: no variable {} at time step {}",
+                     variable, step);
+  }
+  const ingest::VariableLocation loc = catalog.locations[variable][step];
+  Impl& m = *impl_;
+  m.path = catalog.files.at(loc.file).path;
+  m.name = catalog.variables[variable].name;
+  m.context = fmt::format("{}: variable '{}' time step {}", m.path, m.name, step);
+  m.time_index = loc.time_in_file;
+  m.nan_as_fill = scan.nan_as_fill;
+
+  std::lock_guard lock(ingest::netcdf_mutex());
+  try {
+    open_variable(m, catalog.dims());
+  } catch (...) {
+    m.file = ingest::NcFile();  // closed under the lock
+    throw;
+  }
+}
+
+void BoxReader::open_variable(Impl& m, Dims3 dims) {
+  m.file = ingest::NcFile(m.path);
+  m.grpid = m.file.id();
+  std::string short_name = m.name;
+  if (const auto slash = m.name.rfind('/'); slash != std::string::npos) {
+    std::string group = "/";  // not "/" + substr: GCC 12 -O3 warns falsely (PR 105651)
+    group.append(m.name, 0, slash);
+    short_name = m.name.substr(slash + 1);
+    ingest::nc_check(nc_inq_grp_full_ncid(m.file.id(), group.c_str(), &m.grpid), m.context);
+  }
+  ingest::nc_check(nc_inq_varid(m.grpid, short_name.c_str(), &m.varid), m.context);
+  const auto dimids = ingest::variable_dimids(m.grpid, m.varid);
+  bool ok = dimids.size() == 3 || dimids.size() == 4;
+  if (ok) {
+    m.has_time = dimids.size() == 4;
+    const std::size_t s = dimids.size() - 3;
+    ok = ingest::dimension_length(m.grpid, dimids[s]) == dims.z &&
+         ingest::dimension_length(m.grpid, dimids[s + 1]) == dims.y &&
+         ingest::dimension_length(m.grpid, dimids[s + 2]) == dims.x &&
+         (m.has_time ? m.time_index < ingest::dimension_length(m.grpid, dimids[0])
+                     : m.time_index == 0);
+  }
+  if (!ok) {
+    throw make_error(ErrorCode::kInvalidInput, "{}: no longer has the shape it had when scanned",
+                     m.context);
+  }
+  m.attrs = ingest::read_value_attributes(m.grpid, m.varid);
+  if (!ingest::is_numeric_type(m.attrs.type)) {
+    throw make_error(ErrorCode::kInvalidInput, "{}: non-numeric type {}", m.context,
+                     ingest::nc_type_name(m.attrs.type));
+  }
+  // Classic files have neither filters nor chunk caches: both calls then fail harmlessly.
+  std::size_t filters = 0;
+  int shuffle = 0, deflate = 0, level = 0;
+  const bool has_filters =
+      nc_inq_var_filter_ids(m.grpid, m.varid, &filters, nullptr) == NC_NOERR && filters > 0;
+  const bool has_shuffle =
+      nc_inq_var_deflate(m.grpid, m.varid, &shuffle, &deflate, &level) == NC_NOERR &&
+      (shuffle != 0 || deflate != 0);
+  m.filtered = has_filters || has_shuffle;
+  if (!m.filtered) nc_set_var_chunk_cache(m.grpid, m.varid, 0, 0, 0.75f);
+}
+
+BoxReader::~BoxReader() {
+  std::lock_guard lock(ingest::netcdf_mutex());  // nc_close is a netCDF call too
+  impl_.reset();
+}
+
+bool BoxReader::filtered() const { return impl_->filtered; }
+
+template <typename Out>
+void BoxReader::Impl::read(const IndexBox& box, std::span<Out> out) {
+  if (out.size() != box.count()) {
+    throw make_error(ErrorCode::kInternal, "box reader: {} samples for a box of {}", out.size(),
+                     box.count());
+  }
+  {
+    std::lock_guard lock(ingest::netcdf_mutex());
+    std::array<std::size_t, 4> start{}, edge{};
+    std::size_t d = 0;
+    if (has_time) {
+      start[d] = time_index;
+      edge[d++] = 1;
+    }
+    for (int a = 2; a >= 0; --a) {
+      start[d] = box.lo[a];
+      edge[d++] = box.extent(a);
+    }
+    const std::size_t bytes = out.size() * ingest::nc_type_size(attrs.type);
+    if (buffer_size < bytes) {
+      buffer.reset(new std::byte[bytes]);
+      buffer_size = bytes;
+    }
+    ingest::nc_check(nc_get_vara(grpid, varid, start.data(), edge.data(), buffer.get()), context);
+  }
+  convert_any<Out>(buffer.get(), attrs, nan_as_fill, out);
+}
+
+void BoxReader::read(const IndexBox& box, std::span<float> out) { impl_->read(box, out); }
+void BoxReader::read(const IndexBox& box, std::span<double> out) { impl_->read(box, out); }
+
+}  // namespace strielad::build
