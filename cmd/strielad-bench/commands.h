@@ -10,5 +10,6 @@ namespace strielad::bench_cmd {
 
 // `command_line`: how the tool was invoked, quoted into reports.
 void register_io(CLI::App& app, cli::Action& action, std::string command_line);
+void register_extract(CLI::App& app, cli::Action& action, std::string command_line);
 
 }  // namespace strielad::bench_cmd
