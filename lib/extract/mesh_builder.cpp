@@ -65,11 +65,18 @@ std::uint32_t MeshBuilder::vertex(std::uint32_t group, const Vec3& p) {
 }
 
 void MeshBuilder::begin_edges(std::size_t slots) {
-  if (edges_.size() < slots) edges_.resize(slots);
-  if (++stamp_ == 0) {  // wrapped: forget every slot
-    std::fill(edges_.begin(), edges_.end(), EdgeSlot{});
-    stamp_ = 1;
+  struct ThreadEdges {
+    std::vector<EdgeSlot> slots;
+    std::uint32_t stamp = 0;
+  };
+  static thread_local ThreadEdges cache;
+  if (cache.slots.size() < slots) cache.slots.resize(slots);
+  if (++cache.stamp == 0) {  // wrapped: forget every slot
+    std::fill(cache.slots.begin(), cache.slots.end(), EdgeSlot{});
+    cache.stamp = 1;
   }
+  edges_ = cache.slots.data();
+  stamp_ = cache.stamp;
 }
 
 void MeshBuilder::polygon(std::uint32_t group, Vec3* pts, std::size_t count, const Vec3& outward,
