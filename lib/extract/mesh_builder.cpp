@@ -9,10 +9,6 @@ namespace strielad {
 
 namespace {
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 bool has_area(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 n = cross(sub(b, a), sub(c, a));
   return n[0] != 0 || n[1] != 0 || n[2] != 0;

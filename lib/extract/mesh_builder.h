@@ -10,9 +10,9 @@
 #include <cstdint>
 #include <vector>
 
-namespace strielad {
+#include "extract/vec3.h"
 
-using Vec3 = std::array<double, 3>;
+namespace strielad {
 
 class MeshBuilder {
  public:

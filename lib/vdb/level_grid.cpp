@@ -225,18 +225,7 @@ LevelGridSummary write_level_vdb(const Store& store, std::uint32_t step, std::ui
                                  const LevelGridOptions& options) {
   LevelGridSummary summary;
   auto grid = build_level_grid(store, step, variable, level, options, &summary);
-  const auto temp = temporary_sibling(out);
-  try {
-    openvdb::io::File file(temp.string());
-    file.setCompression(openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
-    file.write(openvdb::GridCPtrVec{grid});
-    file.close();
-  } catch (const openvdb::Exception& e) {
-    std::error_code ignored;
-    std::filesystem::remove(temp, ignored);
-    throw make_error(ErrorCode::kIo, "{}: cannot write VDB file: {}", out.string(), e.what());
-  }
-  std::filesystem::rename(temp, out);
+  write_grids(openvdb::GridCPtrVec{grid}, out);
   return summary;
 }
 
