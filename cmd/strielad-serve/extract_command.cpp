@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "export/vtp_writer.h"
 #include "extract/level_extraction.h"
+#include "extract/output_frame.h"
 #include "scene/scene.h"
 #include "store/store.h"
 #include "vdb/level_grid.h"
@@ -26,10 +27,13 @@ struct ExtractArgs {
   int threads = 0;
   bool seamless = false;
   bool json = false;
+  std::string frame = "axis";
 };
 
 int run_extract(const ExtractArgs& args) {
   const auto store = Store::open(args.store);
+  const OutputFrame frame = parse_output_frame(args.frame);
+  check_frame_supported(store->manifest(), frame);
   Scene scene = load_scene_file(args.scene);
   if (args.time) scene.time = *args.time;
   const ResolvedScene resolved = resolve_scene(scene, store->manifest(), args.scene);
@@ -60,12 +64,13 @@ int run_extract(const ExtractArgs& args) {
     (void)done;
     bar->advance();
   };
-  const LevelExtraction result = extract_level(*store, resolved, options);
+  LevelExtraction result = extract_level(*store, resolved, options);
   if (bar) bar->finish();
 
   std::vector<NodeMeshRef> meshes;
-  for (const NodeExtraction& n : result.nodes) {
-    for (const SubVolumeResult& r : n.results) {
+  for (NodeExtraction& n : result.nodes) {
+    for (SubVolumeResult& r : n.results) {
+      transform_mesh(r.mesh, store->manifest(), frame);
       if (r.outcome == NodeOutcome::kMesh) meshes.push_back({static_cast<std::uint32_t>(n.node), &r.mesh});
     }
   }
@@ -133,6 +138,10 @@ void register_extract(CLI::App& app, cli::Action& action) {
   sub->add_flag("--seamless", args->seamless,
                 "Leave out the faces on shared node boundaries (one seamless surface)");
   sub->add_flag("--json", args->json, "Print counts and timings as JSON on stdout");
+  sub->add_option("--frame", args->frame,
+                  "Positions of .vtp output: axis (lon/lat/height as stored), metric (metres on "
+                  "the plane tangent at the grid centre) or ecef (WGS84 geocentric metres)")
+      ->capture_default_str();
   sub->callback([&action, args] {
     action = [args] {
       if (!args->output.ends_with(".vtp") && !args->output.ends_with(".vdb")) {
