@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Fuzzes the Blosc chunk decoder behind the chunk checksum: it must reject, never crash.
+// Fuzzes the brick chunk decoder behind the chunk checksum (Blosc, then the lorenzo3
+// predictor's inverse on 5x5x5 and 1x3x5 bricks): it must reject, never crash.
 #include "core/error.h"
 #include "fuzz/fuzz_target.h"
 #include "store/brick_codec.h"
@@ -17,6 +18,10 @@ std::vector<std::vector<std::uint8_t>> strielad_fuzz_seeds() {
       const auto c = compress_brick(raw, DType::kFloat32, format::CodecSpec{codec, 5, shuffle});
       seeds.emplace_back(reinterpret_cast<const std::uint8_t*>(c.data()),
                          reinterpret_cast<const std::uint8_t*>(c.data()) + c.size());
+      const auto p = compress_brick(raw, DType::kFloat32, BrickDims{5, 5, 5},
+                                    format::CodecSpec{codec, 5, shuffle, "lorenzo3"});
+      seeds.emplace_back(reinterpret_cast<const std::uint8_t*>(p.data()),
+                         reinterpret_cast<const std::uint8_t*>(p.data()) + p.size());
     }
   }
   return seeds;
@@ -24,9 +29,18 @@ std::vector<std::vector<std::uint8_t>> strielad_fuzz_seeds() {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::vector<std::byte> out(5 * 5 * 5 * 4);
+  const std::span<const std::byte> chunk(reinterpret_cast<const std::byte*>(data), size);
   try {
-    decompress_brick({reinterpret_cast<const std::byte*>(data), size}, DType::kFloat32, out, "fuzz");
+    decompress_brick(chunk, DType::kFloat32, out, "fuzz");
   } catch (const Error&) {
+  }
+  const format::CodecSpec lorenzo3{"zstd", 1, "byte", "lorenzo3"};
+  for (const BrickDims dims : {BrickDims{5, 5, 5}, BrickDims{1, 3, 5}}) {
+    std::vector<std::byte> bytes(dims[0] * dims[1] * dims[2] * 4);
+    try {
+      decompress_brick(chunk, DType::kFloat32, dims, lorenzo3, bytes, "fuzz");
+    } catch (const Error&) {
+    }
   }
   return 0;
 }
