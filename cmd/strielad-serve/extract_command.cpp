@@ -70,8 +70,9 @@ int run_extract(const ExtractArgs& args) {
   std::vector<NodeMeshRef> meshes;
   for (NodeExtraction& n : result.nodes) {
     for (SubVolumeResult& r : n.results) {
+      if (r.outcome != NodeOutcome::kMesh) continue;
       transform_mesh(r.mesh, store->manifest(), frame);
-      if (r.outcome == NodeOutcome::kMesh) meshes.push_back({static_cast<std::uint32_t>(n.node), &r.mesh});
+      meshes.push_back({static_cast<std::uint32_t>(n.node), &r.mesh});
     }
   }
   VtpOptions vtp;

@@ -40,12 +40,16 @@ NodeGeometry node_geometry(const Store& store, NodeId node) {
   return g;
 }
 
+bool limit_excludes_node(const format::IndexEntry& entry, const ResolvedLimit& limit) {
+  return !entry.has_valid_data() || entry.max < limit.min || entry.min > limit.max;
+}
+
 namespace {
 
-// Why the limit excludes the node, or "" when it may not.
+// Why the limit's range excludes the node, or "" when it may not.
 std::string range_miss(const format::IndexEntry& e, const ResolvedLimit& limit,
                        const format::Manifest& m) {
-  if (e.max < limit.min || e.min > limit.max) {
+  if (limit_excludes_node(e, limit)) {
     return fmt::format("{} in [{}, {}] never within [{}, {}]", m.variables[limit.variable].name,
                        e.min, e.max, limit.min, limit.max);
   }
@@ -70,8 +74,6 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
   NodeExtraction out;
   out.node = node;
   const NodeGeometry geometry = node_geometry(store, node);
-  const std::size_t samples =
-      geometry.coords[0].size() * geometry.coords[1].size() * geometry.coords[2].size();
   const std::array<std::string_view, 3> axis_names{m.x.name, m.y.name, m.z.name};
 
   // Decide per sub-volume from the index and the geometry alone.
@@ -121,6 +123,7 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
   NodeSamples ns;
   ns.coords = geometry.coords;
   ns.grid_edge = geometry.grid_edge;
+  const std::size_t samples = ns.sample_count();
   auto field = [&](std::uint32_t variable) {
     const auto [it, inserted] = field_of.try_emplace(variable, static_cast<std::uint32_t>(ns.fields.size()));
     if (inserted) {

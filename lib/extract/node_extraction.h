@@ -12,6 +12,7 @@
 
 #include "extract/extract_request.h"
 #include "extract/mesh.h"
+#include "format/step_file_format.h"
 #include "octree/octree_layout.h"
 #include "scene/scene.h"
 
@@ -49,8 +50,12 @@ struct NodeExtraction {
 NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
                             std::uint32_t step, NodeId node);
 
-// The node's samples on the manifest's axes, and the given variables' values
-// (reads them; missing = NaN).
+// Whether the node's index entry alone proves that `limit` holds nowhere in the node:
+// no valid sample, or the exact value range misses [min, max]. The one rule every
+// consumer of a scene skips by (extraction, .vdb export).
+bool limit_excludes_node(const format::IndexEntry& entry, const ResolvedLimit& limit);
+
+// The node's sample coordinates on the manifest's axes (no brick is read).
 struct NodeGeometry {
   std::array<std::vector<double>, 3> coords;
   std::array<bool, 6> grid_edge{};  // as NodeSamples::grid_edge

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <cstring>
 
 #include "core/error.h"
 #include "extract/conditions.h"
@@ -143,13 +142,10 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
       if ((row_or & all) != all) continue;
       const bool row_inside = row_and == all;
       const bool row_on_yz_boundary = y == 0 || y + 2 == dims[1] || z == 0 || z + 2 == dims[2];
-      if (row_inside && !row_on_yz_boundary && dims[0] > 2) {
-        local.inside_cells += dims[0] - 1;
-      }
       for (std::size_t x = 0; x + 1 < dims[0]; ++x) {
-        if (row_inside && !row_on_yz_boundary) {
-          if (x != 0 && x + 2 != dims[0]) continue;  // inside, not on the node boundary
-          if (dims[0] > 2) --local.inside_cells;       // counted again below
+        if (row_inside && !row_on_yz_boundary && x != 0 && x + 2 != dims[0]) {
+          ++local.inside_cells;  // wholly inside, no face on the node boundary: nothing to emit
+          continue;
         }
         const std::size_t base = (z * dims[1] + y) * dims[0] + x;
         std::array<std::uint64_t, 8> masks;

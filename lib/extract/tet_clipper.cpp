@@ -161,7 +161,7 @@ bool TetClipper::clip_by(std::size_t c) {
       const Vec3 helper = std::fabs(n[0]) < 0.5 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
       const Vec3 u = cross(n, helper);
       const Vec3 w = cross(n, u);
-      std::vector<std::pair<double, std::uint32_t>>& order = angle_scratch();
+      auto& order = angle_order_;
       order.clear();
       for (std::uint32_t v : cap_) {
         const Vec3 d = sub(vertices_[v].p, centre);
@@ -177,10 +177,6 @@ bool TetClipper::clip_by(std::size_t c) {
   faces_.swap(next_faces_);
   loop_.swap(next_loop_);
   return !faces_.empty();
-}
-
-std::vector<std::pair<double, std::uint32_t>>& TetClipper::angle_scratch() {
-  return angle_order_;
 }
 
 Vec3 TetClipper::gradient(std::size_t c) const {

@@ -80,8 +80,7 @@ class TetClipper {
   std::vector<double> vertex_values_;
   std::vector<std::array<std::uint32_t, 3>> crossings_;  // (a, b, new vertex) of one clip
   std::vector<std::uint32_t> cap_;
-  std::vector<std::pair<double, std::uint32_t>> angle_order_;
-  std::vector<std::pair<double, std::uint32_t>>& angle_scratch();
+  std::vector<std::pair<double, std::uint32_t>> angle_order_;  // cap vertices by angle
 };
 
 }  // namespace strielad

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "extract/node_extraction.h"
 
 namespace strielad::vdb {
 namespace {
@@ -24,6 +25,27 @@ void add_axis_metadata(openvdb::GridBase& grid, const char* key, const Axis& axi
   grid.insertMeta(prefix + "_units", openvdb::StringMetadata(axis.units));
   grid.insertMeta(prefix + "_first", openvdb::DoubleMetadata(axis.values.front()));
   grid.insertMeta(prefix + "_last", openvdb::DoubleMetadata(axis.values.back()));
+}
+
+// Voxel (i, j, k) is sample (i, j, k) of the level: scaled by the level's stride so that
+// levels overlay in level-0 index space.
+void set_level_transform(openvdb::GridBase& grid, const LevelShape& shape) {
+  openvdb::math::Mat4d scale(openvdb::math::Mat4d::identity());
+  scale.preScale(openvdb::Vec3d(double(shape.stride[0]), double(shape.stride[1]),
+                                double(shape.stride[2])));
+  grid.setTransform(openvdb::math::Transform::createLinearTransform(scale));
+}
+
+// Where the grid sits: time step and value, level, axes.
+void add_place_metadata(openvdb::GridBase& grid, const format::Manifest& m, std::uint32_t step,
+                        std::uint32_t level) {
+  grid.insertMeta("strielad:step", openvdb::Int64Metadata(step));
+  grid.insertMeta("strielad:time", openvdb::DoubleMetadata(m.time.values.at(step)));
+  grid.insertMeta("strielad:time_units", openvdb::StringMetadata(m.time.units));
+  grid.insertMeta("strielad:level", openvdb::Int64Metadata(level));
+  add_axis_metadata(grid, "x", m.x);
+  add_axis_metadata(grid, "y", m.y);
+  add_axis_metadata(grid, "z", m.z);
 }
 
 }  // namespace
@@ -43,10 +65,7 @@ openvdb::FloatGrid::Ptr build_level_grid(const Store& store, std::uint32_t step,
   auto grid = openvdb::FloatGrid::create(background);
   grid->setName(var.name);
   const LevelShape& shape = layout.level(level);
-  openvdb::math::Mat4d scale(openvdb::math::Mat4d::identity());
-  scale.preScale(openvdb::Vec3d(double(shape.stride[0]), double(shape.stride[1]),
-                                double(shape.stride[2])));
-  grid->setTransform(openvdb::math::Transform::createLinearTransform(scale));
+  set_level_transform(*grid, shape);
 
   LevelGridSummary summary;
   summary.min = INFINITY;
@@ -91,13 +110,7 @@ openvdb::FloatGrid::Ptr build_level_grid(const Store& store, std::uint32_t step,
   grid->insertMeta("strielad:variable", openvdb::StringMetadata(var.name));
   grid->insertMeta("strielad:units", openvdb::StringMetadata(var.units));
   grid->insertMeta("strielad:long_name", openvdb::StringMetadata(var.long_name));
-  grid->insertMeta("strielad:step", openvdb::Int64Metadata(step));
-  grid->insertMeta("strielad:time", openvdb::DoubleMetadata(m.time.values.at(step)));
-  grid->insertMeta("strielad:time_units", openvdb::StringMetadata(m.time.units));
-  grid->insertMeta("strielad:level", openvdb::Int64Metadata(level));
-  add_axis_metadata(*grid, "x", m.x);
-  add_axis_metadata(*grid, "y", m.y);
-  add_axis_metadata(*grid, "z", m.z);
+  add_place_metadata(*grid, m, step, level);
   if (summary_out) *summary_out = summary;
   return grid;
 }
@@ -151,10 +164,7 @@ std::vector<SubVolumeGridSummary> write_subvolume_vdb(const Store& store,
     summary.subvolume_id = sv.id;
     auto grid = openvdb::FloatGrid::create(0.0f);
     grid->setName(sv.name.empty() ? fmt::format("subvolume-{}", sv.id) : sv.name);
-    openvdb::math::Mat4d scale(openvdb::math::Mat4d::identity());
-    scale.preScale(openvdb::Vec3d(double(shape.stride[0]), double(shape.stride[1]),
-                                  double(shape.stride[2])));
-    grid->setTransform(openvdb::math::Transform::createLinearTransform(scale));
+    set_level_transform(*grid, shape);
     auto accessor = grid->getAccessor();
     for (NodeId n = shape.first_node; n < shape.first_node + shape.node_count(); ++n) {
       const NodeKey key = layout.key(n);
@@ -162,8 +172,7 @@ std::vector<SubVolumeGridSummary> write_subvolume_vdb(const Store& store,
       // Skip from the index alone: a limit's range misses the node's, or no valid data.
       bool skip = false;
       for (const ResolvedLimit& limit : sv.limits) {
-        const auto& e = store.node_entry(step, limit.variable, n);
-        skip = skip || !e.has_valid_data() || e.max < limit.min || e.min > limit.max;
+        skip = skip || limit_excludes_node(store.node_entry(step, limit.variable, n), limit);
       }
       // Domain box per axis, as sample index ranges of this level.
       std::array<std::array<std::size_t, 2>, 3> range{};
@@ -206,13 +215,7 @@ std::vector<SubVolumeGridSummary> write_subvolume_vdb(const Store& store,
     summary.active_voxels = grid->activeVoxelCount();
     grid->setGridClass(openvdb::GRID_FOG_VOLUME);
     grid->insertMeta("strielad:subvolume_id", openvdb::Int64Metadata(sv.id));
-    grid->insertMeta("strielad:step", openvdb::Int64Metadata(step));
-    grid->insertMeta("strielad:time", openvdb::DoubleMetadata(m.time.values.at(step)));
-    grid->insertMeta("strielad:time_units", openvdb::StringMetadata(m.time.units));
-    grid->insertMeta("strielad:level", openvdb::Int64Metadata(level));
-    add_axis_metadata(*grid, "x", m.x);
-    add_axis_metadata(*grid, "y", m.y);
-    add_axis_metadata(*grid, "z", m.z);
+    add_place_metadata(*grid, m, step, level);
     grids.push_back(grid);
     summaries.push_back(summary);
   }
