@@ -16,16 +16,6 @@
 namespace strielad::peers {
 namespace {
 
-double fraction_pointing_away(const Mesh& mesh, const std::array<double, 3>& c) {
-  std::size_t away = 0;
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-    double d = 0;
-    for (int a = 0; a < 3; ++a) d += (mesh.positions[v][a] - c[a]) * mesh.normals[v][a];
-    if (d > 0) ++away;
-  }
-  return double(away) / double(mesh.vertex_count());
-}
-
 TEST(OpenVdbVolumeToMeshTest, SphereOnUnevenAxesHasItsAreaAndIsOrientedOutward) {
   const NodeSamples s = testing::sphere_node(33);
   const double radius = 0.35;
@@ -38,7 +28,7 @@ TEST(OpenVdbVolumeToMeshTest, SphereOnUnevenAxesHasItsAreaAndIsOrientedOutward) 
   EXPECT_TRUE(r.closed);  // the sphere lies inside the node
   // Dual vertices lie inside the cells: the volume comes out a little small.
   EXPECT_NEAR(r.divergence_volume, testing::ball_volume(radius), 0.03 * testing::ball_volume(radius));
-  EXPECT_GT(fraction_pointing_away(r.mesh, {0.5, 0.5, 0.5}), 0.999);
+  EXPECT_GT(testing::fraction_pointing_away(r.mesh, {0.5, 0.5, 0.5}), 0.999);
   for (const auto& p : r.mesh.positions) {
     // Dual vertices sit inside cells, near but not on the sphere.
     EXPECT_NEAR(testing::distance(p[0], p[1], p[2], {0.5, 0.5, 0.5}), radius, 0.02);

@@ -11,6 +11,7 @@
 #include <numbers>
 #include <vector>
 
+#include "extract/mesh.h"
 #include "extract/node_samples.h"
 
 namespace strielad::testing {
@@ -65,5 +66,25 @@ inline NodeSamples sphere_node(std::size_t n, std::array<double, 3> centre = {0.
 }
 
 inline double ball_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
+
+// Fraction of vertices of limit faces whose normal points away from `centre` (times
+// `sign`).
+inline double fraction_pointing_away(const Mesh& mesh, const std::array<double, 3>& centre,
+                                     double sign = 1.0) {
+  std::vector<bool> on_limit(mesh.vertex_count(), false);
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    if (mesh.face_kinds[t] != FaceKind::kLimit) continue;
+    for (auto v : mesh.triangles[t]) on_limit[v] = true;
+  }
+  std::size_t total = 0, away = 0;
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    if (!on_limit[v]) continue;
+    ++total;
+    double d = 0;
+    for (int a = 0; a < 3; ++a) d += (mesh.positions[v][a] - centre[a]) * mesh.normals[v][a];
+    if (sign * d > 0) ++away;
+  }
+  return total == 0 ? 0.0 : double(away) / double(total);
+}
 
 }  // namespace strielad::testing

@@ -22,26 +22,6 @@ using testing::sphere_node;
 
 constexpr std::array<double, 3> kCentre{0.5, 0.5, 0.5};
 
-// Fraction of vertices of limit faces whose normal points away from `centre` (times
-// `sign`).
-double fraction_pointing_away(const Mesh& mesh, const std::array<double, 3>& centre,
-                              double sign = 1.0) {
-  std::vector<bool> on_limit(mesh.vertex_count(), false);
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    if (mesh.face_kinds[t] != FaceKind::kLimit) continue;
-    for (auto v : mesh.triangles[t]) on_limit[v] = true;
-  }
-  std::size_t total = 0, away = 0;
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-    if (!on_limit[v]) continue;
-    ++total;
-    double d = 0;
-    for (int a = 0; a < 3; ++a) d += (mesh.positions[v][a] - centre[a]) * mesh.normals[v][a];
-    if (sign * d > 0) ++away;
-  }
-  return total == 0 ? 0.0 : double(away) / double(total);
-}
-
 void expect_sane(const PeerResult& r) {
   ASSERT_EQ(r.mesh.normals.size(), r.mesh.positions.size());
   ASSERT_EQ(r.mesh.face_kinds.size(), r.mesh.triangles.size());
@@ -76,7 +56,7 @@ TEST(VtkPaperPipelineTest, BallOnUnevenDescendingAxesIsClosedOutwardAndHasItsVol
                         << " non-manifold edges";
   EXPECT_GT(r.divergence_volume, 0.0) << "triangles must be counter-clockwise from outside";
   EXPECT_NEAR(r.divergence_volume, ball_volume(radius), 0.015 * ball_volume(radius));
-  EXPECT_GT(fraction_pointing_away(r.mesh, kCentre), 0.999);
+  EXPECT_GT(testing::fraction_pointing_away(r.mesh, kCentre), 0.999);
   for (auto kind : r.mesh.face_kinds) EXPECT_EQ(kind, FaceKind::kLimit);
 }
 
@@ -125,8 +105,8 @@ TEST(VtkPaperPipelineTest, MinAndMaxLimitsGiveAShellWithAnInwardFacingCavity) {
   };
   keep(outer, true);
   keep(inner, false);
-  EXPECT_GT(fraction_pointing_away(outer, kCentre), 0.999);
-  EXPECT_GT(fraction_pointing_away(inner, kCentre, -1.0), 0.999);
+  EXPECT_GT(testing::fraction_pointing_away(outer, kCentre), 0.999);
+  EXPECT_GT(testing::fraction_pointing_away(inner, kCentre, -1.0), 0.999);
 }
 
 TEST(VtkPaperPipelineTest, TwoFieldLimitsIntersectToALens) {
