@@ -21,6 +21,12 @@ find_package(fmt REQUIRED CONFIG)
 find_package(CLI11 REQUIRED CONFIG)
 find_package(nlohmann_json REQUIRED CONFIG)
 
+# Open MPI 4.1 (libopenmpi-dev): strielad-serve's MPI mode only (lib/serve/mpi_*.cpp, in
+# the strielad_mpi library; README "Running strielad-serve under MPI and Slurm"). Only
+# the C API is used, so the deprecated C++ bindings are skipped.
+set(MPI_CXX_SKIP_MPICXX ON CACHE BOOL "Skip the MPI C++ bindings" FORCE)
+find_package(MPI REQUIRED COMPONENTS CXX)
+
 # VTK 9.1 for the paper's extraction pipeline (lib/peers) and .vtp export (lib/export).
 # Only the modules used: every extra module adds imported targets and transitive
 # find_package calls. Found after TBB and OpenVDB (toolchain.md pitfall 2). None of these

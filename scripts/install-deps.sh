@@ -10,6 +10,7 @@ packages=(
   libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libtbb-dev
   libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev libvtk9-dev
   libgtest-dev libgmock-dev
+  libopenmpi-dev openmpi-bin
 )
 if [[ "${1:-}" == "--tests" ]]; then
   packages+=(libncarg-data slurm-wlm munge)

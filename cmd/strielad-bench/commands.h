@@ -11,5 +11,6 @@ namespace strielad::bench_cmd {
 // `command_line`: how the tool was invoked, quoted into reports.
 void register_io(CLI::App& app, cli::Action& action, std::string command_line);
 void register_extract(CLI::App& app, cli::Action& action, std::string command_line);
+void register_latency(CLI::App& app, cli::Action& action, std::string command_line);
 
 }  // namespace strielad::bench_cmd

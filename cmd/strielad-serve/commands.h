@@ -8,5 +8,6 @@
 namespace strielad::serve_cmd {
 
 void register_extract(CLI::App& app, cli::Action& action);  // extract --store --scene -o OUT
+void register_serve(CLI::App& app, cli::Action& action);    // --root DIR: the server
 
 }  // namespace strielad::serve_cmd

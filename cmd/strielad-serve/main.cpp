@@ -6,7 +6,10 @@ int main(int argc, char** argv) {
   using namespace strielad;
   const cli::ToolSpec spec{
       "strielad-serve",
-      "Extract sub-volume meshes from a STRIELAD store (batch export; the server comes next)",
-      [](CLI::App& app, cli::Action& action) { serve_cmd::register_extract(app, action); }};
+      "Serve sub-volume extraction from STRIELAD stores to clients (--root DIR), or extract in batch (extract)",
+      [](CLI::App& app, cli::Action& action) {
+        serve_cmd::register_serve(app, action);
+        serve_cmd::register_extract(app, action);
+      }};
   return cli::run_tool(spec, argc, argv);
 }

@@ -52,26 +52,6 @@ void check_options(const ExtractSuiteOptions& o) {
   }
 }
 
-// Converts the input into `dir` with brick `brick` (the converter's default codec),
-// reusing a complete store of the same plan (with --keep) and starting over when the
-// directory holds something else.
-void convert_store(const ExtractSuiteOptions& o, const SampleInput& input, std::uint32_t brick,
-                   const std::filesystem::path& dir) {
-  build::ConvertOptions co;
-  co.inputs = input.files;
-  co.store = dir;
-  co.scan.variables = o.variables;
-  co.brick = brick;
-  co.threads = o.threads;
-  try {
-    build::convert(co);
-  } catch (const Error& e) {
-    spdlog::info("bench: starting {} over ({})", dir.string(), e.what());
-    std::filesystem::remove_all(dir);
-    build::convert(co);
-  }
-}
-
 }  // namespace
 
 ExtractSuiteOptions quick_extract_options(ExtractSuiteOptions o) {
@@ -109,7 +89,7 @@ ExtractSuiteReport run_extract_suite(const ExtractSuiteOptions& options) {
     for (std::uint32_t b : sizes) {
       store_dirs.push_back(o.work / fmt::format("store-b{}", b));
       spdlog::info("bench: converting into {} (brick {})", store_dirs.back().string(), b);
-      convert_store(o, report.input, b, store_dirs.back());
+      convert_sample_store(report.input, o.variables, b, o.threads, store_dirs.back());
     }
     report.convert_seconds = convert_clock.seconds();
   }

@@ -8,6 +8,8 @@
 #include <fstream>
 
 #include "bench/stopwatch.h"
+#include "build/converter.h"
+#include "core/error.h"
 #include "bench/table_writer.h"
 #include "sample/sample_dataset.h"
 
@@ -91,6 +93,23 @@ SampleInput ensure_sample_input(const SampleInputSpec& spec, const std::filesyst
   spdlog::info("bench: generated {:.1f} MB in {:.1f} s", static_cast<double>(input.bytes) / 1e6,
                input.generate_seconds);
   return input;
+}
+
+void convert_sample_store(const SampleInput& input, const std::vector<std::string>& variables,
+                          std::uint32_t brick, int threads, const std::filesystem::path& dir) {
+  build::ConvertOptions co;
+  co.inputs = input.files;
+  co.store = dir;
+  co.scan.variables = variables;
+  co.brick = brick;
+  co.threads = threads;
+  try {
+    build::convert(co);
+  } catch (const Error& e) {
+    spdlog::info("bench: starting {} over ({})", dir.string(), e.what());
+    std::filesystem::remove_all(dir);
+    build::convert(co);
+  }
 }
 
 }  // namespace strielad::bench

@@ -30,4 +30,10 @@ struct SampleInput {
 // Generates (or reuses) the dataset in `dir`. Throws what the generator throws.
 SampleInput ensure_sample_input(const SampleInputSpec& spec, const std::filesystem::path& dir);
 
+// Converts the input's `variables` into the store `dir` with brick `brick` (the
+// converter's default codec), reusing a complete store of the same plan and starting
+// over when the directory holds something else. Throws what the converter throws.
+void convert_sample_store(const SampleInput& input, const std::vector<std::string>& variables,
+                          std::uint32_t brick, int threads, const std::filesystem::path& dir);
+
 }  // namespace strielad::bench

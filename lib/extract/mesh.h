@@ -40,6 +40,7 @@ struct Mesh {
   std::size_t vertex_count() const { return positions.size(); }
   std::size_t triangle_count() const { return triangles.size(); }
   bool empty() const { return triangles.empty(); }
+  friend bool operator==(const Mesh&, const Mesh&) = default;
 };
 
 }  // namespace strielad

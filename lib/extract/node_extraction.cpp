@@ -62,30 +62,24 @@ bool disjoint(const std::vector<double>& coords, const AxisRange& range) {
   return range.hi < lo || range.lo > hi;
 }
 
-}  // namespace
+// What extraction of one sub-volume needs: the limits that may cut the node.
+struct SubVolumePlan {
+  std::size_t subvolume;
+  std::vector<ResolvedLimit> limits;
+};
 
-NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
-                            std::uint32_t step, NodeId node) {
+// Decides per sub-volume from the index and the geometry alone: fills the skipped
+// results' outcome and reason, returns the plans of the others.
+std::vector<SubVolumePlan> plan_subvolumes(const Store& store, const ResolvedScene& scene,
+                                           std::uint32_t step, const NodeGeometry& geometry,
+                                           NodeId node, std::vector<SubVolumeResult>& results) {
   const format::Manifest& m = store.manifest();
-  if (!store.octree().contains(node)) {
-    throw make_error(ErrorCode::kNotFound, "node {} is not in the octree of {} ({} nodes)", node,
-                     store.path().string(), store.octree().node_count());
-  }
-  NodeExtraction out;
-  out.node = node;
-  const NodeGeometry geometry = node_geometry(store, node);
   const std::array<std::string_view, 3> axis_names{m.x.name, m.y.name, m.z.name};
-
-  // Decide per sub-volume from the index and the geometry alone.
-  struct Plan {
-    std::size_t subvolume;
-    std::vector<ResolvedLimit> limits;  // those that cut the node
-  };
-  std::vector<Plan> plans;
-  out.results.resize(scene.subvolumes.size());
+  std::vector<SubVolumePlan> plans;
+  results.resize(scene.subvolumes.size());
   for (std::size_t i = 0; i < scene.subvolumes.size(); ++i) {
     const ResolvedSubVolume& sv = scene.subvolumes[i];
-    SubVolumeResult& r = out.results[i];
+    SubVolumeResult& r = results[i];
     r.subvolume_id = sv.id;
     for (int a = 0; a < 3 && r.reason.empty(); ++a) {
       if (disjoint(geometry.coords[a], sv.box[a])) {
@@ -94,7 +88,7 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
                                sv.box[a].hi);
       }
     }
-    Plan plan{i, {}};
+    SubVolumePlan plan{i, {}};
     for (const ResolvedLimit& limit : sv.limits) {
       if (!r.reason.empty()) break;
       const format::IndexEntry& e = store.node_entry(step, limit.variable, node);
@@ -116,6 +110,52 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
     }
     if (r.reason.empty()) plans.push_back(std::move(plan));
   }
+  return plans;
+}
+
+void check_node(const Store& store, NodeId node) {
+  if (!store.octree().contains(node)) {
+    throw make_error(ErrorCode::kNotFound, "node {} is not in the octree of {} ({} nodes)", node,
+                     store.path().string(), store.octree().node_count());
+  }
+}
+
+void throw_if_stopped(const std::stop_token& stop, const Store& store, NodeId node) {
+  if (stop.stop_requested()) {
+    throw make_error(ErrorCode::kCancelled, "{}: extraction of node {} cancelled",
+                     store.path().string(), node);
+  }
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> node_brick_variables(const Store& store, const ResolvedScene& scene,
+                                                std::uint32_t step, NodeId node) {
+  check_node(store, node);
+  std::vector<SubVolumeResult> results;
+  const std::vector<SubVolumePlan> plans =
+      plan_subvolumes(store, scene, step, node_geometry(store, node), node, results);
+  std::vector<std::uint32_t> variables;
+  if (plans.empty()) return variables;
+  variables = scene.attributes;
+  for (const SubVolumePlan& plan : plans) {
+    for (const ResolvedLimit& limit : plan.limits) variables.push_back(limit.variable);
+  }
+  std::sort(variables.begin(), variables.end());
+  variables.erase(std::unique(variables.begin(), variables.end()), variables.end());
+  return variables;
+}
+
+NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
+                            std::uint32_t step, NodeId node, std::stop_token stop) {
+  const format::Manifest& m = store.manifest();
+  check_node(store, node);
+  throw_if_stopped(stop, store, node);
+  NodeExtraction out;
+  out.node = node;
+  const NodeGeometry geometry = node_geometry(store, node);
+  const std::vector<SubVolumePlan> plans =
+      plan_subvolumes(store, scene, step, geometry, node, out.results);
   if (plans.empty()) return out;
 
   // Fetch each needed brick once.
@@ -127,6 +167,7 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
   auto field = [&](std::uint32_t variable) {
     const auto [it, inserted] = field_of.try_emplace(variable, static_cast<std::uint32_t>(ns.fields.size()));
     if (inserted) {
+      throw_if_stopped(stop, store, node);
       std::shared_ptr<const Brick> brick =
           cache ? store.read_brick(step, variable, node, *cache)
                 : std::make_shared<const Brick>(store.read_brick(step, variable, node));
@@ -145,7 +186,8 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
     attribute_fields.push_back(field(v));
     attribute_names.push_back(m.variables[v].name);
   }
-  for (const Plan& plan : plans) {
+  for (const SubVolumePlan& plan : plans) {
+    throw_if_stopped(stop, store, node);
     const ResolvedSubVolume& sv = scene.subvolumes[plan.subvolume];
     ExtractRequest request;
     request.subvolume_id = sv.id;

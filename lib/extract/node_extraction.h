@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -46,9 +47,16 @@ struct NodeExtraction {
 };
 
 // Throws strielad::Error (naming the file, variable and node) when a needed brick is
-// damaged; other nodes are unaffected.
+// damaged; other nodes are unaffected. `stop` is polled before every brick read and
+// every sub-volume: once stop is requested the call throws kCancelled.
 NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
-                            std::uint32_t step, NodeId node);
+                            std::uint32_t step, NodeId node, std::stop_token stop = {});
+
+// The variables whose bricks extract_node would read for this node, decided from the
+// index alone (sorted, distinct; empty when every sub-volume is skipped). Prefetching
+// warms exactly these.
+std::vector<std::uint32_t> node_brick_variables(const Store& store, const ResolvedScene& scene,
+                                                std::uint32_t step, NodeId node);
 
 // Whether the node's index entry alone proves that `limit` holds nowhere in the node:
 // no valid sample, or the exact value range misses [min, max]. The one rule every

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "net/message_stream.h"
+
+#include <array>
+#include <vector>
+
+#include "core/error.h"
+#include "protocol/message_codec.h"
+
+namespace strielad::net {
+
+ReceivedMessage read_message(const Socket& socket, std::uint32_t max_payload_bytes) {
+  ReceivedMessage out;
+  std::array<std::byte, protocol::kFrameHeaderBytes> header_bytes{};
+  if (!socket.read_exact(header_bytes)) return out;  // kEndOfStream
+  out.status = ReceivedMessage::Status::kRejected;
+  const std::uint32_t length = protocol::peek_payload_length(header_bytes);
+  if (length > max_payload_bytes) {
+    out.error = protocol::WireError::kTooLarge;
+    out.reason = fmt::format("frame of {} payload bytes exceeds the limit of {}", length,
+                             max_payload_bytes);
+    return out;
+  }
+  protocol::FrameHeader header;
+  try {
+    header = protocol::decode_frame_header(header_bytes, max_payload_bytes);
+  } catch (const Error& e) {
+    out.reason = e.what();
+    return out;
+  }
+  std::vector<std::byte> payload(header.payload_bytes);
+  out.frame_bytes = protocol::kFrameHeaderBytes + payload.size();
+  if (!payload.empty() && !socket.read_exact(payload)) {
+    throw make_error(ErrorCode::kIo, "{}: connection closed inside a frame", socket.peer());
+  }
+  try {
+    out.message = protocol::decode_payload(header, payload);
+  } catch (const Error& e) {
+    out.reason = e.what();
+    return out;
+  }
+  out.status = ReceivedMessage::Status::kMessage;
+  return out;
+}
+
+void write_message(const Socket& socket, const protocol::Message& message) {
+  socket.write_all(protocol::encode_frame(message));
+}
+
+}  // namespace strielad::net

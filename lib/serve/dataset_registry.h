@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: Apache-2.0
+// The stores a server may open: only directories under its root, named by a relative
+// path without "." or ".." components, and still under the root once symbolic links
+// are resolved. Opened stores are shared by every client.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <string_view>
+
+namespace strielad {
+class Store;
+}
+
+namespace strielad::serve {
+
+class DatasetRegistry {
+ public:
+  // \error kNotFound when the root is not a directory.
+  explicit DatasetRegistry(const std::filesystem::path& root);
+
+  const std::filesystem::path& root() const { return root_; }
+
+  // \error kInvalidArgument for a name that could leave the root (absolute, "..",
+  // empty components, a symbolic link pointing outside); kNotFound when there is no
+  // store by that name; the store's own errors (kCorrupt, ...) otherwise.
+  std::shared_ptr<const Store> open(std::string_view name);
+
+ private:
+  std::filesystem::path root_;  // canonical
+  std::mutex mutex_;
+  std::map<std::filesystem::path, std::shared_ptr<const Store>> open_;
+};
+
+}  // namespace strielad::serve

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: Apache-2.0
+// Everything strielad-serve can be told (README "strielad-serve"; formats/protocol.md).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "net/socket.h"
+#include "protocol/messages.h"
+
+namespace strielad::serve {
+
+inline constexpr std::uint16_t kDefaultPort = 7420;
+
+struct ServerConfig {
+  // Datasets are stores under this folder, opened by their relative name.
+  std::filesystem::path root;
+  net::Endpoint listen{"127.0.0.1", kDefaultPort};
+  // Shared secret every Hello must carry; none when empty.
+  std::optional<std::string> token;
+  unsigned threads = 0;  // extraction workers; 0 = one per hardware thread
+  std::uint64_t cache_bytes = 1ull << 30;
+  std::size_t max_clients = 64;
+  bool prefetch = true;
+  std::string server_name = "strielad-serve";
+  // Limits announced in Welcome and enforced on every client message.
+  protocol::ServerLimits limits;
+  // Encoded results waiting to be sent to one client; above this its work pauses
+  // until the client reads (a slow client cannot make the server hold unbounded memory).
+  std::uint64_t max_pending_send_bytes = 64ull << 20;
+  std::chrono::milliseconds handshake_timeout{10000};
+};
+
+}  // namespace strielad::serve
