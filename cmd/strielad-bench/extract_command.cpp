@@ -12,6 +12,7 @@
 #include "bench/extract_suite.h"
 #include "bench/table_writer.h"
 #include "commands.h"
+#include "suite_output.h"
 #include "core/error.h"
 #include "sample/sample_args.h"
 
@@ -82,26 +83,16 @@ int run(const ExtractFlags& f) {
 
   const bench::ExtractSuiteReport report = bench::run_extract_suite(o);
   const auto tables = bench::extract_report_tables(report);
-  std::cout << fmt::format(
+  const std::string header = fmt::format(
       "strielad-bench extract: {}x{}x{}, {}, 1 step, bricks {}; suite took {:.0f} s (generate "
       "{:.0f} "
-      "s, convert {:.0f} s); {} cores, load average {:.1f} at the end\n\n",
+      "s, convert {:.0f} s); {} cores, load average {:.1f} at the end",
       o.dims.x, o.dims.y, o.dims.z, fmt::join(o.variables, ","), fmt::join(o.bricks, ","),
       report.seconds, report.input.generate_seconds, report.convert_seconds,
       report.machine.value("cores", 0u), report.machine.value("load_average_1min_end", -1.0));
-  for (const auto& t : tables) bench::print_table(std::cout, t);
+  emit_suite_report(header, tables, f.csv, f.json,
+                    [&] { return bench::extract_report_json(report, tables); });
   if (!report.plot_status.empty()) std::cout << "plot: " << report.plot_status << "\n";
-  std::cout.flush();
-  if (!f.csv.empty()) {
-    std::ostringstream csv;
-    bench::write_csv(csv, tables);
-    bench::write_text_file(f.csv, csv.str());
-    spdlog::info("bench: wrote {}", f.csv);
-  }
-  if (!f.json.empty()) {
-    bench::write_text_file(f.json, bench::extract_report_json(report, tables).dump(2) + "\n");
-    spdlog::info("bench: wrote {}", f.json);
-  }
   return 0;
 }
 

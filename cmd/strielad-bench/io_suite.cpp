@@ -11,6 +11,7 @@
 #include "bench/io_suite.h"
 #include "bench/table_writer.h"
 #include "commands.h"
+#include "suite_output.h"
 #include "core/error.h"
 #include "sample/sample_args.h"
 
@@ -89,21 +90,10 @@ int run(const IoFlags& f) {
 
   const bench::IoSuiteReport report = bench::run_io_suite(o);
   const auto tables = bench::io_report_tables(report);
-  std::cout << "strielad-bench io: " << o.dims.x << "x" << o.dims.y << "x" << o.dims.z << ", "
-            << fmt::format("{}", fmt::join(o.variables, ",")) << ", 1 step; suite took "
-            << fmt::format("{:.0f}", report.seconds) << " s\n\n";
-  for (const auto& t : tables) bench::print_table(std::cout, t);
-  std::cout.flush();
-  if (!f.csv.empty()) {
-    std::ostringstream csv;
-    bench::write_csv(csv, tables);
-    bench::write_text_file(f.csv, csv.str());
-    spdlog::info("bench: wrote {}", f.csv);
-  }
-  if (!f.json.empty()) {
-    bench::write_text_file(f.json, bench::io_report_json(report, tables).dump(2) + "\n");
-    spdlog::info("bench: wrote {}", f.json);
-  }
+  emit_suite_report(fmt::format("strielad-bench io: {}x{}x{}, {}, 1 step; suite took {:.0f} s",
+                                o.dims.x, o.dims.y, o.dims.z, fmt::join(o.variables, ","),
+                                report.seconds),
+                    tables, f.csv, f.json, [&] { return bench::io_report_json(report, tables); });
   return 0;
 }
 

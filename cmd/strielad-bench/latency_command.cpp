@@ -12,6 +12,7 @@
 #include "bench/server_process.h"
 #include "bench/table_writer.h"
 #include "commands.h"
+#include "suite_output.h"
 #include "core/error.h"
 #include "sample/sample_args.h"
 
@@ -67,26 +68,16 @@ int run(const LatencyFlags& f) {
 
   const bench::LatencySuiteReport report = bench::run_latency_suite(o);
   const auto tables = bench::latency_report_tables(report);
-  std::cout << fmt::format(
+  const std::string header = fmt::format(
       "strielad-bench latency: {}x{}x{}, {}, {} steps, brick {}, server {} with {} workers and a "
       "{} MiB cache; suite took {:.0f} s (generate {:.0f} s, convert {:.0f} s); {} cores, load "
-      "average {:.1f} at the end\n\n",
+      "average {:.1f} at the end",
       o.dims.x, o.dims.y, o.dims.z, fmt::join(o.variables, ","), o.steps, o.brick,
       o.server_binary.empty() ? std::string("in-process") : std::string("process"), o.threads,
       o.cache_mib, report.seconds, report.input.generate_seconds, report.convert_seconds,
       report.machine.value("cores", 0u), report.machine.value("load_average_1min_end", -1.0));
-  for (const auto& t : tables) bench::print_table(std::cout, t);
-  std::cout.flush();
-  if (!f.csv.empty()) {
-    std::ostringstream csv;
-    bench::write_csv(csv, tables);
-    bench::write_text_file(f.csv, csv.str());
-    spdlog::info("bench: wrote {}", f.csv);
-  }
-  if (!f.json.empty()) {
-    bench::write_text_file(f.json, bench::latency_report_json(report, tables).dump(2) + "\n");
-    spdlog::info("bench: wrote {}", f.json);
-  }
+  emit_suite_report(header, tables, f.csv, f.json,
+                    [&] { return bench::latency_report_json(report, tables); });
   return 0;
 }
 
