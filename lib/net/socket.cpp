@@ -147,25 +147,37 @@ bool Socket::read_exact(std::span<std::byte> bytes) const {
   return true;
 }
 
-Socket listen_tcp(const Endpoint& endpoint, int backlog) {
-  const AddrInfoList list = resolve(endpoint, true);
+namespace {
+
+// Tries each address the endpoint resolves to: a socket, then `use` (bind+listen or
+// connect); the first that works is returned. \error kIo with the last reason.
+template <typename Use>
+Socket first_working_socket(const Endpoint& endpoint, bool passive, std::string_view what,
+                            Use use) {
+  const AddrInfoList list = resolve(endpoint, passive);
   int last_error = 0;
   for (addrinfo* ai = list.head; ai; ai = ai->ai_next) {
     Socket s(::socket(ai->ai_family, ai->ai_socktype | SOCK_CLOEXEC, ai->ai_protocol),
              endpoint.to_string());
-    if (!s.is_open()) {
-      last_error = errno;
-      continue;
-    }
-    const int one = 1;
-    setsockopt(s.fd(), SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-    if (::bind(s.fd(), ai->ai_addr, ai->ai_addrlen) == 0 && ::listen(s.fd(), backlog) == 0) {
-      return s;
-    }
+    if (s.is_open() && use(s, *ai)) return s;
     last_error = errno;
   }
-  throw make_error(ErrorCode::kIo, "{}: cannot listen: {}", endpoint.to_string(),
+  throw make_error(ErrorCode::kIo, "{}: cannot {}: {}", endpoint.to_string(), what,
                    system_reason(last_error));
+}
+
+void set_int_option(const Socket& s, int level, int option) {
+  const int one = 1;
+  setsockopt(s.fd(), level, option, &one, sizeof one);
+}
+
+}  // namespace
+
+Socket listen_tcp(const Endpoint& endpoint, int backlog) {
+  return first_working_socket(endpoint, true, "listen", [&](const Socket& s, const addrinfo& ai) {
+    set_int_option(s, SOL_SOCKET, SO_REUSEADDR);
+    return ::bind(s.fd(), ai.ai_addr, ai.ai_addrlen) == 0 && ::listen(s.fd(), backlog) == 0;
+  });
 }
 
 std::uint16_t local_port(const Socket& socket) {
@@ -195,30 +207,17 @@ std::optional<Socket> accept_for(const Socket& listener, std::chrono::millisecon
     }
     throw make_error(ErrorCode::kIo, "accept failed: {}", system_reason(errno));
   }
-  const int one = 1;
-  setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
-  return Socket(fd, address_text(addr));
+  Socket client(fd, address_text(addr));
+  set_int_option(client, IPPROTO_TCP, TCP_NODELAY);
+  return client;
 }
 
 Socket connect_tcp(const Endpoint& endpoint) {
-  const AddrInfoList list = resolve(endpoint, false);
-  int last_error = 0;
-  for (addrinfo* ai = list.head; ai; ai = ai->ai_next) {
-    Socket s(::socket(ai->ai_family, ai->ai_socktype | SOCK_CLOEXEC, ai->ai_protocol),
-             endpoint.to_string());
-    if (!s.is_open()) {
-      last_error = errno;
-      continue;
-    }
-    if (::connect(s.fd(), ai->ai_addr, ai->ai_addrlen) == 0) {
-      const int one = 1;
-      setsockopt(s.fd(), IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
-      return s;
-    }
-    last_error = errno;
-  }
-  throw make_error(ErrorCode::kIo, "{}: cannot connect: {}", endpoint.to_string(),
-                   system_reason(last_error));
+  return first_working_socket(endpoint, false, "connect", [](const Socket& s, const addrinfo& ai) {
+    if (::connect(s.fd(), ai.ai_addr, ai.ai_addrlen) != 0) return false;
+    set_int_option(s, IPPROTO_TCP, TCP_NODELAY);
+    return true;
+  });
 }
 
 }  // namespace strielad::net
