@@ -28,6 +28,7 @@
 #include "protocol/message_codec.h"
 #include "serve/server.h"
 #include "support/small_dataset.h"
+#include "support/server_results.h"
 #include "support/temp_dir.h"
 
 extern char** environ;
@@ -207,37 +208,15 @@ class MpiServerTest : public ::testing::Test {
 testing::TempDir* MpiServerTest::dir_ = nullptr;
 std::filesystem::path* MpiServerTest::mpirun_ = nullptr;
 
-std::vector<NodePriority> whole_octree(const OctreeLayout& octree) {
-  std::vector<NodePriority> nodes;
-  for (NodeId n = 0; n < octree.node_count(); ++n) nodes.push_back({n, float(n)});
-  return nodes;
-}
+using testing::whole_octree;
 
 // One NodeResult per node, re-encoded: the bytes are equal exactly when the frames the
 // servers sent decode to the same values.
 std::map<NodeId, std::vector<std::byte>> collect_frames(client::ServerClient& c, std::size_t wanted,
                                                         std::uint32_t generation) {
   std::map<NodeId, std::vector<std::byte>> frames;
-  while (frames.size() < wanted) {
-    auto m = c.wait(60s);
-    if (!m) {
-      ADD_FAILURE() << "timed out with " << frames.size() << " of " << wanted
-                    << " results: " << c.close_reason();
-      break;
-    }
-    if (auto* f = std::get_if<protocol::NodeFailed>(&*m)) {
-      ADD_FAILURE() << "node " << f->node << " failed: " << f->message;
-      continue;
-    }
-    if (auto* e = std::get_if<protocol::ErrorMessage>(&*m)) {
-      ADD_FAILURE() << "error: " << e->message;
-      break;
-    }
-    auto* r = std::get_if<protocol::NodeResult>(&*m);
-    if (!r) continue;
-    EXPECT_EQ(r->generation, generation);
-    EXPECT_FALSE(frames.contains(r->node)) << "node " << r->node << " sent twice";
-    frames[r->node] = protocol::encode_frame(*r);
+  for (const auto& [node, result] : testing::collect_results(c, wanted, generation)) {
+    frames[node] = protocol::encode_frame(result);
   }
   return frames;
 }
@@ -359,20 +338,7 @@ TEST_F(MpiServerTest, NoStaleResultAcrossRanksWhenGenerationsChangeRapidly) {
   c->open_dataset("small");
   const Scene scene = parse_scene(kSceneJson, "test");
   const auto nodes = whole_octree(c->octree());
-  std::uint32_t generation = 0;
-  for (int round = 0; round < 40; ++round) {
-    const auto started = round % 2 ? c->set_time(round % 4 == 1 ? 1 : 0) : c->set_scene(scene);
-    generation = started.generation;
-    c->update_cut(nodes, {}, {});
-    while (auto m = c->poll()) {
-      if (auto* r = std::get_if<protocol::NodeResult>(&*m)) {
-        EXPECT_EQ(r->generation, generation);
-      }
-      if (auto* e = std::get_if<protocol::ErrorMessage>(&*m)) {
-        ADD_FAILURE() << e->message;
-      }
-    }
-  }
+  const std::uint32_t generation = testing::change_generations_rapidly(*c, scene, nodes, 40);
   const auto frames = collect_frames(*c, nodes.size(), generation);
   EXPECT_EQ(frames.size(), nodes.size());
   EXPECT_EQ(c->stale_results(), 0u);

@@ -21,6 +21,7 @@
 #include "protocol/message_codec.h"
 #include "serve/server.h"
 #include "store/store.h"
+#include "support/server_results.h"
 #include "support/small_dataset.h"
 #include "support/temp_dir.h"
 
@@ -72,40 +73,12 @@ class ServerLoopbackTest : public ::testing::Test {
 };
 testing::TempDir* ServerLoopbackTest::dir_ = nullptr;
 
-std::vector<NodePriority> whole_octree(const OctreeLayout& octree) {
-  std::vector<NodePriority> nodes;
-  for (NodeId n = 0; n < octree.node_count(); ++n) nodes.push_back({n, float(n)});
-  return nodes;
-}
+using testing::whole_octree;
 
-// Collects one NodeResult per node of `wanted` (NodeFailed fails the test).
 std::map<NodeId, protocol::NodeResult> collect(client::ServerClient& c, std::size_t wanted,
                                                std::uint32_t generation,
                                                std::vector<NodeId>* order = nullptr) {
-  std::map<NodeId, protocol::NodeResult> results;
-  while (results.size() < wanted) {
-    auto m = c.wait(20s);
-    if (!m) {
-      ADD_FAILURE() << "timed out with " << results.size() << " of " << wanted << " results: "
-                    << c.close_reason();
-      break;
-    }
-    if (auto* f = std::get_if<protocol::NodeFailed>(&*m)) {
-      ADD_FAILURE() << "node " << f->node << " failed: " << f->message;
-      continue;
-    }
-    if (auto* e = std::get_if<protocol::ErrorMessage>(&*m)) {
-      ADD_FAILURE() << "error: " << e->message;
-      break;
-    }
-    auto* r = std::get_if<protocol::NodeResult>(&*m);
-    if (!r) continue;
-    EXPECT_EQ(r->generation, generation);
-    EXPECT_FALSE(results.contains(r->node)) << "node " << r->node << " sent twice";
-    if (order) order->push_back(r->node);
-    results[r->node] = std::move(*r);
-  }
-  return results;
+  return testing::collect_results(c, wanted, generation, order, 20s);
 }
 
 TEST_F(ServerLoopbackTest, ResultsEqualBatchExtraction) {
@@ -240,21 +213,7 @@ TEST_F(ServerLoopbackTest, NoStaleResultAcrossRapidSceneAndTimeChanges) {
   c->open_dataset("small");
   const Scene scene = parse_scene(kSceneJson, "test");
   const auto nodes = whole_octree(c->octree());
-  std::uint32_t generation = 0;
-  for (int round = 0; round < 40; ++round) {
-    const auto started = round % 2 ? c->set_time(round % 4 == 1 ? 1 : 0) : c->set_scene(scene);
-    generation = started.generation;
-    c->update_cut(nodes, {}, {});
-    // Read whatever has arrived: all of it must be of the newest generation.
-    while (auto m = c->poll()) {
-      if (auto* r = std::get_if<protocol::NodeResult>(&*m)) {
-        EXPECT_EQ(r->generation, generation);
-      }
-      if (auto* e = std::get_if<protocol::ErrorMessage>(&*m)) {
-        ADD_FAILURE() << e->message;
-      }
-    }
-  }
+  const std::uint32_t generation = testing::change_generations_rapidly(*c, scene, nodes, 40);
   const auto results = collect(*c, nodes.size(), generation);
   EXPECT_EQ(results.size(), nodes.size());
   EXPECT_EQ(c->stale_results(), 0u);
