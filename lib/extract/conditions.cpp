@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 
@@ -26,23 +27,132 @@ double fractional_index(const std::vector<double>& coords, double value) {
 
 namespace {
 
-// Adds the condition unless it holds at every sample; returns false when it holds
-// nowhere (the region is empty).
-bool add_condition(ConditionSet& set, Condition condition) {
-  bool all_inside = true, any_inside = false;
-  for (double v : condition.values) {
-    const bool in = v >= 0;
-    all_inside = all_inside && in;
-    any_inside = any_inside || in;
+// Builds one condition after another into a set, reusing its buffers.
+class Builder {
+ public:
+  Builder(ConditionSet& set, std::size_t n) : set_(set), n_(n) {}
+
+  // A value buffer of n samples (contents undefined).
+  std::vector<double> buffer() {
+    std::vector<double> v;
+    if (!set_.spare.empty()) {
+      v = std::move(set_.spare.back());
+      set_.spare.pop_back();
+    }
+    v.resize(n_);
+    return v;
   }
-  if (!any_inside) return false;
-  if (!all_inside) set.conditions.push_back(std::move(condition));
-  return true;
-}
+
+  // Adds the condition unless it holds at every sample (its buffer is then kept for
+  // later); returns false when it holds nowhere (the region is empty). `in(i)`: whether
+  // it holds at sample i. Sets the condition's bit in set.inside on the way.
+  template <class In>
+  bool add(Condition condition, In in) {
+    const std::size_t index = set_.conditions.size();
+    std::uint64_t* inside = set_.inside.data();
+    std::size_t count_in = 0;
+    if (index == 0) {
+      for (std::size_t i = 0; i < n_; ++i) {
+        const std::uint64_t b = in(i) ? 1 : 0;
+        inside[i] = b;
+        count_in += b;
+      }
+    } else if (index < 64) {
+      for (std::size_t i = 0; i < n_; ++i) {
+        const std::uint64_t b = in(i) ? 1 : 0;
+        inside[i] |= b << index;
+        count_in += b;
+      }
+    } else {
+      for (std::size_t i = 0; i < n_; ++i) count_in += in(i) ? 1 : 0;
+    }
+    return finish(std::move(condition), index, count_in);
+  }
+
+  // Keeps the condition unless it holds nowhere or everywhere (then its bit goes).
+  bool finish(Condition condition, std::size_t index, std::size_t count_in) {
+    if (count_in == n_ && index < 64) {
+      std::uint64_t* inside = set_.inside.data();
+      const std::uint64_t bit = std::uint64_t{1} << index;
+      for (std::size_t i = 0; i < n_; ++i) inside[i] &= ~bit;
+    }
+    if (count_in != 0 && count_in != n_) {
+      set_.conditions.push_back(std::move(condition));
+    } else if (!condition.values.empty()) {
+      set_.spare.push_back(std::move(condition.values));
+    }
+    return count_in != 0;
+  }
+
+  bool add(Condition condition) {
+    const double* v = condition.values.data();
+    return add(std::move(condition), [v](std::size_t i) { return v[i] >= 0; });
+  }
+
+  // A limit on float samples: `value >= bound` (is_min) or `value <= bound`, and
+  // missing (non-finite) samples, where the limit's value is 0, count as inside.
+  // Compared in float against the float bound that decides the same for every float
+  // (branch-free, so that the loop vectorizes). Sets `missing` when a sample is
+  // missing.
+  bool add_limit(Condition condition, bool is_min, bool& missing) {
+    const std::size_t index = set_.conditions.size();
+    const float* f = condition.samples;
+    const float t = is_min ? float_at_or_above(condition.bound) : float_at_or_below(condition.bound);
+    std::uint64_t* inside = set_.inside.data();
+    constexpr float kMax = std::numeric_limits<float>::max();
+    const std::size_t n = n_;  // a local: stores to inside[] could alias n_
+    std::size_t count_in = 0, count_missing = 0;
+    auto run = [&](auto op) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const float v = f[i];
+        const auto absent = static_cast<unsigned>(!(std::fabs(v) <= kMax));
+        const auto in = absent | static_cast<unsigned>(is_min ? v >= t : v <= t);
+        op(i, static_cast<std::uint64_t>(in));
+        count_in += in;
+        count_missing += absent;
+      }
+    };
+    if (index == 0) {
+      run([&](std::size_t i, std::uint64_t in) { inside[i] = in; });
+    } else if (index < 64) {
+      run([&](std::size_t i, std::uint64_t in) { inside[i] |= in << index; });
+    } else {
+      run([](std::size_t, std::uint64_t) {});
+    }
+    missing = missing || count_missing != 0;
+    return finish(std::move(condition), index, count_in);
+  }
+
+ private:
+  // The smallest float >= t: for every float v, v >= it exactly when v >= t.
+  static float float_at_or_above(double t) {
+    constexpr double kMax = std::numeric_limits<float>::max();
+    if (t > kMax) return std::numeric_limits<float>::infinity();
+    if (t < -kMax) return -std::numeric_limits<float>::infinity();
+    float f = static_cast<float>(t);
+    if (static_cast<double>(f) < t) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    return f;
+  }
+  // The largest float <= t.
+  static float float_at_or_below(double t) { return -float_at_or_above(-t); }
+
+ public:
+
+ private:
+  ConditionSet& set_;
+  std::size_t n_;
+};
 
 }  // namespace
 
 ConditionSet build_conditions(const NodeSamples& samples, const ExtractRequest& request) {
+  ConditionSet set;
+  build_conditions(samples, request, set);
+  return set;
+}
+
+void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
+                      ConditionSet& set) {
   const auto dims = samples.dims();
   for (int a = 0; a < 3; ++a) {
     if (dims[a] < 2) {
@@ -51,11 +161,15 @@ ConditionSet build_conditions(const NodeSamples& samples, const ExtractRequest& 
     }
   }
   const std::size_t n = samples.sample_count();
-  ConditionSet set;
+  for (Condition& c : set.conditions) {
+    if (!c.values.empty()) set.spare.push_back(std::move(c.values));
+  }
+  set.conditions.clear();
+  set.empty = false;
+  set.all = 0;
+  set.inside.resize(n);
+  Builder builder(set, n);
 
-  // Missing samples (NaN or infinite) in any limit field make a validity condition;
-  // the limit conditions take the neutral value 0 there.
-  std::vector<double> validity;
   for (const ExtractLimit& limit : request.limits) {
     if (limit.field >= samples.fields.size()) {
       throw make_error(ErrorCode::kInvalidArgument, "limit on field {} but the node has {} fields",
@@ -70,39 +184,46 @@ ConditionSet build_conditions(const NodeSamples& samples, const ExtractRequest& 
       throw make_error(ErrorCode::kInvalidArgument, "field {} holds {} samples, the node has {}",
                        limit.field, field.size(), n);
     }
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!std::isfinite(field[i])) {
-        if (validity.empty()) validity.assign(n, 1.0);
-        validity[i] = -1.0;
-      }
-    }
   }
 
-  auto limit_condition = [&](const ExtractLimit& limit, bool is_min) {
+  // Missing samples (NaN or infinite) in any limit field make a validity condition;
+  // the limit conditions take the neutral value 0 there (so hold there: x - min >= 0
+  // exactly when x >= min).
+  bool any_missing = false;
+  auto add_limit = [&](const ExtractLimit& limit, bool is_min) {
     Condition c;
     c.kind = is_min ? ConditionKind::kLimitMin : ConditionKind::kLimitMax;
     c.field = limit.field;
-    c.values.resize(n);
-    const auto& field = samples.fields[limit.field];
-    const double t = is_min ? limit.min : limit.max;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double v = field[i];
-      const double s = is_min ? v - t : t - v;
-      c.values[i] = std::isfinite(v) ? s : 0.0;
+    c.samples = samples.fields[limit.field].data();
+    c.bound = is_min ? limit.min : limit.max;
+    return builder.add_limit(std::move(c), is_min, any_missing);
+  };
+  auto has_missing = [&](const ExtractLimit& limit) {
+    for (float v : samples.fields[limit.field]) {
+      if (!std::isfinite(v)) return true;
     }
-    return c;
+    return false;
   };
 
   bool empty = false;
   for (const ExtractLimit& limit : request.limits) {
-    if (limit.min > -kUnbounded) empty = empty || !add_condition(set, limit_condition(limit, true));
-    if (limit.max < kUnbounded) empty = empty || !add_condition(set, limit_condition(limit, false));
+    const bool has_min = limit.min > -kUnbounded, has_max = limit.max < kUnbounded;
+    if (!empty && has_min) empty = !add_limit(limit, true);
+    if (!empty && has_max) empty = !add_limit(limit, false);
+    if (!empty && !has_min && !has_max) any_missing |= has_missing(limit);
   }
-  if (!validity.empty()) {
+  if (!empty && any_missing) {
     Condition c;
     c.kind = ConditionKind::kValidity;
-    c.values = std::move(validity);
-    empty = empty || !add_condition(set, std::move(c));
+    c.values = builder.buffer();
+    std::fill(c.values.begin(), c.values.end(), 1.0);
+    for (const ExtractLimit& limit : request.limits) {
+      const float* field = samples.fields[limit.field].data();
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(field[i])) c.values[i] = -1.0;
+      }
+    }
+    empty = !builder.add(std::move(c));
   }
 
   for (int a = 0; a < 3; ++a) {
@@ -121,18 +242,22 @@ ConditionSet build_conditions(const NodeSamples& samples, const ExtractRequest& 
       empty = true;
       continue;
     }
-    for (int side = 0; side < 2; ++side) {
+    for (int side = 0; side < 2 && !empty; ++side) {
       Condition c;
       c.kind = ConditionKind::kBox;
       c.axis = a;
       c.side = side;
-      c.values.resize(n);
-      const std::size_t stride = a == 0 ? 1 : a == 1 ? dims[0] : dims[0] * dims[1];
-      for (std::size_t i = 0; i < n; ++i) {
-        const double index = static_cast<double>((i / stride) % dims[a]);
-        c.values[i] = side == 0 ? index - i_first : i_last - index;
+      c.values = builder.buffer();
+      std::size_t i = 0;
+      for (std::size_t z = 0; z < dims[2]; ++z) {
+        for (std::size_t y = 0; y < dims[1]; ++y) {
+          for (std::size_t x = 0; x < dims[0]; ++x, ++i) {
+            const double index = static_cast<double>(a == 0 ? x : a == 1 ? y : z);
+            c.values[i] = side == 0 ? index - i_first : i_last - index;
+          }
+        }
       }
-      empty = empty || !add_condition(set, std::move(c));
+      empty = !builder.add(std::move(c));
     }
   }
 
@@ -143,17 +268,18 @@ ConditionSet build_conditions(const NodeSamples& samples, const ExtractRequest& 
   }
   set.empty = empty;
   if (empty) {
+    for (Condition& c : set.conditions) {
+      if (!c.values.empty()) set.spare.push_back(std::move(c.values));
+    }
     set.conditions.clear();
-    return set;
+    return;
   }
-  set.inside.assign(n, 0);
-  for (std::size_t c = 0; c < set.conditions.size(); ++c) {
-    const std::uint64_t bit = std::uint64_t{1} << c;
-    set.all |= bit;
-    const auto& values = set.conditions[c].values;
-    for (std::size_t i = 0; i < n; ++i) set.inside[i] |= values[i] >= 0 ? bit : 0;
+  if (set.conditions.empty()) {  // every condition holds everywhere
+    std::fill(set.inside.begin(), set.inside.end(), 0);
+    return;
   }
-  return set;
+  set.all = set.conditions.size() >= 64 ? ~std::uint64_t{0}
+                                        : (std::uint64_t{1} << set.conditions.size()) - 1;
 }
 
 }  // namespace strielad

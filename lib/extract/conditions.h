@@ -6,7 +6,9 @@
 // condition (+1 valid, -1 missing, so the region ends half-way to a missing sample).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "extract/extract_request.h"
@@ -21,7 +23,19 @@ struct Condition {
   std::uint32_t field = 0;  // limits: the field
   int axis = 0;             // box: the axis (0 x, 1 y, 2 z)
   int side = 0;             // box: 0 lower bound, 1 upper bound
-  std::vector<double> values;  // one per sample, x fastest; inside where >= 0
+  // Limits: the field's samples and the bound (value - min, max - value; 0 where the
+  // sample is missing), computed where needed. Others: one value per sample.
+  const float* samples = nullptr;
+  double bound = 0;
+  std::vector<double> values;
+
+  // The condition's value at sample i (x fastest); inside where >= 0.
+  double value(std::size_t i) const {
+    if (samples == nullptr) return values[i];
+    const double v = samples[i];
+    if (!(std::fabs(v) <= static_cast<double>(std::numeric_limits<float>::max()))) return 0.0;
+    return kind == ConditionKind::kLimitMin ? v - bound : bound - v;
+  }
 };
 
 inline constexpr std::size_t kMaxConditions = 60;
@@ -31,11 +45,18 @@ struct ConditionSet {
   bool empty = false;                 // a condition excludes every sample
   std::vector<std::uint64_t> inside;  // per sample: bit c set iff condition c holds
   std::uint64_t all = 0;              // bits of every condition
+  // Value buffers of earlier builds, reused by the next build into this set.
+  std::vector<std::vector<double>> spare;
 };
 
 // Throws kInvalidArgument for a request the samples cannot serve (field index out of
 // range, min > max, NaN bounds, too many conditions).
 ConditionSet build_conditions(const NodeSamples& samples, const ExtractRequest& request);
+
+// The same into `set`, reusing its buffers (the kernel keeps one set per thread, so a
+// node's conditions cost no fresh pages).
+void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
+                      ConditionSet& set);
 
 // Fractional sample index of axis coordinate `value` on `coords` (ascending or
 // descending); below the first sample gives -1, beyond the last gives size().

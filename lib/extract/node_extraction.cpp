@@ -2,6 +2,7 @@
 #include "extract/node_extraction.h"
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 
 #include "core/error.h"
@@ -127,6 +128,41 @@ void throw_if_stopped(const std::stop_token& stop, const Store& store, NodeId no
   }
 }
 
+// Float buffers for the node's fields, kept per thread across nodes (a fresh vector
+// per brick would be allocated and zeroed before every copy). Returned on scope exit.
+class FieldBuffers {
+ public:
+  explicit FieldBuffers(NodeSamples& ns) : ns_(ns) {}
+  ~FieldBuffers() {
+    for (auto& f : ns_.fields) pool().push_back(std::move(f));
+  }
+  FieldBuffers(const FieldBuffers&) = delete;
+  FieldBuffers& operator=(const FieldBuffers&) = delete;
+
+  // Appends the brick's samples as floats (missing = NaN), as Brick::to_vector<float>.
+  void add(const Brick& brick) {
+    std::vector<float> out;
+    if (!pool().empty()) {
+      out = std::move(pool().back());
+      pool().pop_back();
+    }
+    out.resize(brick.sample_count());
+    if (brick.kind == format::BrickKind::kData && brick.dtype == DType::kFloat32) {
+      std::memcpy(out.data(), brick.bytes.data(), brick.bytes.size());
+    } else {
+      for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<float>(brick.sample(i));
+    }
+    ns_.fields.push_back(std::move(out));
+  }
+
+ private:
+  static std::vector<std::vector<float>>& pool() {
+    thread_local std::vector<std::vector<float>> buffers;
+    return buffers;
+  }
+  NodeSamples& ns_;
+};
+
 }  // namespace
 
 std::vector<std::uint32_t> node_brick_variables(const Store& store, const ResolvedScene& scene,
@@ -164,6 +200,7 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
   ns.coords = geometry.coords;
   ns.grid_edge = geometry.grid_edge;
   const std::size_t samples = ns.sample_count();
+  FieldBuffers buffers(ns);
   auto field = [&](std::uint32_t variable) {
     const auto [it, inserted] = field_of.try_emplace(variable, static_cast<std::uint32_t>(ns.fields.size()));
     if (inserted) {
@@ -176,7 +213,7 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
         throw make_error(ErrorCode::kCorrupt, "{}: brick holds {} samples, the node has {}",
                          store.describe_node(variable, node), brick->sample_count(), samples);
       }
-      ns.fields.push_back(brick->to_vector<float>());
+      buffers.add(*brick);
     }
     return it->second;
   };

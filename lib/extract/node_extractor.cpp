@@ -14,10 +14,6 @@ namespace strielad {
 
 namespace {
 
-
-// Set bits of a 4-bit mask (std::popcount is a library call without -mpopcnt).
-constexpr std::array<int, 16> kBits4{0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
-
 // The six Kuhn tetrahedra of a cell: corners as cube indices (bit 0 x, 1 y, 2 z), in
 // ascending order, which is also ascending sample order.
 constexpr std::array<std::array<int, 4>, 6> kTets{{{0, 1, 3, 7},
@@ -27,59 +23,504 @@ constexpr std::array<std::array<int, 4>, 6> kTets{{{0, 1, 3, 7},
                                                    {0, 4, 5, 7},
                                                    {0, 4, 6, 7}}};
 
-// Trilinear value and lattice-space gradient of a field at lattice position p.
-struct Trilinear {
-  double value;
-  Vec3 gradient;
+// Node and cell sides are numbered 2 * axis + side (side 1 the upper face).
+//
+// The lattice edges of a cell the Kuhn split uses: corner pairs p < q with q's bits a
+// superset of p's (12 cell edges, 6 face diagonals, the main diagonal).
+struct CellEdge {
+  int p = 0, q = 0;
 };
 
-Trilinear trilinear(const std::vector<float>& field, const std::array<std::size_t, 3>& dims,
-                    const Vec3& p) {
-  std::array<std::size_t, 3> i{};
-  Vec3 f{};
-  for (int a = 0; a < 3; ++a) {
-    const double fl = std::floor(p[a]);
-    const double clamped = std::clamp(fl, 0.0, static_cast<double>(dims[a] - 2));
-    i[a] = static_cast<std::size_t>(clamped);
-    f[a] = p[a] - clamped;
+// A tetrahedron's polygon on a condition's zero plane for one in/out pattern of its
+// corners: cell edges in outward (counter-clockwise seen from outside) order.
+struct TetPolygon {
+  int count = 0;
+  std::array<int, 4> edges{};
+};
+
+// A tetrahedron face on a cell side: its corners in ascending order, and whether that
+// order turns inward (clockwise seen from outside).
+struct TetFace {
+  int side = -1;  // 2 * axis + side, or -1 when the face is inside the cell
+  std::array<int, 3> corners{};  // cell corners
+  std::array<int, 3> local{};    // the same as corners of the tetrahedron (0..3)
+  bool reversed = false;
+};
+
+// The tetrahedra of a cell that one condition crosses, for each in/out pattern of the
+// cell's corners.
+struct CellCase {
+  int cut = 0;                  // tetrahedra crossed
+  std::array<int, 6> tet{};     // which
+  std::array<int, 6> bits{};    // inside bits of their corners (1..14)
+  int inside = 0;               // bit t: tetrahedron t wholly inside
+};
+
+struct Tables {
+  std::array<CellEdge, 19> edges{};
+  std::array<std::array<int, 8>, 8> edge_index{};  // [p][q], -1 if not a Kuhn edge
+  std::array<std::array<TetPolygon, 16>, 6> polygons{};  // [tet][inside bits of its corners]
+  std::array<std::array<TetFace, 4>, 6> faces{};          // [tet][opposite corner]
+  // Cell faces on each side: corners in outward order, the first and third on the
+  // face's min-max diagonal, so that the triangles (0, 1, 2) and (0, 2, 3) split it as
+  // the Kuhn tetrahedra do.
+  std::array<std::array<int, 4>, 6> side_quads{};
+  std::array<CellCase, 256> cells{};
+
+  Tables() {
+    auto pos = [](int k) { return Vec3{double(k & 1), double((k >> 1) & 1), double((k >> 2) & 1)}; };
+    for (auto& row : edge_index) row.fill(-1);
+    int e = 0;
+    for (int p = 0; p < 8; ++p) {
+      for (int q = p + 1; q < 8; ++q) {
+        if ((p & q) != p) continue;
+        edges[e] = {p, q};
+        edge_index[p][q] = e++;
+      }
+    }
+    auto newell = [](const Vec3* pts, int m) {
+      Vec3 n{0, 0, 0};
+      for (int i = 0; i < m; ++i) {
+        const Vec3& a = pts[i];
+        const Vec3& b = pts[(i + 1) % m];
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+      }
+      return n;
+    };
+    for (int t = 0; t < 6; ++t) {
+      const auto& tet = kTets[t];
+      for (int in = 1; in < 15; ++in) {
+        TetPolygon& poly = polygons[t][in];
+        std::array<std::pair<int, int>, 4> pairs{};
+        const int n_in = std::popcount(static_cast<unsigned>(in));
+        if (n_in == 1 || n_in == 3) {
+          const int lone = std::countr_zero(static_cast<unsigned>(n_in == 1 ? in : ~in & 15));
+          for (int k = 0; k < 4; ++k) {
+            if (k != lone) pairs[poly.count++] = {std::min(k, lone), std::max(k, lone)};
+          }
+        } else {
+          int a = -1, b = -1, c = -1, d = -1;
+          for (int k = 0; k < 4; ++k) {
+            if (in & (1 << k)) (a < 0 ? a : b) = k;
+            else (c < 0 ? c : d) = k;
+          }
+          for (const auto& [u, v] : {std::pair{a, c}, {a, d}, {b, d}, {b, c}}) {
+            pairs[poly.count++] = {std::min(u, v), std::max(u, v)};
+          }
+        }
+        // Orientation: the normal points from the inside corners to the outside ones
+        // (the polygon through the edge midpoints turns the same way as through any
+        // crossings inside the edges).
+        Vec3 mid[4];
+        Vec3 dir{0, 0, 0};  // centroid of the outside corners - centroid of the inside ones
+        for (int k = 0; k < 4; ++k) {
+          const Vec3 p = pos(tet[k]);
+          const double w = (in >> k) & 1 ? -1.0 / n_in : 1.0 / (4 - n_in);
+          for (int a = 0; a < 3; ++a) dir[a] += w * p[a];
+        }
+        for (int i = 0; i < poly.count; ++i) {
+          const Vec3 p = pos(tet[pairs[i].first]), q = pos(tet[pairs[i].second]);
+          for (int a = 0; a < 3; ++a) mid[i][a] = (p[a] + q[a]) / 2;
+          poly.edges[i] = edge_index[tet[pairs[i].first]][tet[pairs[i].second]];
+        }
+        if (dot(newell(mid, poly.count), dir) < 0) {
+          std::reverse(poly.edges.begin(), poly.edges.begin() + poly.count);
+        }
+      }
+      for (int opposite = 0; opposite < 4; ++opposite) {
+        TetFace& f = faces[t][opposite];
+        int and_bits = 7, or_bits = 0;
+        for (int k = 0, j = 0; k < 4; ++k) {
+          if (k == opposite) continue;
+          and_bits &= tet[k];
+          or_bits |= tet[k];
+          f.local[j] = k;
+          f.corners[j++] = tet[k];
+        }
+        for (int a = 0; a < 3 && f.side < 0; ++a) {
+          if (!(or_bits & (1 << a))) f.side = 2 * a;
+          if (and_bits & (1 << a)) f.side = 2 * a + 1;
+        }
+        if (f.side < 0) continue;
+        Vec3 p[3];
+        for (int j = 0; j < 3; ++j) p[j] = pos(f.corners[j]);
+        const Vec3 n = cross(sub(p[1], p[0]), sub(p[2], p[0]));
+        const double out = f.side % 2 == 0 ? -1.0 : 1.0;
+        f.reversed = n[f.side / 2] * out < 0;
+      }
+    }
+    for (int in = 0; in < 256; ++in) {
+      CellCase& cc = cells[in];
+      for (int t = 0; t < 6; ++t) {
+        int bits = 0;
+        for (int k = 0; k < 4; ++k) bits |= ((in >> kTets[t][k]) & 1) << k;
+        if (bits == 15) cc.inside |= 1 << t;
+        if (bits == 0 || bits == 15) continue;
+        cc.tet[cc.cut] = t;
+        cc.bits[cc.cut++] = bits;
+      }
+    }
+    for (int a = 0; a < 3; ++a) {
+      const int u = 1 << ((a + 1) % 3), v = 1 << ((a + 2) % 3);
+      for (int side = 0; side < 2; ++side) {
+        const int o = side == 0 ? 0 : (1 << a);
+        auto& quad = side_quads[2 * a + side];
+        quad = {o, o | u, o | u | v, o | v};  // normal +axis
+        if (side == 0) std::swap(quad[1], quad[3]);
+      }
+    }
   }
-  double c[8];
-  for (int k = 0; k < 8; ++k) {
-    const std::size_t x = i[0] + (k & 1), y = i[1] + ((k >> 1) & 1), z = i[2] + ((k >> 2) & 1);
-    c[k] = field[(z * dims[1] + y) * dims[0] + x];
-  }
-  const double fx = f[0], fy = f[1], fz = f[2];
-  const double x00 = c[0] + fx * (c[1] - c[0]), x10 = c[2] + fx * (c[3] - c[2]);
-  const double x01 = c[4] + fx * (c[5] - c[4]), x11 = c[6] + fx * (c[7] - c[6]);
-  const double y0 = x00 + fy * (x10 - x00), y1 = x01 + fy * (x11 - x01);
-  Trilinear t;
-  t.value = y0 + fz * (y1 - y0);
-  const double dx00 = c[1] - c[0], dx10 = c[3] - c[2], dx01 = c[5] - c[4], dx11 = c[7] - c[6];
-  const double dx0 = dx00 + fy * (dx10 - dx00), dx1 = dx01 + fy * (dx11 - dx01);
-  t.gradient[0] = dx0 + fz * (dx1 - dx0);
-  t.gradient[1] = (x10 - x00) + fz * ((x11 - x01) - (x10 - x00));
-  t.gradient[2] = y1 - y0;
+};
+
+const Tables& tables() {
+  static const Tables t;
   return t;
 }
 
-// Axis coordinate of lattice coordinate p along axis `coords`, and the cell spacing.
-std::pair<double, double> to_axis(const std::vector<double>& coords, double p) {
-  const std::size_t n = coords.size();
-  const double fl = std::clamp(std::floor(p), 0.0, static_cast<double>(n - 2));
-  const std::size_t i = static_cast<std::size_t>(fl);
-  const double f = p - fl;
-  const double spacing = coords[i + 1] - coords[i];
-  if (f == 0.0) return {coords[i], spacing};
-  if (f == 1.0) return {coords[i + 1], spacing};
-  return {coords[i] + f * spacing, spacing};
+// A lattice point's cell (clamped to the node) and its fractions there, for trilinear
+// interpolation.
+struct CellPoint {
+  std::size_t index = 0;  // sample of the cell's corner 0
+  double f[3]{};
+  std::array<std::uint32_t, 3> cell{};
+};
+
+struct Trilinear {
+  double value;
+  Vec3 gradient;  // lattice units
+};
+
+Trilinear trilinear(const float* field, const std::array<std::size_t, 3>& dims, const CellPoint& cp,
+                    bool with_gradient) {
+  const std::size_t sy = dims[0], sz = dims[0] * dims[1];
+  const float* b = field + cp.index;
+  const double c0 = b[0], c1 = b[1], c2 = b[sy], c3 = b[sy + 1];
+  const double c4 = b[sz], c5 = b[sz + 1], c6 = b[sz + sy], c7 = b[sz + sy + 1];
+  const double fx = cp.f[0], fy = cp.f[1], fz = cp.f[2];
+  const double x00 = c0 + fx * (c1 - c0), x10 = c2 + fx * (c3 - c2);
+  const double x01 = c4 + fx * (c5 - c4), x11 = c6 + fx * (c7 - c6);
+  const double y0 = x00 + fy * (x10 - x00), y1 = x01 + fy * (x11 - x01);
+  Trilinear t;
+  t.value = y0 + fz * (y1 - y0);
+  if (with_gradient) {
+    const double dx00 = c1 - c0, dx10 = c3 - c2, dx01 = c5 - c4, dx11 = c7 - c6;
+    const double dx0 = dx00 + fy * (dx10 - dx00), dx1 = dx01 + fy * (dx11 - dx01);
+    t.gradient[0] = dx0 + fz * (dx1 - dx0);
+    t.gradient[1] = (x10 - x00) + fz * ((x11 - x01) - (x10 - x00));
+    t.gradient[2] = y1 - y0;
+  } else {
+    t.gradient = {0, 0, 0};
+  }
+  return t;
 }
+
+// A vertex remembered per lattice element (a corner or a lattice edge): tag = stamp
+// << 8 | group, valid while the stamp is current.
+struct Slot {
+  std::uint32_t tag = 0;
+  std::uint32_t vertex = 0;
+};
+constexpr std::uint32_t kStampLimit = 1u << 24;
+
+// Per-thread buffers, kept across extractions so that a node costs no fresh pages.
+struct Scratch {
+  ConditionSet set;
+  MeshBuilder builder;
+  TetClipper clipper;
+  std::vector<Vec3> pts;
+  // Condition vertices: per sample 8 slots (0 the sample itself, 1..7 the lattice edge
+  // towards the corner with those bits set), for two slabs of samples (z even, z odd):
+  // cells of slab z only reach samples of slabs z and z + 1. Slab z's stamp is
+  // stamp + z, so slots of slab z - 1 left in its place are stale.
+  std::vector<Slot> lattice;
+  // Node-side vertices: per side, per sample of the side's plane, 4 slots (0 the
+  // sample, 1 the edge along the plane's first axis, 2 along its second, 3 the
+  // diagonal); stamp + dims[2].
+  std::array<std::vector<Slot>, 6> sides;
+  std::uint32_t stamp = 0;       // this extraction's first stamp
+  std::uint32_t next_stamp = 1;  // the next extraction's
+  std::vector<std::uint64_t> row_or, row_and, col_or, col_and;
+  std::vector<std::uint8_t> needs_fallback;
+  std::vector<Vec3> fallback, normals;
+  std::vector<CellPoint> cells;
+  std::array<std::vector<double>, 3> inverse_spacing;
+
+  void begin(std::size_t samples, const std::array<std::size_t, 3>& dims) {
+    const std::size_t slab = samples / dims[2];
+    if (lattice.size() < 2 * slab * 8) lattice.resize(2 * slab * 8);
+    for (int a = 0; a < 3; ++a) {
+      const std::size_t plane = dims[(a + 1) % 3] * dims[(a + 2) % 3] * 4;
+      for (int s = 0; s < 2; ++s) {
+        if (sides[2 * a + s].size() < plane) sides[2 * a + s].resize(plane);
+      }
+    }
+    // Stamps stamp .. stamp + dims[2], all above those of earlier extractions.
+    const auto used = static_cast<std::uint32_t>(dims[2] + 1);
+    stamp = next_stamp;
+    if (stamp == 0 || used >= kStampLimit - stamp) {  // wrapped: forget every slot
+      std::fill(lattice.begin(), lattice.end(), Slot{});
+      for (auto& s : sides) std::fill(s.begin(), s.end(), Slot{});
+      stamp = 1;
+    }
+    next_stamp = stamp + used;
+    builder.reset();
+  }
+};
+
+// The cell loop's vertex and polygon work for one extraction: vertices on lattice
+// corners and edges are found by element (slots), the rest by position.
+class Kernel {
+ public:
+  Kernel(Scratch& s, const ConditionSet& set, const std::array<std::size_t, 3>& dims,
+         std::uint32_t side_group)
+      : s_(s),
+        set_(set),
+        b_(s.builder),
+        dims_(dims),
+        side_group_(side_group),
+        side_stamp_((s.stamp + static_cast<std::uint32_t>(dims[2])) << 8) {
+    const std::size_t sx = 1, sy = dims[0], sz = dims[0] * dims[1];
+    offsets_ = {0, sx, sy, sx + sy, sz, sz + sx, sz + sy, sz + sx + sy};
+  }
+
+  void set_cell(std::size_t x, std::size_t y, std::size_t z, int boundary) {
+    x_ = x;
+    y_ = y;
+    z_ = z;
+    base_ = (z * dims_[1] + y) * dims_[0] + x;
+    boundary_ = boundary;
+    cell_valid_ = 0;
+    const std::size_t slab = dims_[0] * dims_[1];
+    for (int k = 0; k < 8; ++k) {
+      const std::size_t zk = z + ((k >> 2) & 1);
+      slot_[k] = ((zk & 1) * slab + (y + ((k >> 1) & 1)) * dims_[0] + x + (k & 1)) * 8;
+    }
+    slab_stamp_[0] = (s_.stamp + static_cast<std::uint32_t>(z)) << 8;
+    slab_stamp_[1] = (s_.stamp + static_cast<std::uint32_t>(z + 1)) << 8;
+  }
+
+  Vec3 corner_pos(int k) const {
+    return Vec3{static_cast<double>(x_ + (k & 1)), static_cast<double>(y_ + ((k >> 1) & 1)),
+                static_cast<double>(z_ + ((k >> 2) & 1))};
+  }
+  std::size_t sample(int k) const { return base_ + offsets_[k]; }
+
+  // Vertex of condition c at cell corner k.
+  std::uint32_t condition_corner(std::uint32_t c, int k) {
+    return lookup(s_.lattice[slot_[k]], slab_stamp_[k >> 2], c, k);
+  }
+
+  // Vertex of condition c on cell edge e (its values change sign along it).
+  std::uint32_t condition_edge(std::uint32_t c, int e) {
+    const CellEdge& ce = tables().edges[e];
+    const std::size_t sp = sample(ce.p);
+    Slot& slot = s_.lattice[slot_[ce.p] + static_cast<std::size_t>(ce.p ^ ce.q)];
+    const std::uint32_t stamp = slab_stamp_[ce.p >> 2];
+    if (slot.tag == (stamp | c)) return slot.vertex;
+    const Condition& cond = set_.conditions[c];
+    const Vec3 P = corner_pos(ce.p), Q = corner_pos(ce.q);
+    const EdgeCrossing x = edge_crossing(P, Q, cond.value(sp), cond.value(sample(ce.q)));
+    std::uint32_t v;
+    if (x.t == 0.0) {
+      v = condition_corner(c, ce.p);
+    } else if (x.t == 1.0) {
+      v = condition_corner(c, ce.q);
+    } else if ((slot.tag & ~0xFFu) == stamp) {
+      return b_.vertex(c, x.p);  // the slot holds another condition's vertex
+    } else {
+      v = b_.add_vertex(c, x.p);
+    }
+    if ((slot.tag & ~0xFFu) != stamp) slot = Slot{stamp | c, v};
+    return v;
+  }
+
+  // Cached per cell (one condition crosses the whole cell).
+  std::uint32_t cell_edge(std::uint32_t c, int e) {
+    if (cell_valid_ & (1u << e)) return cell_vertex_[e];
+    cell_valid_ |= 1u << e;
+    return cell_vertex_[e] = condition_edge(c, e);
+  }
+
+  // Vertex of node side `side` at cell corner k.
+  std::uint32_t side_corner(int side, int k) {
+    return lookup(side_slot(side, k, 0), side_stamp_, side_group_ + static_cast<std::uint32_t>(side), k);
+  }
+
+  // Vertex of node side `side` where condition c crosses the cell edge p-q (in the side).
+  std::uint32_t side_edge(int side, std::uint32_t c, int p, int q) {
+    const int a = side / 2;
+    const int u = 1 << ((a + 1) % 3), v = 1 << ((a + 2) % 3);
+    const int d = p ^ q;
+    const int kind = (d & u ? 1 : 0) + (d & v ? 2 : 0);
+    Slot& slot = side_slot(side, p, kind);
+    const std::uint32_t group = side_group_ + static_cast<std::uint32_t>(side);
+    const std::uint32_t stamp = side_stamp_;
+    if (slot.tag == (stamp | group)) return slot.vertex;
+    const Condition& cond = set_.conditions[c];
+    const Vec3 P = corner_pos(p), Q = corner_pos(q);
+    const EdgeCrossing x = edge_crossing(P, Q, cond.value(sample(p)), cond.value(sample(q)));
+    std::uint32_t vtx;
+    if (x.t == 0.0) {
+      vtx = side_corner(side, p);
+    } else if (x.t == 1.0) {
+      vtx = side_corner(side, q);
+    } else if ((slot.tag & ~0xFFu) == stamp) {
+      return b_.vertex(group, x.p);
+    } else {
+      vtx = b_.add_vertex(group, x.p);
+    }
+    if ((slot.tag & ~0xFFu) != stamp) slot = Slot{stamp | group, vtx};
+    return vtx;
+  }
+
+  // A wholly inside cell: its faces on the node boundary.
+  void inside_cell_faces() {
+    const Tables& tb = tables();
+    for (int side = 0; side < 6; ++side) {
+      if (!(boundary_ & (1 << side))) continue;
+      const std::uint32_t group = side_group_ + static_cast<std::uint32_t>(side);
+      const auto& quad = tb.side_quads[side];
+      const std::uint32_t a = side_corner(side, quad[0]);
+      const std::uint32_t b = side_corner(side, quad[1]);
+      const std::uint32_t c = side_corner(side, quad[2]);
+      const std::uint32_t d = side_corner(side, quad[3]);
+      b_.triangle(group, a, b, c);
+      b_.triangle(group, a, c, d);
+    }
+  }
+
+  // One tetrahedron whose only crossing condition is c (bits: c's inside bits of its
+  // corners, 1..14): the polygon on c's plane and its faces on the node boundary.
+  void simple_tet(int t, std::uint32_t c, int bits, bool cached) {
+    const Tables& tb = tables();
+    const TetPolygon& poly = tb.polygons[t][bits];
+    auto id = [&](int i) { return cached ? cell_edge(c, poly.edges[i]) : condition_edge(c, poly.edges[i]); };
+    const std::uint32_t a = id(0), b = id(1), d = id(2);
+    if (poly.count == 3) {
+      b_.oriented_triangle(c, a, b, d);
+    } else {
+      b_.oriented_quad(c, a, b, d, id(3));
+    }
+    if (boundary_ == 0) return;
+    for (int opposite = 0; opposite < 4; ++opposite) {
+      const TetFace& f = tb.faces[t][opposite];
+      if (f.side < 0 || !(boundary_ & (1 << f.side))) continue;
+      // The face's inside part (Sutherland-Hodgman by c), then turned outward.
+      std::uint32_t face_ids[4];
+      std::size_t m = 0;
+      for (int i = 0; i < 3; ++i) {
+        const int cur = f.corners[i], nxt = f.corners[(i + 1) % 3];
+        const bool cin = (bits >> f.local[i]) & 1, nin = (bits >> f.local[(i + 1) % 3]) & 1;
+        if (cin) face_ids[m++] = side_corner(f.side, cur);
+        if (cin != nin) face_ids[m++] = side_edge(f.side, c, std::min(cur, nxt), std::max(cur, nxt));
+      }
+      if (f.reversed) std::reverse(face_ids, face_ids + m);
+      const std::uint32_t group = side_group_ + static_cast<std::uint32_t>(f.side);
+      if (m == 3) {
+        b_.oriented_triangle(group, face_ids[0], face_ids[1], face_ids[2]);
+      } else if (m == 4) {
+        b_.oriented_quad(group, face_ids[0], face_ids[1], face_ids[2], face_ids[3]);
+      } else {
+        b_.oriented_polygon(group, face_ids, m);
+      }
+    }
+  }
+
+  // A tetrahedron wholly inside: its faces on the node boundary.
+  void inside_tet(int t) {
+    const Tables& tb = tables();
+    for (int opposite = 0; opposite < 4; ++opposite) {
+      const TetFace& f = tb.faces[t][opposite];
+      if (f.side < 0 || !(boundary_ & (1 << f.side))) continue;
+      const std::uint32_t a = side_corner(f.side, f.corners[0]);
+      const std::uint32_t b = side_corner(f.side, f.corners[1]);
+      const std::uint32_t c = side_corner(f.side, f.corners[2]);
+      const std::uint32_t group = side_group_ + static_cast<std::uint32_t>(f.side);
+      if (f.reversed) {
+        b_.triangle(group, a, c, b);
+      } else {
+        b_.triangle(group, a, b, c);
+      }
+    }
+  }
+
+  // A tetrahedron crossed by several conditions: the general clipper, vertices welded
+  // by position.
+  void clipped_tet(int t, std::uint64_t conditions) {
+    const Tables& tb = tables();
+    const auto& tet = kTets[t];
+    const std::array<std::size_t, 4> ids{sample(tet[0]), sample(tet[1]), sample(tet[2]),
+                                         sample(tet[3])};
+    const std::array<Vec3, 4> pos{corner_pos(tet[0]), corner_pos(tet[1]), corner_pos(tet[2]),
+                                  corner_pos(tet[3])};
+    TetClipper& clipper = s_.clipper;
+    if (!clipper.clip(ids, pos, set_, conditions)) return;
+    const auto& loop = clipper.loop();
+    for (const auto& face : clipper.faces()) {
+      Vec3 outward;
+      std::uint32_t group;
+      if (face.tag < 4) {
+        const int side = tb.faces[t][face.tag].side;
+        if (side < 0 || !(boundary_ & (1 << side))) continue;
+        outward = {0, 0, 0};
+        outward[side / 2] = side % 2 == 0 ? -1.0 : 1.0;
+        group = side_group_ + static_cast<std::uint32_t>(side);
+      } else {
+        const std::size_t c = static_cast<std::size_t>(face.tag - 4);
+        const Vec3 g = clipper.gradient(c);
+        outward = {-g[0], -g[1], -g[2]};
+        group = static_cast<std::uint32_t>(c);
+      }
+      s_.pts.clear();
+      for (std::uint32_t i = 0; i < face.count; ++i) {
+        s_.pts.push_back(clipper.position(loop[face.first + i]));
+      }
+      b_.polygon(group, s_.pts.data(), s_.pts.size(), outward);
+    }
+  }
+
+ private:
+  Slot& side_slot(int side, int k, int kind) {
+    const std::size_t cx = x_ + (k & 1), cy = y_ + ((k >> 1) & 1), cz = z_ + ((k >> 2) & 1);
+    // In the side's plane: first axis (axis + 1) % 3, second (axis + 2) % 3.
+    const std::size_t index = side < 2 ? cz * dims_[1] + cy : side < 4 ? cx * dims_[2] + cz : cy * dims_[0] + cx;
+    return s_.sides[side][index * 4 + static_cast<std::size_t>(kind)];
+  }
+
+  // The vertex of `group` at cell corner k, remembered in `slot`.
+  std::uint32_t lookup(Slot& slot, std::uint32_t stamp, std::uint32_t group, int k) {
+    if (slot.tag == (stamp | group)) return slot.vertex;
+    if ((slot.tag & ~0xFFu) == stamp) return b_.vertex(group, corner_pos(k));  // another group's
+    const std::uint32_t v = b_.add_vertex(group, corner_pos(k));
+    slot = Slot{stamp | group, v};
+    return v;
+  }
+
+  Scratch& s_;
+  const ConditionSet& set_;
+  MeshBuilder& b_;
+  std::array<std::size_t, 3> dims_;
+  std::array<std::size_t, 8> offsets_{};
+  std::uint32_t side_group_;
+  std::uint32_t side_stamp_;  // tag (without group) of the side slots: stamp + dims[2]
+  std::size_t x_ = 0, y_ = 0, z_ = 0, base_ = 0;
+  int boundary_ = 0;
+  std::uint32_t cell_valid_ = 0;
+  std::array<std::uint32_t, 19> cell_vertex_{};
+  std::array<std::size_t, 8> slot_{};  // lattice slot of each corner
+  std::array<std::uint32_t, 2> slab_stamp_{};  // tags (without group) of slabs z, z + 1
+};
 
 }  // namespace
 
 Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request,
                        ExtractStats* stats) {
   const auto dims = samples.dims();
-  const ConditionSet set = build_conditions(samples, request);
+  thread_local Scratch scratch;
+  ConditionSet& set = scratch.set;
+  build_conditions(samples, request, set);
   if (request.attribute_fields.size() != request.attribute_names.size()) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "sub-volume {}: {} attribute fields but {} names", request.subvolume_id,
@@ -106,300 +547,298 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
 
   const std::size_t c_count = set.conditions.size();
   const std::uint32_t side_group = static_cast<std::uint32_t>(c_count);  // + 2 * axis + side
-  MeshBuilder builder;
-  TetClipper clipper;
-  std::vector<Vec3> pts;
-  pts.reserve(64);
+  scratch.begin(samples.sample_count(), dims);
+  MeshBuilder& builder = scratch.builder;
+  Kernel kernel(scratch, set, dims, side_group);
 
-  const std::size_t sx = 1, sy = dims[0], sz = dims[0] * dims[1];
-  const std::array<std::size_t, 8> offsets{0, sx, sy, sx + sy, sz, sz + sx, sz + sy, sz + sx + sy};
+  const std::size_t sy = dims[0], sz = dims[0] * dims[1];
   const std::uint64_t all = set.all;
+  const auto& cell_cases = tables().cells;
+  const std::uint64_t* inside = set.inside.data();
 
-  // Node-boundary triangle of a tetrahedron face or a cell face, oriented outward.
-  auto boundary_face = [&](int axis, int side, const Vec3& a, const Vec3& b, const Vec3& c) {
-    Vec3 tri[3]{a, b, c};
-    Vec3 outward{0, 0, 0};
-    outward[axis] = side == 0 ? -1.0 : 1.0;
-    builder.polygon(side_group + static_cast<std::uint32_t>(2 * axis + side), tri, 3, outward);
-  };
+  // Per row of samples (y, z): the conditions that hold somewhere and everywhere on it.
+  const std::size_t rows = dims[1] * dims[2];
+  scratch.row_or.resize(rows);
+  scratch.row_and.resize(rows);
+  for (std::size_t r = 0; r < rows; ++r) {
+    const std::uint64_t* row = inside + r * dims[0];
+    std::uint64_t o = 0, a = all;
+    for (std::size_t x = 0; x < dims[0]; ++x) {
+      o |= row[x];
+      a &= row[x];
+    }
+    scratch.row_or[r] = o;
+    scratch.row_and[r] = a;
+  }
+  scratch.col_or.resize(dims[0]);
+  scratch.col_and.resize(dims[0]);
+  std::uint64_t* col_or = scratch.col_or.data();
+  std::uint64_t* col_and = scratch.col_and.data();
 
-  builder.begin_edges(samples.sample_count() * 7);
   for (std::size_t z = 0; z + 1 < dims[2]; ++z) {
     for (std::size_t y = 0; y + 1 < dims[1]; ++y) {
-      // A row of cells: skip it whole when a condition fails on all four sample rows,
-      // and visit only its end cells when every condition holds on all of them.
-      const std::uint64_t* r0 = &set.inside[(z * dims[1] + y) * dims[0]];
-      const std::uint64_t* r1 = r0 + sy;
-      const std::uint64_t* r2 = r0 + sz;
-      const std::uint64_t* r3 = r0 + sz + sy;
+      // A row of cells: skip it whole when a condition fails on all four sample rows;
+      // when every condition holds on all of them only its cells on the node boundary
+      // have faces.
+      const std::size_t r0 = z * dims[1] + y;
+      const std::size_t rr[4]{r0, r0 + 1, r0 + dims[1], r0 + dims[1] + 1};
       std::uint64_t row_or = 0, row_and = all;
-      for (std::size_t x = 0; x < dims[0]; ++x) {
-        const std::uint64_t o = r0[x] | r1[x] | r2[x] | r3[x];
-        const std::uint64_t a = r0[x] & r1[x] & r2[x] & r3[x];
-        row_or |= o;
-        row_and &= a;
+      for (std::size_t r : rr) {
+        row_or |= scratch.row_or[r];
+        row_and &= scratch.row_and[r];
       }
       if ((row_or & all) != all) continue;
-      const bool row_inside = row_and == all;
-      const bool row_on_yz_boundary = y == 0 || y + 2 == dims[1] || z == 0 || z + 2 == dims[2];
+      const int yz_boundary = (y == 0 ? 1 << 2 : 0) | (y + 2 == dims[1] ? 1 << 3 : 0) |
+                              (z == 0 ? 1 << 4 : 0) | (z + 2 == dims[2] ? 1 << 5 : 0);
+      if (row_and == all) {
+        local.inside_cells += dims[0] - 1;
+        for (std::size_t x = 0; x + 1 < dims[0]; ++x) {
+          const int boundary = yz_boundary | (x == 0 ? 1 : 0) | (x + 2 == dims[0] ? 2 : 0);
+          if (boundary == 0) continue;
+          kernel.set_cell(x, y, z, boundary);
+          kernel.inside_cell_faces();
+        }
+        continue;
+      }
+      const std::uint64_t* s0 = inside + r0 * dims[0];
+      const std::uint64_t* s1 = s0 + sy;
+      const std::uint64_t* s2 = s0 + sz;
+      const std::uint64_t* s3 = s0 + sz + sy;
+      for (std::size_t x = 0; x < dims[0]; ++x) {
+        col_or[x] = s0[x] | s1[x] | s2[x] | s3[x];
+        col_and[x] = s0[x] & s1[x] & s2[x] & s3[x];
+      }
       for (std::size_t x = 0; x + 1 < dims[0]; ++x) {
-        if (row_inside && !row_on_yz_boundary && x != 0 && x + 2 != dims[0]) {
-          ++local.inside_cells;  // wholly inside, no face on the node boundary: nothing to emit
-          continue;
-        }
-        const std::size_t base = (z * dims[1] + y) * dims[0] + x;
-        std::array<std::uint64_t, 8> masks;
-        std::uint64_t all_and = all, any_or = 0;
-        for (int k = 0; k < 8; ++k) {
-          masks[k] = set.inside[base + offsets[k]];
-          all_and &= masks[k];
-          any_or |= masks[k];
-        }
-        if ((any_or & all) != all) continue;  // a condition fails at every corner
-        const std::array<std::size_t, 3> cell{x, y, z};
-        int boundary = 0;  // bit 2*axis+side
-        for (int a = 0; a < 3; ++a) {
-          if (cell[a] == 0) boundary |= 1 << (2 * a);
-          if (cell[a] + 2 == dims[a]) boundary |= 1 << (2 * a + 1);
-        }
-        auto corner_pos = [&](int k) {
-          return Vec3{static_cast<double>(x + (k & 1)), static_cast<double>(y + ((k >> 1) & 1)),
-                      static_cast<double>(z + ((k >> 2) & 1))};
-        };
-        if (all_and == all) {
+        if (((col_or[x] | col_or[x + 1]) & all) != all) continue;  // a condition fails at every corner
+        const std::uint64_t cell_and = col_and[x] & col_and[x + 1] & all;
+        const int boundary = yz_boundary | (x == 0 ? 1 : 0) | (x + 2 == dims[0] ? 2 : 0);
+        if (cell_and == all) {
           ++local.inside_cells;
-          // Cell faces on the node boundary, split along the face's min-max diagonal
-          // like the Kuhn tetrahedra split them.
-          for (int a = 0; a < 3 && boundary != 0; ++a) {
-            const int u = 1 << ((a + 1) % 3), v = 1 << ((a + 2) % 3);
-            for (int side = 0; side < 2; ++side) {
-              if (!(boundary & (1 << (2 * a + side)))) continue;
-              const int o = side == 0 ? 0 : (1 << a);
-              boundary_face(a, side, corner_pos(o), corner_pos(o | u), corner_pos(o | u | v));
-              boundary_face(a, side, corner_pos(o), corner_pos(o | u | v), corner_pos(o | v));
-            }
+          if (boundary != 0) {
+            kernel.set_cell(x, y, z, boundary);
+            kernel.inside_cell_faces();
           }
           continue;
         }
         ++local.cut_cells;
-        for (const auto& tet : kTets) {
+        kernel.set_cell(x, y, z, boundary);
+        std::uint64_t masks[8];
+        masks[0] = s0[x];
+        masks[1] = s0[x + 1];
+        masks[2] = s1[x];
+        masks[3] = s1[x + 1];
+        masks[4] = s2[x];
+        masks[5] = s2[x + 1];
+        masks[6] = s3[x];
+        masks[7] = s3[x + 1];
+        const std::uint64_t mixed = all & ~cell_and;
+        if ((mixed & (mixed - 1)) == 0) {
+          // One condition crosses the cell: marching tetrahedra by table.
+          const int c = std::countr_zero(mixed);
+          int cell_bits = 0;
+          for (int k = 0; k < 8; ++k) cell_bits |= static_cast<int>((masks[k] >> c) & 1) << k;
+          const CellCase& cc = cell_cases[cell_bits];
+          local.simple_tets += static_cast<std::uint64_t>(cc.cut);
+          for (int i = 0; i < cc.cut; ++i) {
+            kernel.simple_tet(cc.tet[i], static_cast<std::uint32_t>(c), cc.bits[i], true);
+          }
+          if (boundary != 0) {
+            for (int t = 0; t < 6; ++t) {
+              if (cc.inside & (1 << t)) kernel.inside_tet(t);
+            }
+          }
+          continue;
+        }
+        // Several conditions cross the cell: per tetrahedron.
+        for (int t = 0; t < 6; ++t) {
+          const auto& tet = kTets[t];
           std::uint64_t t_and = all, t_or = 0;
           for (int k : tet) {
             t_and &= masks[k];
             t_or |= masks[k];
           }
           if ((t_or & all) != all) continue;
-          const std::array<std::size_t, 4> ids{base + offsets[tet[0]], base + offsets[tet[1]],
-                                               base + offsets[tet[2]], base + offsets[tet[3]]};
-          const std::array<Vec3, 4> pos{corner_pos(tet[0]), corner_pos(tet[1]),
-                                        corner_pos(tet[2]), corner_pos(tet[3])};
-          // Node side a tetrahedron face lies on, or -1.
-          auto face_side = [&](int opposite) {
-            int and_bits = 7, or_bits = 0;
-            for (int k = 0; k < 4; ++k) {
-              if (k == opposite) continue;
-              and_bits &= tet[k];
-              or_bits |= tet[k];
-            }
-            for (int a = 0; a < 3; ++a) {
-              if (!(or_bits & (1 << a)) && (boundary & (1 << (2 * a)))) return 2 * a;
-              if ((and_bits & (1 << a)) && (boundary & (1 << (2 * a + 1)))) return 2 * a + 1;
-            }
-            return -1;
-          };
           if (t_and == all) {
-            if (boundary == 0) continue;
-            for (int opposite = 0; opposite < 4; ++opposite) {
-              const int side = face_side(opposite);
-              if (side < 0) continue;
-              std::array<Vec3, 3> f;
-              for (int k = 0, j = 0; k < 4; ++k) {
-                if (k != opposite) f[j++] = pos[k];
-              }
-              boundary_face(side / 2, side % 2, f[0], f[1], f[2]);
-            }
+            if (boundary != 0) kernel.inside_tet(t);
             continue;
           }
-          const std::uint64_t mixed = all & ~t_and;
-          if ((mixed & (mixed - 1)) == 0) {
-            // One condition crosses: the marching-tetrahedra case, without the general
-            // clipper, and the same canonical points.
+          const std::uint64_t tet_mixed = all & ~t_and;
+          if ((tet_mixed & (tet_mixed - 1)) == 0) {
             ++local.simple_tets;
-            const std::size_t c = static_cast<std::size_t>(std::countr_zero(mixed));
-            const auto& values = set.conditions[c].values;
-            const std::array<double, 4> sv{values[ids[0]], values[ids[1]], values[ids[2]],
-                                           values[ids[3]]};
-            auto edge_point = [&](int p, int q) {  // p < q
-              const double t = sv[p] / (sv[p] - sv[q]);
-              std::array<double, 4> w{};
-              w[p] = 1.0 - t;
-              w[q] = t;
-              return lattice_point(pos, w);
-            };
-            // Lattice edge slot: lower sample * 7 + direction (corner difference 1..7).
-            auto edge_slot = [&](int p, int q) {
-              return ids[p] * 7 + static_cast<std::size_t>(tet[q] - tet[p] - 1);
-            };
-            std::uint32_t poly_ids[4];
-            int in = 0;
-            for (int k = 0; k < 4; ++k) in |= (sv[k] >= 0 ? 1 : 0) << k;
-            Vec3 poly[4];
-            std::size_t m = 0;
-            const int n_in = kBits4[in];
-            if (n_in == 1 || n_in == 3) {
-              const int lone = std::countr_zero(static_cast<unsigned>(n_in == 1 ? in : ~in & 15));
-              for (int k = 0; k < 4; ++k) {
-                if (k == lone) continue;
-                const int p = std::min(k, lone), q = std::max(k, lone);
-                poly[m] = edge_point(p, q);
-                poly_ids[m] = builder.edge_vertex(static_cast<std::uint32_t>(c), edge_slot(p, q), poly[m]);
-                ++m;
-              }
-            } else {
-              int a = -1, b = -1, cc = -1, d = -1;
-              for (int k = 0; k < 4; ++k) {
-                if (in & (1 << k)) (a < 0 ? a : b) = k;
-                else (cc < 0 ? cc : d) = k;
-              }
-              for (const auto& [u, v] : {std::pair{a, cc}, {a, d}, {b, d}, {b, cc}}) {
-                const int p = std::min(u, v), q = std::max(u, v);
-                poly[m] = edge_point(p, q);
-                poly_ids[m] = builder.edge_vertex(static_cast<std::uint32_t>(c), edge_slot(p, q), poly[m]);
-                ++m;
-              }
-            }
-            // Gradient: Kuhn edges are unit steps along one axis each.
-            Vec3 outward{0, 0, 0};
-            for (int k = 0; k < 3; ++k) {
-              const int axis = std::countr_zero(static_cast<unsigned>(tet[k + 1] ^ tet[k]));
-              outward[axis] = sv[k] - sv[k + 1];
-            }
-            builder.polygon(static_cast<std::uint32_t>(c), poly, m, outward, poly_ids);
-            // Faces on the node boundary: the triangle's inside part (Sutherland-Hodgman
-            // by the one condition, crossings from the same canonical points).
-            for (int opposite = 0; boundary != 0 && opposite < 4; ++opposite) {
-              const int side = face_side(opposite);
-              if (side < 0) continue;
-              int f[3];
-              for (int k = 0, j = 0; k < 4; ++k) {
-                if (k != opposite) f[j++] = k;
-              }
-              Vec3 clipped[4];
-              std::size_t q = 0;
-              for (int i = 0; i < 3; ++i) {
-                const int cur = f[i], nxt = f[(i + 1) % 3];
-                const bool cin = (in >> cur) & 1, nin = (in >> nxt) & 1;
-                if (cin) clipped[q++] = pos[cur];
-                if (cin != nin) clipped[q++] = edge_point(std::min(cur, nxt), std::max(cur, nxt));
-              }
-              Vec3 face_out{0, 0, 0};
-              face_out[side / 2] = side % 2 == 0 ? -1.0 : 1.0;
-              builder.polygon(side_group + static_cast<std::uint32_t>(side), clipped, q, face_out);
-            }
+            const int c = std::countr_zero(tet_mixed);
+            int bits = 0;
+            for (int k = 0; k < 4; ++k) bits |= static_cast<int>((masks[tet[k]] >> c) & 1) << k;
+            kernel.simple_tet(t, static_cast<std::uint32_t>(c), bits, false);
             continue;
           }
           ++local.clipped_tets;
-          if (!clipper.clip(ids, pos, set, all & ~t_and)) continue;
-          const auto& loop = clipper.loop();
-          for (const auto& face : clipper.faces()) {
-            Vec3 outward;
-            std::uint32_t group;
-            if (face.tag < 4) {
-              const int side = face_side(face.tag);
-              if (side < 0) continue;
-              outward = {0, 0, 0};
-              outward[side / 2] = side % 2 == 0 ? -1.0 : 1.0;
-              group = side_group + static_cast<std::uint32_t>(side);
-            } else {
-              const std::size_t c = static_cast<std::size_t>(face.tag - 4);
-              const Vec3 g = clipper.gradient(c);
-              outward = {-g[0], -g[1], -g[2]};
-              group = static_cast<std::uint32_t>(c);
-            }
-            pts.clear();
-            for (std::uint32_t i = 0; i < face.count; ++i) {
-              pts.push_back(clipper.position(loop[face.first + i]));
-            }
-            builder.polygon(group, pts.data(), pts.size(), outward);
-          }
+          kernel.clipped_tet(t, tet_mixed);
         }
       }
     }
   }
 
-  // Lattice to axis coordinates, normals, attributes.
+  // Lattice to axis coordinates, normals, attributes: once per vertex.
+  builder.drop_unused_vertices();
   int descending = 0;
   for (int a = 0; a < 3; ++a) descending += samples.coords[a].back() < samples.coords[a].front();
   const std::size_t nv = builder.points.size();
-  mesh.positions.resize(nv);
-  mesh.normals.assign(nv, {0.f, 0.f, 0.f});
-  std::vector<Vec3> spacing(nv);
-  std::vector<Vec3> positions(nv);
-  for (std::size_t v = 0; v < nv; ++v) {
-    for (int a = 0; a < 3; ++a) {
-      const auto [coord, h] = to_axis(samples.coords[a], builder.points[v][a]);
-      positions[v][a] = coord;
-      spacing[v][a] = h;
-      mesh.positions[v][a] = coord;
+  const std::size_t nt = builder.triangle_count();
+  mesh.face_kinds.reserve(nt);
+
+  // Per group: face kind and normal rule.
+  const std::size_t groups = c_count + 6;
+  std::array<FaceKind, kMaxConditions + 6> kind_of{};
+  for (std::size_t g = 0; g < groups; ++g) {
+    if (g >= side_group) {
+      kind_of[g] = samples.grid_edge[g - side_group] ? FaceKind::kGridBoundary : FaceKind::kNodeBoundary;
+    } else {
+      kind_of[g] = set.conditions[g].kind == ConditionKind::kBox ? FaceKind::kDomainBox : FaceKind::kLimit;
     }
   }
-  mesh.triangles = std::move(builder.triangles);
+  // The lattice-space orientation is the axis-space one unless an odd number of axes
+  // descend.
+  const auto* triangles = builder.triangles();
   if (descending % 2 == 1) {
-    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
-  }
-  mesh.face_kinds.resize(mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const std::uint32_t g = builder.triangle_groups[t];
-    mesh.face_kinds[t] = g >= side_group ? (samples.grid_edge[g - side_group] ? FaceKind::kGridBoundary
-                                                                             : FaceKind::kNodeBoundary)
-                         : set.conditions[g].kind == ConditionKind::kBox ? FaceKind::kDomainBox
-                                                                          : FaceKind::kLimit;
-  }
-  // Area-weighted face normals in axis coordinates: the fallback where a field
-  // gradient is zero or undefined.
-  std::vector<Vec3> fallback(nv, Vec3{0, 0, 0});
-  for (const auto& t : mesh.triangles) {
-    const Vec3 n = cross(sub(positions[t[1]], positions[t[0]]), sub(positions[t[2]], positions[t[0]]));
-    for (std::uint32_t v : t) {
-      for (int a = 0; a < 3; ++a) fallback[v][a] += n[a];
+    mesh.triangles.reserve(nt);
+    for (std::size_t t = 0; t < nt; ++t) {
+      mesh.triangles.push_back({triangles[t][0], triangles[t][2], triangles[t][1]});
     }
+  } else {
+    mesh.triangles.assign(triangles, triangles + nt);
   }
-  for (std::size_t v = 0; v < nv; ++v) {
-    const std::uint32_t g = builder.vertex_groups[v];
-    Vec3 lattice_normal{0, 0, 0};  // a covector in lattice coordinates
+  const std::uint32_t* triangle_groups = builder.triangle_groups();
+  for (std::size_t t = 0; t < nt; ++t) mesh.face_kinds.push_back(kind_of[triangle_groups[t]]);
+
+  std::vector<const float*> attribute_data;
+  for (std::uint32_t f : request.attribute_fields) attribute_data.push_back(samples.fields[f].data());
+  scratch.needs_fallback.assign(nv, 0);
+  bool any_fallback = false;
+  // Per axis and cell: the spacing's inverse (normals are covectors: the lattice
+  // gradient divided by the spacing).
+  for (int a = 0; a < 3; ++a) {
+    auto& inv = scratch.inverse_spacing[a];
+    const auto& c = samples.coords[a];
+    inv.resize(dims[a] - 1);
+    for (std::size_t i = 0; i + 1 < dims[a]; ++i) inv[i] = 1.0 / (c[i + 1] - c[i]);
+  }
+  // Per group: the limit field whose gradient gives the normal (with its sign), or
+  // the fixed lattice normal of a box or node side (unit along one axis).
+  struct GroupNormal {
+    const float* field = nullptr;
+    double sign = 0;
+    int axis = -1;  // fixed normal: +-1 along axis
+  };
+  std::array<GroupNormal, kMaxConditions + 6> group_normal{};
+  for (std::size_t g = 0; g < groups; ++g) {
+    GroupNormal& gn = group_normal[g];
     if (g >= side_group) {
       const int side = static_cast<int>(g - side_group);
-      lattice_normal[side / 2] = side % 2 == 0 ? -1.0 : 1.0;
+      gn.axis = side / 2;
+      gn.sign = side % 2 == 0 ? -1.0 : 1.0;
     } else {
       const Condition& c = set.conditions[g];
       if (c.kind == ConditionKind::kBox) {
-        lattice_normal[c.axis] = c.side == 0 ? -1.0 : 1.0;
+        gn.axis = c.axis;
+        gn.sign = c.side == 0 ? -1.0 : 1.0;
       } else if (c.kind != ConditionKind::kValidity) {
-        const Trilinear t = trilinear(samples.fields[c.field], dims, builder.points[v]);
-        const double sign = c.kind == ConditionKind::kLimitMin ? -1.0 : 1.0;
-        for (int a = 0; a < 3; ++a) lattice_normal[a] = sign * t.gradient[a];
+        gn.field = samples.fields[c.field].data();
+        gn.sign = c.kind == ConditionKind::kLimitMin ? -1.0 : 1.0;
       }
     }
-    Vec3 n{};
-    for (int a = 0; a < 3; ++a) n[a] = lattice_normal[a] / spacing[v][a];
-    double len = std::sqrt(dot(n, n));
-    if (!(len > 0) || !std::isfinite(len)) {
-      n = fallback[v];
-      len = std::sqrt(dot(n, n));
-    }
-    if (!(len > 0) || !std::isfinite(len)) {
-      n = {0, 0, 1};
-      len = 1;
-    }
-    mesh.normals[v] = {static_cast<float>(n[0] / len), static_cast<float>(n[1] / len),
-                       static_cast<float>(n[2] / len)};
   }
-  for (std::size_t a = 0; a < request.attribute_fields.size(); ++a) {
+  // Pass 1: each vertex's cell (clamped to the node), its fractions there and its
+  // axis coordinates.
+  scratch.cells.resize(nv);
+  mesh.positions.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    const Vec3& p = builder.points[v];
+    CellPoint& cp = scratch.cells[v];
+    std::size_t cell[3];
+    auto& position = mesh.positions[v];
+    for (int a = 0; a < 3; ++a) {
+      const double lo = p[a] > 0 ? p[a] : 0.0;  // truncation = floor here
+      std::size_t i = static_cast<std::size_t>(lo);
+      if (i > dims[a] - 2) i = dims[a] - 2;
+      cell[a] = i;
+      const double f = p[a] - static_cast<double>(i);
+      cp.f[a] = f;
+      // The sample's own coordinate at either end of the cell (exact, as the
+      // neighbouring node computes it), interpolated inside (chosen without branches:
+      // which case applies varies from vertex to vertex).
+      const auto& c = samples.coords[a];
+      const double choice[3]{c[i] + f * (c[i + 1] - c[i]), c[i], c[i + 1]};
+      position[a] = choice[static_cast<int>(f == 0.0) + 2 * static_cast<int>(f == 1.0)];
+    }
+    cp.index = (cell[2] * dims[1] + cell[1]) * dims[0] + cell[0];
+    cp.cell = {static_cast<std::uint32_t>(cell[0]), static_cast<std::uint32_t>(cell[1]),
+               static_cast<std::uint32_t>(cell[2])};
+  }
+  // Pass 2: normals as covectors in axis coordinates (lattice gradient / spacing).
+  scratch.normals.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    const CellPoint& cp = scratch.cells[v];
+    const GroupNormal& gn = group_normal[builder.vertex_groups[v]];
+    Vec3 n{0, 0, 0};
+    if (gn.field != nullptr) {
+      const Trilinear t = trilinear(gn.field, dims, cp, true);
+      for (int a = 0; a < 3; ++a) n[a] = gn.sign * t.gradient[a] * scratch.inverse_spacing[a][cp.cell[a]];
+    } else if (gn.axis >= 0) {
+      const double value = gn.sign * scratch.inverse_spacing[gn.axis][cp.cell[gn.axis]];
+      for (int a = 0; a < 3; ++a) n[a] = a == gn.axis ? value : 0.0;  // no indexed store
+    }
+    scratch.normals[v] = n;
+  }
+  // Pass 3: unit normals (face normals where the gradient is zero or undefined).
+  mesh.normals.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    const Vec3& n = scratch.normals[v];
+    const double len = std::sqrt(dot(n, n));
+    if (!(len > 0) || !std::isfinite(len)) {
+      scratch.needs_fallback[v] = 1;
+      any_fallback = true;
+    } else {
+      const double inv = 1.0 / len;
+      mesh.normals[v] = {static_cast<float>(n[0] * inv), static_cast<float>(n[1] * inv),
+                         static_cast<float>(n[2] * inv)};
+    }
+  }
+  // Pass 4: attributes.
+  for (std::size_t a = 0; a < attribute_data.size(); ++a) {
     auto& out = mesh.attributes[a];
     out.resize(nv);
-    const auto& field = samples.fields[request.attribute_fields[a]];
     for (std::size_t v = 0; v < nv; ++v) {
-      out[v] = static_cast<float>(trilinear(field, dims, builder.points[v]).value);
+      out[v] = static_cast<float>(trilinear(attribute_data[a], dims, scratch.cells[v], false).value);
+    }
+  }
+  if (any_fallback) {
+    // Area-weighted face normals in axis coordinates where a field gradient is zero or
+    // undefined.
+    scratch.fallback.assign(nv, Vec3{0, 0, 0});
+    for (const auto& t : mesh.triangles) {
+      if (!scratch.needs_fallback[t[0]] && !scratch.needs_fallback[t[1]] &&
+          !scratch.needs_fallback[t[2]]) {
+        continue;
+      }
+      const auto& p0 = mesh.positions[t[0]];
+      const auto& p1 = mesh.positions[t[1]];
+      const auto& p2 = mesh.positions[t[2]];
+      const Vec3 n = cross(Vec3{p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
+                           Vec3{p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
+      for (std::uint32_t v : t) {
+        for (int a = 0; a < 3; ++a) scratch.fallback[v][a] += n[a];
+      }
+    }
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (!scratch.needs_fallback[v]) continue;
+      Vec3 n = scratch.fallback[v];
+      double len = std::sqrt(dot(n, n));
+      if (!(len > 0) || !std::isfinite(len)) {
+        n = {0, 0, 1};
+        len = 1;
+      }
+      mesh.normals[v] = {static_cast<float>(n[0] / len), static_cast<float>(n[1] / len),
+                         static_cast<float>(n[2] / len)};
     }
   }
   if (stats) *stats = local;

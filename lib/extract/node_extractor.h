@@ -10,7 +10,13 @@
 // surfaces) or on the node's boundary. The limit surfaces pass through the exact
 // crossings of the trilinear field on every lattice edge, like the paper's clip
 // pipeline. Cells wholly inside or outside are classified by bit masks and cost a few
-// instructions.
+// instructions; a cell crossed by one condition takes its tetrahedra's polygons from a
+// table, and vertices on lattice corners and edges are found by lattice element, not
+// by hashing positions. The same triangles as clipping every tetrahedron one by one.
+//
+// Scratch buffers (condition masks, vertex slots, the mesh builder) are kept per
+// thread between calls (about 1 MB per thread for 25^3 samples): concurrent calls from
+// different threads are fine.
 #pragma once
 
 #include "extract/extract_request.h"

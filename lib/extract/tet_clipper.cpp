@@ -13,14 +13,19 @@ namespace {
 }  // namespace
 
 std::uint32_t TetClipper::add_vertex(const std::array<double, 4>& w, std::uint64_t planes) {
+  // Canonical sum: corners in ascending sample order, zero weights add exact zeros.
+  return add_vertex(w, planes, lattice_point(corner_pos_, w));
+}
+
+std::uint32_t TetClipper::add_vertex(const std::array<double, 4>& w, std::uint64_t planes,
+                                     const Vec3& p) {
   Vertex v;
   v.w = w;
   v.planes = planes;
   for (int k = 0; k < 4; ++k) {
     if (w[k] == 0.0) v.planes |= std::uint64_t{1} << k;
   }
-  // Canonical sum: corners in ascending sample order, zero weights add exact zeros.
-  v.p = lattice_point(corner_pos_, w);
+  v.p = p;
   vertices_.push_back(v);
   return static_cast<std::uint32_t>(vertices_.size() - 1);
 }
@@ -52,11 +57,12 @@ std::uint32_t TetClipper::crossing(std::uint32_t a, std::uint32_t b, std::size_t
       if (face_bits & (std::uint64_t{1} << k)) continue;
       (p < 0 ? p : q) = k;
     }
-    if (faces_shared == 2 && s[p] != s[q]) {
-      const double t = s[p] / (s[p] - s[q]);
-      w[p] = 1.0 - t;
-      w[q] = t;
-      return add_vertex(w, common | new_plane);
+    if (faces_shared == 2 && s[p] != s[q] && (s[p] >= 0) != (s[q] >= 0)) {
+      // The same point as the kernel's marching tetrahedra make on this edge.
+      const EdgeCrossing x = edge_crossing(corner_pos_[p], corner_pos_[q], s[p], s[q]);
+      w[p] = 1.0 - x.t;
+      w[q] = x.t;
+      return add_vertex(w, common | new_plane, x.p);
     }
   } else if (faces_shared == 1) {
     // On a lattice triangle, where this condition meets an earlier one.
@@ -205,8 +211,8 @@ bool TetClipper::clip(const std::array<std::size_t, 4>& corners,
   corner_pos_ = positions;
   for (std::uint64_t bits = conditions; bits != 0; bits &= bits - 1) {
     const std::size_t c = static_cast<std::size_t>(std::countr_zero(bits));
-    const auto& values = set.conditions[c].values;
-    for (int k = 0; k < 4; ++k) corner_values_[c * 4 + k] = values[corners[k]];
+    const Condition& condition = set.conditions[c];
+    for (int k = 0; k < 4; ++k) corner_values_[c * 4 + k] = condition.value(corners[k]);
   }
   // Inverse of the edge matrix E (rows P1-P0, P2-P0, P3-P0): gradient = E^-1 ds.
   const Vec3 e1 = sub(positions[1], positions[0]);

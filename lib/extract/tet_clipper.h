@@ -40,6 +40,43 @@ inline Vec3 lattice_point(const std::array<Vec3, 4>& corners, const std::array<d
   return p;
 }
 
+// Where a condition with value sp at lattice corner P and sq at Q (one >= 0, the other
+// < 0) crosses the lattice edge P-Q, P the lower sample (Q - P is 0 or 1 per axis):
+// weights 1 - t and t with t = sp / (sp - sq), the point summed as lattice_point sums
+// it (so the clipper's points on lattice triangles that land on the edge are the same
+// bits). When rounding puts a coordinate on (or past) an end of the edge, the
+// crossing is that corner exactly (t 0 or 1): a crossing is either a lattice corner or
+// a point of its edge and of no other lattice element, so equal points are the same
+// element. Every tetrahedron and every node sharing the edge computes the same bits.
+struct EdgeCrossing {
+  double t = 0;
+  Vec3 p{};
+};
+
+inline EdgeCrossing edge_crossing(const Vec3& P, const Vec3& Q, double sp, double sq) {
+  const double t = sp / (sp - sq);
+  const double wp = 1.0 - t, wq = t;
+  if (wq == 0.0) return {0.0, P};
+  if (wp == 0.0) return {1.0, Q};
+  bool at_p = false, at_q = false;
+  // Per axis, in scalars (no partial writes to an array read back whole).
+  auto coordinate = [&](double p, double q) {
+    if (p == q) return p;
+    double sum = 0;
+    sum += wp * p;
+    sum += wq * q;
+    at_p = at_p || sum <= p;
+    at_q = at_q || sum >= q;
+    return sum;
+  };
+  const double x = coordinate(P[0], Q[0]);
+  const double y = coordinate(P[1], Q[1]);
+  const double z = coordinate(P[2], Q[2]);
+  if (at_p) return {0.0, P};
+  if (at_q) return {1.0, Q};
+  return {t, Vec3{x, y, z}};
+}
+
 class TetClipper {
  public:
   struct Face {
@@ -67,6 +104,7 @@ class TetClipper {
     Vec3 p{};
   };
   std::uint32_t add_vertex(const std::array<double, 4>& w, std::uint64_t planes);
+  std::uint32_t add_vertex(const std::array<double, 4>& w, std::uint64_t planes, const Vec3& p);
   std::uint32_t crossing(std::uint32_t a, std::uint32_t b, std::size_t c);
   double value(std::uint32_t v, std::size_t c) const;
   bool clip_by(std::size_t c);
