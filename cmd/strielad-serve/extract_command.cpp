@@ -39,6 +39,12 @@ int run_extract(const ExtractArgs& args) {
   const ResolvedScene resolved = resolve_scene(scene, store->manifest(), args.scene);
 
   if (args.output.ends_with(".vdb")) {
+    if (frame != OutputFrame::kAxis) {
+      throw make_error(ErrorCode::kInvalidArgument,
+                       "--frame {}: only .vtp output is transformed; a .vdb grid stays in index "
+                       "space with its axes in the grid metadata",
+                       args.frame);
+    }
     const auto grids = vdb::write_subvolume_vdb(*store, resolved, args.level, args.output);
     nlohmann::json j = nlohmann::json::array();
     for (const auto& g : grids) {

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# strielad-serve turns bad flags and files into one line on stderr with the documented
+# exit status, and a running server stops cleanly (status 0) on SIGTERM.
+# Usage: serve_cli_errors_test.sh STRIELAD_CONVERT WORK_DIR (strielad-serve is found
+# next to strielad-convert in the build tree).
+set -uo pipefail
+convert=$1
+work=$2
+serve="$(dirname "$convert")/../strielad-serve/strielad-serve"
+rm -rf "$work" && mkdir -p "$work"
+failures=0
+
+expect() {
+  local status=$1 needle=$2
+  shift 3
+  "$serve" "$@" >"$work/out" 2>"$work/err"
+  local got=$?
+  local last
+  last=$(grep -v '^\[' "$work/err" | tail -n 1)
+  if [[ $got -ne $status ]] || [[ "$last" != *"error: "* ]] || [[ "$last" != *"$needle"* ]]; then
+    echo "FAIL: strielad-serve $* -> status $got (want $status), stderr:"
+    cat "$work/err"
+    failures=$((failures + 1))
+  else
+    echo "ok: status $got: $last"
+  fi
+}
+
+"$convert" sample -o "$work/data" --dims 12x10x5 --steps 1 --vars clw,ta -q
+mkdir -p "$work/root"
+"$convert" "$work"/data/*.nc -o "$work/root/store" --brick 4 -q
+echo '{"subvolumes": [{"id": 1, "limits": [{"var": "clw", "min": 1e-6}]}]}' > "$work/scene.json"
+: > "$work/empty-token"
+
+expect 2 "--frame metric" -- extract --store "$work/root/store" --scene "$work/scene.json" \
+  -o "$work/out.vdb" --frame metric
+expect 3 "dataset root is not a directory" -- --root "$work/no-such-root"
+expect 2 "--listen" -- --root "$work/root" --listen nonsense
+expect 3 "cannot read the token file" -- --root "$work/root" --token-file "$work/no-token"
+expect 4 "token file is empty" -- --root "$work/root" --token-file "$work/empty-token"
+
+# A running server stops cleanly on SIGTERM.
+"$serve" --root "$work/root" --listen 127.0.0.1:0 --json -q >"$work/endpoint" 2>"$work/serve.err" &
+pid=$!
+for _ in $(seq 100); do [[ -s "$work/endpoint" ]] && break; sleep 0.1; done
+if ! grep -q '"port"' "$work/endpoint"; then
+  echo "FAIL: no endpoint line"; cat "$work/serve.err"; failures=$((failures + 1))
+fi
+kill -TERM "$pid"
+wait "$pid"
+status=$?
+if [[ $status -ne 0 ]]; then
+  echo "FAIL: SIGTERM -> status $status"; cat "$work/serve.err"; failures=$((failures + 1))
+else
+  echo "ok: SIGTERM -> status 0"
+fi
+
+if [[ $failures -ne 0 ]]; then
+  echo "$failures failure(s)"
+  exit 1
+fi
+rm -rf "$work"
