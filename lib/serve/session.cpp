@@ -161,9 +161,12 @@ bool Session::handle(const protocol::Message& message) {
       outbound_.discard_pending();
       return false;
     } else {
+      const MessageType type = message_type(message);
       send_error(WireError::kOutOfOrder,
-                 fmt::format("{} is a server message; a client may not send it",
-                             message_type_name(message_type(message))),
+                 is_client_message(type)
+                     ? fmt::format("{} may only be the first message", message_type_name(type))
+                     : fmt::format("{} is a server message; a client may not send it",
+                                   message_type_name(type)),
                  true);
       return false;
     }
@@ -210,13 +213,17 @@ void Session::set_scene(const protocol::SetScene& m) {
   Scene scene = parse_scene(m.scene_json, "scene");
   const protocol::ServerLimits& limits = context_.config.limits;
   if (scene.subvolumes.size() > limits.max_subvolumes) {
-    throw make_error(ErrorCode::kInvalidInput, "scene: {} sub-volumes, this server allows {}",
-                     scene.subvolumes.size(), limits.max_subvolumes);
+    send_error(protocol::WireError::kTooLarge,
+               fmt::format("scene: {} sub-volumes, this server allows {}",
+                           scene.subvolumes.size(), limits.max_subvolumes));
+    return;
   }
   for (std::size_t i = 0; i < scene.subvolumes.size(); ++i) {
     if (scene.subvolumes[i].limits.size() > limits.max_limits_per_subvolume) {
-      throw make_error(ErrorCode::kInvalidInput, "scene: subvolumes[{}]: {} limits, this server allows {}",
-                       i, scene.subvolumes[i].limits.size(), limits.max_limits_per_subvolume);
+      send_error(protocol::WireError::kTooLarge,
+                 fmt::format("scene: subvolumes[{}]: {} limits, this server allows {}", i,
+                             scene.subvolumes[i].limits.size(), limits.max_limits_per_subvolume));
+      return;
     }
   }
   std::shared_ptr<const Store> store;

@@ -353,6 +353,42 @@ TEST_F(ServerLoopbackTest, OldGenerationsAreRejected) {
   EXPECT_EQ(std::get<protocol::NodeResult>(result).generation, 6u);
 }
 
+TEST_F(ServerLoopbackTest, SceneAboveTheServersLimitsIsTooLargeAndASecondHelloIsFatal) {
+  serve::ServerConfig config;
+  config.root = *dir_ / "root";
+  config.listen = net::Endpoint{"127.0.0.1", 0};
+  config.limits.max_subvolumes = 1;
+  serve::Server server(config);
+  server.start();
+  net::Socket raw = net::connect_tcp({"127.0.0.1", server.port()});
+  auto next = [&] {
+    auto in = net::read_message(raw, protocol::kMaxServerPayloadBytes);
+    EXPECT_EQ(in.status, net::ReceivedMessage::Status::kMessage);
+    return in.message;
+  };
+  net::write_message(raw, protocol::Hello{protocol::kProtocolVersion, "raw", ""});
+  const auto welcome = next();
+  ASSERT_TRUE(std::holds_alternative<protocol::Welcome>(welcome));
+  EXPECT_EQ(std::get<protocol::Welcome>(welcome).limits.max_subvolumes, 1u);
+  net::write_message(raw, protocol::OpenDataset{"small"});
+  ASSERT_TRUE(std::holds_alternative<protocol::DatasetOpened>(next()));
+  net::write_message(raw, protocol::SetScene{1, kSceneJson});  // two sub-volumes
+  auto m = next();
+  auto* e = std::get_if<protocol::ErrorMessage>(&m);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->code, protocol::WireError::kTooLarge);
+  EXPECT_FALSE(e->fatal);
+  net::write_message(raw, protocol::Hello{protocol::kProtocolVersion, "again", ""});
+  m = next();
+  e = std::get_if<protocol::ErrorMessage>(&m);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->code, protocol::WireError::kOutOfOrder);
+  EXPECT_TRUE(e->fatal);
+  EXPECT_NE(e->message.find("Hello"), std::string::npos) << e->message;
+  EXPECT_EQ(net::read_message(raw, protocol::kMaxServerPayloadBytes).status,
+            net::ReceivedMessage::Status::kEndOfStream);
+}
+
 TEST_F(ServerLoopbackTest, DisconnectMidStreamCancelsItsWork) {
   auto server = start_server(1);
   {
