@@ -2,12 +2,10 @@
 // strielad-bench extract [--dims XxYxZ] [--brick-sizes 20,32,24] [--bricks N] [--repeat N]
 //                        [--quick] [--csv FILE] [--json FILE] [--plot FILE.png] [--keep] ...
 #include <fmt/ranges.h>
-#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "bench/extract_suite.h"
 #include "bench/table_writer.h"

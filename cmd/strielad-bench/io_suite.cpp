@@ -2,11 +2,9 @@
 // strielad-bench io [--dims XxYxZ] [--vars a,b] [--work DIR] [--repeat N] [--reads N]
 //                   [--quick] [--csv FILE] [--json FILE] [--keep] ...
 #include <fmt/ranges.h>
-#include <spdlog/spdlog.h>
 
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "bench/io_suite.h"
 #include "bench/table_writer.h"

@@ -2,11 +2,9 @@
 // strielad-bench latency [--dims XxYxZ] [--threads N] [--cache-mib M] [--camera-path F]
 //                        [--repeat N] [--clients N] [--quick] [--csv F] [--json F] ...
 #include <fmt/ranges.h>
-#include <spdlog/spdlog.h>
 
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "bench/latency_suite.h"
 #include "bench/server_process.h"

@@ -350,16 +350,19 @@ void Session::update_cut(const protocol::CutUpdate& m) {
   context_.work_available();
 }
 
-bool Session::has_queued_work() const {
-  std::lock_guard lock(mutex_);
+bool Session::can_take_work_locked() const {
   return !closed_ && !queue_.empty() &&
          outbound_.pending_bytes() <= context_.config.max_pending_send_bytes;
 }
 
+bool Session::has_queued_work() const {
+  std::lock_guard lock(mutex_);
+  return can_take_work_locked();
+}
+
 std::optional<NodeTask> Session::take_task() {
   std::lock_guard lock(mutex_);
-  if (closed_ || queue_.empty()) return std::nullopt;
-  if (outbound_.pending_bytes() > context_.config.max_pending_send_bytes) return std::nullopt;
+  if (!can_take_work_locked()) return std::nullopt;
   const WorkItem item = *queue_.pop();
   --context_.counters.queued;
   const std::uint64_t serial = next_serial_++;

@@ -74,6 +74,8 @@ class Session {
   void start_generation(std::uint32_t generation, Scene scene, ResolvedScene resolved);
   bool check_new_generation(std::uint32_t generation);  // sends the error when not
   void cancel_all_locked();
+  // Queued work, and the client reads its results (not over max_pending_send_bytes).
+  bool can_take_work_locked() const;
   void send(const protocol::Message& message);
   void send_error(protocol::WireError code, std::string message, bool fatal = false);
   void writer_loop();

@@ -7,26 +7,11 @@ set -uo pipefail
 convert=$1
 work=$2
 rm -rf "$work" && mkdir -p "$work"
-failures=0
 
-# expect STATUS "SUBSTRING" -- ARGS...: runs the tool, checks status, a one-line stderr
-# ending in "error: ..." that contains SUBSTRING.
-expect() {
-  local status=$1 needle=$2
-  shift 3
-  "$convert" "$@" >"$work/out" 2>"$work/err"
-  local got=$?
-  local last
-  last=$(grep -v '^\[' "$work/err" | tail -n 1)
-  if [[ $got -ne $status ]] || [[ "$last" != *"error: "* ]] || [[ "$last" != *"$needle"* ]] ||
-     [[ $(grep -vc '^\[' "$work/err") -ne 1 ]]; then
-    echo "FAIL: strielad-convert $* -> status $got (want $status), stderr:"
-    cat "$work/err"
-    failures=$((failures + 1))
-  else
-    echo "ok: status $got: $last"
-  fi
-}
+# shellcheck source=../support/expect_cli_error.sh
+source "$(dirname "$0")/../support/expect_cli_error.sh"
+# expect STATUS "SUBSTRING" -- ARGS...
+expect() { expect_cli_error "$convert" "$work" "$@"; }
 
 "$convert" sample -o "$work/data" --dims 12x10x5 --steps 2 --vars clw,ta -q
 "$convert" "$work"/data/*.nc -o "$work/store" --brick 4 -q

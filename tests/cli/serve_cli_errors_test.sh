@@ -9,23 +9,11 @@ convert=$1
 work=$2
 serve="$(dirname "$convert")/../strielad-serve/strielad-serve"
 rm -rf "$work" && mkdir -p "$work"
-failures=0
 
-expect() {
-  local status=$1 needle=$2
-  shift 3
-  "$serve" "$@" >"$work/out" 2>"$work/err"
-  local got=$?
-  local last
-  last=$(grep -v '^\[' "$work/err" | tail -n 1)
-  if [[ $got -ne $status ]] || [[ "$last" != *"error: "* ]] || [[ "$last" != *"$needle"* ]]; then
-    echo "FAIL: strielad-serve $* -> status $got (want $status), stderr:"
-    cat "$work/err"
-    failures=$((failures + 1))
-  else
-    echo "ok: status $got: $last"
-  fi
-}
+# shellcheck source=../support/expect_cli_error.sh
+source "$(dirname "$0")/../support/expect_cli_error.sh"
+# expect STATUS "SUBSTRING" -- ARGS...
+expect() { expect_cli_error "$serve" "$work" "$@"; }
 
 "$convert" sample -o "$work/data" --dims 12x10x5 --steps 1 --vars clw,ta -q
 mkdir -p "$work/root"
