@@ -47,3 +47,12 @@ function(strielad_warnings target)
     target_compile_options(${target} PRIVATE -Werror)
   endif()
 endfunction()
+
+# The viewer (lib/render, cmd/strielad-view): OpenGL through libepoxy, contexts through
+# EGL (headless) and GLFW (windows), PNG through stb, the panel through Dear ImGui 1.86
+# (a static library with its GLFW and OpenGL 3 backends).
+pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
+pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+pkg_check_modules(GLFW REQUIRED IMPORTED_TARGET glfw3)
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)

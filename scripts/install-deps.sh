@@ -11,9 +11,10 @@ packages=(
   libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev libvtk9-dev
   libgtest-dev libgmock-dev
   libopenmpi-dev openmpi-bin
+  libglfw3-dev libepoxy-dev libimgui-dev libstb-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
 )
 if [[ "${1:-}" == "--tests" ]]; then
-  packages+=(libncarg-data slurm-wlm munge)
+  packages+=(libncarg-data slurm-wlm munge xvfb xauth)
 fi
 
 missing=()

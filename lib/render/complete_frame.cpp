@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "render/complete_frame.h"
+
+#include <thread>
+
+#include "core/error.h"
+
+namespace strielad::render {
+
+FrameInputs frame_inputs(const view::ViewController& controller, const lod::Camera& camera) {
+  FrameInputs inputs;
+  inputs.camera = camera;
+  inputs.vertical_exaggeration = controller.options().vertical_exaggeration;
+  inputs.mirrored = controller.link().placer().mirrored();
+  return inputs;
+}
+
+CompleteFrame render_complete_frame(view::ViewController& controller, VolumeRenderer& renderer,
+                                    OffscreenTarget& target, FrameInputs inputs,
+                                    const CompleteFrameOptions& options) {
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  CompleteFrame frame;
+  while (true) {
+    const auto counters = controller.update(inputs.camera);
+    if (controller.connection_lost()) {
+      throw make_error(ErrorCode::kIo, "{}",
+                       controller.last_error().value_or("connection to the server lost"));
+    }
+    if (counters.cut_changes == 0 && controller.complete()) break;
+    if (clock::now() - start > options.timeout) {
+      throw make_error(ErrorCode::kCancelled,
+                       "the view was not complete after {} s: {} of {} nodes answered",
+                       std::chrono::duration_cast<std::chrono::seconds>(options.timeout).count(),
+                       controller.meshes().size() - controller.meshes().pending(),
+                       controller.meshes().size());
+    }
+    if (counters.events == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  frame.wait_ms = std::chrono::duration<double, std::milli>(clock::now() - start).count();
+  renderer.meshes().sync(controller.meshes(), SIZE_MAX);
+  for (int attempt = 0; attempt <= options.max_redraws; ++attempt) {
+    const auto t0 = clock::now();
+    frame.stats = renderer.render(inputs, target.framebuffer(), target.width(), target.height());
+    frame.image = RgbaImage{target.width(), target.height(),
+                            VolumeRenderer::read_pixels(target.framebuffer(), target.width(),
+                                                        target.height())};
+    frame.render_ms = std::chrono::duration<double, std::milli>(clock::now() - t0).count();
+    if (!frame.stats.needs_redraw) break;
+  }
+  frame.cut_nodes = controller.meshes().size();
+  frame.nodes_with_mesh = renderer.meshes().meshes().size();
+  return frame;
+}
+
+}  // namespace strielad::render

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: Apache-2.0
+// Rendering a view once everything it shows has arrived: the headless path of
+// strielad-view (--offscreen), the render tests and the view benchmark. The cut for the
+// camera is sent, results are applied as they come, and the frame is rendered when the
+// cut no longer changes and the current request is answered for every node of it
+// (view::ViewController::complete), then rendered again while the fragment pool grew.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+
+#include "render/offscreen_target.h"
+#include "render/png_file.h"
+#include "render/volume_renderer.h"
+#include "view/view_controller.h"
+
+namespace strielad::render {
+
+struct CompleteFrameOptions {
+  std::chrono::milliseconds timeout{std::chrono::minutes(10)};
+  int max_redraws = 4;  // renders after a pool growth, at most
+};
+
+struct CompleteFrame {
+  RgbaImage image;
+  FrameStats stats;           // of the last render
+  double wait_ms = 0;         // from the call to the cut being complete
+  double render_ms = 0;       // wall time of the last render, read-back included
+  std::size_t cut_nodes = 0;
+  std::size_t nodes_with_mesh = 0;
+};
+
+// \error kCancelled when the cut is not complete within the timeout; kIo when the
+// connection to the server is lost (the message says why).
+CompleteFrame render_complete_frame(view::ViewController& controller, VolumeRenderer& renderer,
+                                    OffscreenTarget& target, FrameInputs inputs,
+                                    const CompleteFrameOptions& options = {});
+
+// The inputs a frame needs from a controller (exaggeration, mirroring, sub-volume
+// slots are set on the renderer by the caller) for `camera`.
+FrameInputs frame_inputs(const view::ViewController& controller, const lod::Camera& camera);
+
+}  // namespace strielad::render

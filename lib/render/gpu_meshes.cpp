@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "render/gpu_meshes.h"
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+namespace strielad::render {
+namespace {
+
+std::size_t geometry_bytes(const view::NodeGeometry& g) {
+  return g.vertices.size() * sizeof(float) + g.indices.size() * sizeof(std::uint32_t);
+}
+
+std::size_t gpu_bytes(const GpuMesh& m) { return m.source ? geometry_bytes(*m.source) : 0; }
+
+}  // namespace
+
+std::size_t GpuMeshes::sync(const view::ProgressiveMeshes& meshes, std::size_t max_upload_bytes) {
+  if (meshes.version() == synced_version_ && deferred_ == 0) return 0;
+  // Free what is no longer shown.
+  for (auto it = meshes_.begin(); it != meshes_.end();) {
+    const auto entry = meshes.entries().find(it->first);
+    if (entry == meshes.entries().end() || !entry->second.mesh) {
+      bytes_ -= gpu_bytes(it->second);
+      triangles_ -= static_cast<std::size_t>(it->second.index_count) / 3;
+      it = meshes_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  std::size_t uploaded = 0;
+  deferred_ = 0;
+  for (const auto& [node, entry] : meshes.entries()) {
+    if (!entry.mesh) continue;
+    const auto it = meshes_.find(node);
+    if (it != meshes_.end() && it->second.source == entry.mesh) continue;
+    if (uploaded > 0 && uploaded + geometry_bytes(*entry.mesh) > max_upload_bytes) {
+      ++deferred_;
+      continue;
+    }
+    uploaded += geometry_bytes(*entry.mesh);
+    upload(node, entry.mesh);
+  }
+  synced_version_ = meshes.version();
+  return uploaded;
+}
+
+void GpuMeshes::upload(NodeId node, std::shared_ptr<const view::NodeGeometry> geometry) {
+  GpuMesh mesh;
+  mesh.vertex_array = make_vertex_array();
+  mesh.vertices = make_buffer();
+  mesh.indices = make_buffer();
+  const auto& g = *geometry;
+  glNamedBufferStorage(mesh.vertices.get(), static_cast<GLsizeiptr>(g.vertices.size() * sizeof(float)),
+                       g.vertices.data(), 0);
+  glNamedBufferStorage(mesh.indices.get(),
+                       static_cast<GLsizeiptr>(g.indices.size() * sizeof(std::uint32_t)),
+                       g.indices.data(), 0);
+  const GLuint vao = mesh.vertex_array.get();
+  glVertexArrayVertexBuffer(vao, 0, mesh.vertices.get(), 0,
+                            static_cast<GLsizei>(view::kVertexFloats * sizeof(float)));
+  glVertexArrayElementBuffer(vao, mesh.indices.get());
+  const auto attribute = [&](GLuint location, GLint size, std::size_t offset) {
+    glEnableVertexArrayAttrib(vao, location);
+    glVertexArrayAttribFormat(vao, location, size, GL_FLOAT, GL_FALSE,
+                              static_cast<GLuint>(offset * sizeof(float)));
+    glVertexArrayAttribBinding(vao, location, 0);
+  };
+  attribute(0, 3, view::kVertexPosition);
+  attribute(1, 3, view::kVertexNormal);
+  attribute(2, 1, view::kVertexSlot);
+  attribute(3, 4, view::kVertexAttributes);
+  attribute(4, 4, view::kVertexAttributes + 4);
+  mesh.index_count = static_cast<GLsizei>(g.indices.size());
+  std::array<float, 3> lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
+                          std::numeric_limits<float>::max()};
+  std::array<float, 3> hi{-lo[0], -lo[1], -lo[2]};
+  for (std::size_t v = 0; v < g.vertex_count(); ++v) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], g.vertices[v * view::kVertexFloats + a]);
+      hi[a] = std::max(hi[a], g.vertices[v * view::kVertexFloats + a]);
+    }
+  }
+  for (int a = 0; a < 3; ++a) mesh.center[a] = 0.5f * (lo[a] + hi[a]);
+  mesh.source = std::move(geometry);
+  auto& slot = meshes_[node];
+  bytes_ -= gpu_bytes(slot);
+  triangles_ -= static_cast<std::size_t>(slot.index_count) / 3;
+  bytes_ += gpu_bytes(mesh);
+  triangles_ += static_cast<std::size_t>(mesh.index_count) / 3;
+  slot = std::move(mesh);
+}
+
+}  // namespace strielad::render

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: Apache-2.0
+// The GPU copies of the meshes a view shows: one vertex array, vertex buffer and index
+// buffer per node, kept in step with view::ProgressiveMeshes (uploaded when a node's
+// mesh changed, freed when the node left the cut or shows nothing).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+
+#include "render/gl_handles.h"
+#include "view/progressive_meshes.h"
+
+namespace strielad::render {
+
+struct GpuMesh {
+  std::shared_ptr<const view::NodeGeometry> source;  // what was uploaded
+  GlVertexArray vertex_array;
+  GlBuffer vertices;
+  GlBuffer indices;
+  GLsizei index_count = 0;
+  std::array<float, 3> center{};  // of the vertices' bounding box (world km, exaggeration 1)
+};
+
+class GpuMeshes {
+ public:
+  // Uploads changed meshes and frees those no longer shown. At most `max_upload_bytes`
+  // are uploaded per call (at least one mesh), so a burst of results spreads over
+  // frames; until a node's new mesh is uploaded its previous one stays drawn.
+  // Returns the bytes uploaded.
+  std::size_t sync(const view::ProgressiveMeshes& meshes, std::size_t max_upload_bytes);
+  void clear() { meshes_.clear(); }
+
+  const std::unordered_map<NodeId, GpuMesh>& meshes() const { return meshes_; }
+  std::size_t bytes() const { return bytes_; }
+  std::size_t triangles() const { return triangles_; }
+  // Meshes whose upload was deferred by the byte budget in the last sync.
+  std::size_t deferred() const { return deferred_; }
+
+ private:
+  void upload(NodeId node, std::shared_ptr<const view::NodeGeometry> geometry);
+
+  std::unordered_map<NodeId, GpuMesh> meshes_;
+  std::uint64_t synced_version_ = ~0ull;
+  std::size_t bytes_ = 0;
+  std::size_t triangles_ = 0;
+  std::size_t deferred_ = 0;
+};
+
+}  // namespace strielad::render

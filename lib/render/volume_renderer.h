@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: Apache-2.0
+// The pseudo-volumetric renderer of strielad-view (the paper's A-buffer, issue 5):
+// 1. opaque pass: the background (later terrain) into a colour and a depth texture;
+// 2. geometry pass: every node's closed meshes, nearest node first, depth-tested
+//    against the opaque depth but not writing it; each fragment runs the user's
+//    color() and is appended to its pixel's list (an r32ui head image, a fragment pool
+//    SSBO and an atomic counter): eye depth, colour, sub-volume slot, and whether the
+//    ray enters (front face) or leaves;
+// 3. sort pass: per pixel the K = 32 nearest fragments are kept and the list relinked
+//    in depth order;
+// 4. resolve pass: one walk along each pixel's sorted list; entry
+//    and exit are paired per sub-volume (a nesting count; a leave and an enter of the
+//    same sub-volume at one node face, within a relative 1e-4 of the depth, join into
+//    one segment); each segment gets the colour of its entry and the opacity
+//    alpha(id, true km travelled inside) times the colour's opacity scale; segments are
+//    composited front to back by where they start, over the opaque pass.
+// Fragment memory is bounded: the pool starts at 4 fragments per pixel and grows, up to
+// max_fragment_bytes, when a frame needed more (that frame reports needs_redraw). At
+// the bound, fragments beyond it are counted and dropped; drawing nodes nearest first
+// makes the dropped ones mostly the farthest. Pixels with more than K fragments keep
+// the K nearest, and sub-volumes still open behind them end at the K-th.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lod/camera.h"
+#include "lod/geometry.h"
+#include "render/gl_handles.h"
+#include "render/gpu_meshes.h"
+#include "render/shader_program.h"
+
+namespace strielad::render {
+
+inline constexpr std::size_t kDefaultMaxFragmentBytes = 256ull << 20;  // 16 M fragments
+inline constexpr std::size_t kFragmentBytes = 16;
+
+struct RenderSettings {
+  std::size_t max_fragment_bytes = kDefaultMaxFragmentBytes;
+  std::array<float, 3> background_top{0.16f, 0.22f, 0.34f};
+  std::array<float, 3> background_bottom{0.55f, 0.62f, 0.70f};
+  float seam_relative = 1e-4f;
+};
+
+struct FrameInputs {
+  lod::Camera camera;                  // world frame at the current exaggeration
+  double vertical_exaggeration = 10.0;
+  lod::Vec3 sun_direction{0.3, -0.5, 0.8};  // towards the sun, world frame
+  double time_seconds = 0;             // passed to color()
+  bool mirrored = false;               // view::GeometryPlacer::mirrored()
+  // Node boxes to outline (world frame), with an RGBA colour each; empty: none.
+  std::vector<lod::WorldBox> outline_boxes;
+  std::vector<std::array<float, 4>> outline_colors;
+};
+
+struct FrameStats {
+  std::uint64_t fragments = 0;          // fragments generated (the atomic counter)
+  std::uint64_t fragment_capacity = 0;  // of the pool this frame
+  std::uint64_t dropped_fragments = 0;  // beyond the pool
+  std::uint64_t covered_pixels = 0;     // with at least one fragment
+  std::uint64_t truncated_pixels = 0;   // with more than K fragments
+  std::uint32_t max_fragments_per_pixel = 0;
+  std::size_t nodes_drawn = 0;
+  std::size_t triangles_drawn = 0;
+  double opaque_ms = 0, geometry_ms = 0, resolve_ms = 0;  // GPU time (timer queries)
+  bool needs_redraw = false;  // the pool grew: the next frame shows what this one dropped
+  double fragments_per_covered_pixel() const {
+    return covered_pixels ? static_cast<double>(fragments - dropped_fragments) / covered_pixels : 0;
+  }
+};
+
+struct ShaderUpdate {
+  bool ok = false;
+  std::string error;  // the first error, "FILE:LINE:COL: error: ..." (empty when ok)
+  int error_line = 0; // line of the user's code, 0 when unknown
+  std::vector<ShaderDiagnostic> diagnostics;
+};
+
+class VolumeRenderer {
+ public:
+  // Needs a current OpenGL 4.3+ context. Compiles the built-in programs with the
+  // default user shader. \error kUnsupported when the context lacks what the A-buffer
+  // needs; kInternal when a built-in program does not compile (a bug).
+  explicit VolumeRenderer(RenderSettings settings = {});
+
+  // Compiles `source` (the user's color() and alpha()) into both programs that use it.
+  // On failure nothing changes: the last good shader keeps running.
+  ShaderUpdate set_user_shader(const std::string& source, const std::string& name);
+  const std::string& user_shader_source() const { return user_source_; }
+  const std::string& user_shader_name() const { return user_name_; }
+
+  // The scene's sub-volume ids by slot and its attribute names (ATTR_<name> defines);
+  // recompiles the current user shader when the names change.
+  ShaderUpdate set_scene_layout(const std::vector<std::uint32_t>& slot_ids,
+                                const std::vector<std::string>& attribute_names);
+
+  GpuMeshes& meshes() { return meshes_; }
+
+  // Renders into `framebuffer` (0 = the default one) of `width` x `height` pixels.
+  FrameStats render(const FrameInputs& inputs, GLuint framebuffer, int width, int height);
+
+  // RGBA8 rows, top row first, of the framebuffer last rendered into.
+  static std::vector<std::uint8_t> read_pixels(GLuint framebuffer, int width, int height);
+
+  std::size_t fragment_capacity() const { return capacity_; }
+  const RenderSettings& settings() const { return settings_; }
+  void set_max_fragment_bytes(std::size_t bytes);
+
+ private:
+  ShaderUpdate compile_user_programs(const std::string& source, const std::string& name);
+  void ensure_targets(int width, int height);
+  void ensure_pool(std::size_t fragments);
+  void draw_outlines(const FrameInputs& inputs, const lod::Mat4& view_projection);
+
+  RenderSettings settings_;
+  std::string user_source_;
+  std::string user_name_ = "built-in clouds.glsl";
+  std::vector<std::uint32_t> slot_ids_;
+  std::vector<std::string> attribute_names_;
+
+  GlProgram geometry_program_, resolve_program_;  // with the user's code
+  GlProgram sort_program_, background_program_, line_program_;
+  GlVertexArray empty_vertex_array_;
+  GlVertexArray line_vertex_array_;
+  GlBuffer line_buffer_;
+
+  int width_ = 0, height_ = 0;
+  GlFramebuffer opaque_framebuffer_;
+  GlTexture opaque_color_, opaque_depth_;
+  GlTexture heads_, listed_;
+  GlBuffer pool_, counter_, resolve_stats_;
+  std::size_t capacity_ = 0;
+  std::array<GlQuery, 3> timers_;
+
+  GpuMeshes meshes_;
+};
+
+}  // namespace strielad::render

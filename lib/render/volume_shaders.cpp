@@ -1,0 +1,369 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "render/volume_shaders.h"
+
+#include <fmt/format.h>
+
+#include <cctype>
+
+#include "render/default_user_shader.h"  // generated from examples/shaders/clouds.glsl
+#include "view/node_geometry.h"
+
+namespace strielad::render {
+namespace {
+
+constexpr const char* kVersion = "#version 450 core\n";
+
+// The fragment record of the per-pixel lists: 16 bytes.
+constexpr const char* kFragmentRecord = R"(
+struct Fragment {
+  float depth;  // eye-space depth, km
+  uint color;   // packUnorm4x8(rgb, opacity scale / MAX_OPACITY_SCALE)
+  uint meta;    // bits 0-4: sub-volume slot; bit 5: entering (front face)
+  uint next;    // next fragment of the pixel, 0xFFFFFFFF ends the list
+};
+)";
+
+std::string glsl_identifier(const std::string& name) {
+  std::string out;
+  for (const char c : name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return out;
+}
+
+}  // namespace
+
+std::string user_prelude(const std::vector<std::string>& attribute_names) {
+  std::string s = fmt::format("#define MAX_ATTRIBUTES {}\n#define MAX_OPACITY_SCALE {:.1f}\n",
+                              view::kViewAttributeSlots, kMaxOpacityScale);
+  for (std::size_t i = 0; i < attribute_names.size() && i < view::kViewAttributeSlots; ++i) {
+    s += fmt::format("#define ATTR_{} {}\n", glsl_identifier(attribute_names[i]), i);
+  }
+  s += R"(
+uniform float u_vertical_exaggeration;
+// Height above the vertical axis' zero in metres of a world position (without the
+// vertical exaggeration; standard-atmosphere height on pressure axes).
+float height_m(vec3 position) { return position.z / u_vertical_exaggeration * 1000.0; }
+// Attribute values are NaN where the data has no value.
+bool missing(float value) { return isnan(value) || isinf(value); }
+vec4 color(int id, float attributes[MAX_ATTRIBUTES], vec3 normal, vec3 sun,
+           vec3 position, vec3 view, float time);
+float alpha(int id, float distance);
+)";
+  return s;
+}
+
+std::string geometry_vertex_source() {
+  return std::string(kVersion) + R"(
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in float a_slot;
+layout(location = 3) in vec4 a_attributes0;
+layout(location = 4) in vec4 a_attributes1;
+uniform mat4 u_view_projection;
+uniform mat4 u_view;
+uniform float u_vertical_exaggeration;
+out vec3 v_world;
+out vec3 v_normal;
+out float v_eye_depth;
+flat out int v_slot;
+out vec4 v_attributes0;
+out vec4 v_attributes1;
+void main() {
+  vec3 world = vec3(a_position.xy, a_position.z * u_vertical_exaggeration);
+  v_world = world;
+  v_normal = vec3(a_normal.xy, a_normal.z / u_vertical_exaggeration);
+  v_eye_depth = -(u_view * vec4(world, 1.0)).z;
+  v_slot = int(a_slot + 0.5);
+  v_attributes0 = a_attributes0;
+  v_attributes1 = a_attributes1;
+  gl_Position = u_view_projection * vec4(world, 1.0);
+}
+)";
+}
+
+std::string geometry_fragment_source(const std::string& prelude) {
+  return std::string(kVersion) + "layout(early_fragment_tests) in;\n" + kFragmentRecord +
+         R"(
+layout(binding = 0, r32ui) uniform coherent uimage2D u_heads;
+layout(binding = 0, offset = 0) uniform atomic_uint u_fragment_counter;
+layout(std430, binding = 1) buffer FragmentPool { Fragment fragments[]; };
+uniform uint u_capacity;
+uniform vec3 u_eye;
+uniform vec3 u_sun;
+uniform float u_time;
+uniform bool u_mirrored;
+uniform int u_slot_ids[32];
+in vec3 v_world;
+in vec3 v_normal;
+in float v_eye_depth;
+flat in int v_slot;
+in vec4 v_attributes0;
+in vec4 v_attributes1;
+)" + prelude + R"(
+void main() {
+  float attributes[MAX_ATTRIBUTES] = float[](v_attributes0.x, v_attributes0.y, v_attributes0.z,
+      v_attributes0.w, v_attributes1.x, v_attributes1.y, v_attributes1.z, v_attributes1.w);
+  vec3 n = normalize(v_normal);
+  // The outward normal: on a back face (the ray leaves) it points away from the eye.
+  vec4 c = color(u_slot_ids[v_slot], attributes, n, u_sun, v_world,
+                 normalize(u_eye - v_world), u_time);
+  if (any(isnan(c)) || any(isinf(c))) c = vec4(1.0, 0.0, 1.0, 1.0);  // shows a broken colour
+  c = vec4(clamp(c.rgb, 0.0, 1.0), clamp(c.a, 0.0, MAX_OPACITY_SCALE) / MAX_OPACITY_SCALE);
+  uint index = atomicCounterIncrement(u_fragment_counter);
+  if (index >= u_capacity) return;  // the pool is full: counted, not stored
+  bool entering = gl_FrontFacing != u_mirrored;
+  fragments[index].depth = v_eye_depth;
+  fragments[index].color = packUnorm4x8(c);
+  fragments[index].meta = uint(v_slot) | (entering ? 32u : 0u);
+  fragments[index].next = imageAtomicExchange(u_heads, ivec2(gl_FragCoord.xy), index);
+}
+)";
+}
+
+std::string resolve_vertex_source() {
+  return std::string(kVersion) + R"(
+void main() {
+  // One triangle covering the viewport.
+  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+}
+)";
+}
+
+std::string sort_fragment_source() {
+  return std::string(kVersion) + fmt::format("#define K {}\n", kMaxLayersPerPixel) +
+         kFragmentRecord + R"(
+layout(binding = 0, r32ui) uniform coherent uimage2D u_heads;
+layout(binding = 1, r32ui) uniform writeonly uimage2D u_listed;
+layout(std430, binding = 1) buffer FragmentPool { Fragment fragments[]; };
+layout(std430, binding = 2) buffer ResolveStats {
+  uint covered_pixels;    // pixels with at least one fragment
+  uint truncated_pixels;  // pixels with more than K fragments (the farthest dropped)
+  uint max_list;          // the longest list
+  uint listed_total;      // fragments in all lists
+};
+void main() {
+  ivec2 px = ivec2(gl_FragCoord.xy);
+  uint head = imageLoad(u_heads, px).r;
+  if (head == 0xFFFFFFFFu) return;
+  // The K nearest fragments by depth (insertion sort; farther ones are dropped), then
+  // the list is relinked in that order so the resolve walks it front to back.
+  float depth[K];
+  uint index[K];
+  int n = 0;
+  uint listed = 0u;
+  for (uint i = head; i != 0xFFFFFFFFu; i = fragments[i].next) {
+    ++listed;
+    float d = fragments[i].depth;
+    if (n == K && d >= depth[K - 1]) continue;
+    int j = n < K ? n++ : K - 1;
+    while (j > 0 && depth[j - 1] > d) {
+      depth[j] = depth[j - 1];
+      index[j] = index[j - 1];
+      --j;
+    }
+    depth[j] = d;
+    index[j] = i;
+  }
+  for (int f = 0; f < n; ++f) {
+    fragments[index[f]].next = f + 1 < n ? index[f + 1] : 0xFFFFFFFFu;
+  }
+  imageStore(u_heads, px, uvec4(index[0]));
+  imageStore(u_listed, px, uvec4(listed));
+  atomicAdd(covered_pixels, 1u);
+  atomicAdd(listed_total, listed);
+  atomicMax(max_list, listed);
+  if (listed > uint(K)) atomicAdd(truncated_pixels, 1u);
+}
+)";
+}
+
+std::string resolve_fragment_source(const std::string& prelude) {
+  return std::string(kVersion) + fmt::format("#define K {}\n", kMaxLayersPerPixel) +
+         kFragmentRecord + R"(
+layout(binding = 0, r32ui) uniform readonly uimage2D u_heads;
+layout(binding = 1, r32ui) uniform readonly uimage2D u_listed;
+layout(std430, binding = 1) readonly buffer FragmentPool { Fragment fragments[]; };
+layout(binding = 0) uniform sampler2D u_opaque_color;
+layout(binding = 1) uniform sampler2D u_opaque_depth;
+uniform mat4 u_inverse_projection;
+uniform mat4 u_inverse_view;
+uniform float u_near;
+uniform float u_far;
+uniform int u_slot_ids[32];
+uniform float u_seam_relative;
+uniform float u_time;
+out vec4 o_color;
+)" + prelude + R"(
+float linear_depth(float d) {
+  float z = d * 2.0 - 1.0;
+  return 2.0 * u_near * u_far / (u_far + u_near - z * (u_far - u_near));
+}
+
+void main() {
+  ivec2 px = ivec2(gl_FragCoord.xy);
+  vec4 background = texelFetch(u_opaque_color, px, 0);
+  uint head = imageLoad(u_heads, px).r;
+  if (head == 0xFFFFFFFFu) {
+    o_color = vec4(background.rgb, 1.0);
+    return;
+  }
+  uint listed = imageLoad(u_listed, px).r;
+
+  // Eye depth to true distance along this pixel's ray (without vertical exaggeration).
+  vec2 ndc = (vec2(px) + 0.5) / vec2(textureSize(u_opaque_color, 0)) * 2.0 - 1.0;
+  vec4 eye = u_inverse_projection * vec4(ndc, 1.0, 1.0);
+  vec3 ray_eye = normalize(eye.xyz / eye.w);
+  vec3 ray_world = mat3(u_inverse_view) * ray_eye;
+  float to_true_km = length(vec3(ray_world.xy, ray_world.z / u_vertical_exaggeration)) /
+                     max(-ray_eye.z, 1e-6);
+
+  // One walk front to back (the sort pass relinked the list in depth order). Per
+  // sub-volume slot: a nesting count, where its current segment began and its colour,
+  // and where it last left: it may go on through a node face (a leave and an enter
+  // within u_seam_relative of the depth join into one segment). A segment is closed
+  // when its slot's next fragment shows it did not go on, or at the end of the list.
+  int inside[32];
+  float entry_depth[32];
+  uint entry_color[32];
+  float exit_depth[32];
+  for (int s = 0; s < 32; ++s) {
+    inside[s] = 0;
+    entry_depth[s] = 0.0;
+    entry_color[s] = 0u;
+    exit_depth[s] = 0.0;
+  }
+  uint pending = 0u;
+  float seg_start[K];
+  uint seg_color[K];
+  float seg_length[K];
+  int seg_slot[K];
+  int segments = 0;
+  float last = 0.0;
+  for (uint i = head; i != 0xFFFFFFFFu; i = fragments[i].next) {
+    float d = fragments[i].depth;
+    uint meta = fragments[i].meta;
+    last = d;
+    int s = int(meta & 31u);
+    uint bit = 1u << uint(s);
+    bool entering = (meta & 32u) != 0u;
+    bool is_pending = (pending & bit) != 0u;
+    bool at_seam = is_pending && d - exit_depth[s] <= u_seam_relative * d;
+    int count = inside[s];
+    if (count == 0 && is_pending && !at_seam) {
+      if (segments < K) {
+        seg_start[segments] = entry_depth[s];
+        seg_color[segments] = entry_color[s];
+        seg_length[segments] = exit_depth[s] - entry_depth[s];
+        seg_slot[segments] = s;
+        ++segments;
+      }
+      pending &= ~bit;
+      is_pending = false;
+    }
+    if (entering) {
+      if (count == 0 && !is_pending) {
+        entry_depth[s] = d;
+        entry_color[s] = fragments[i].color;
+      }
+      pending &= ~bit;  // leaves one node, enters the next: one segment
+      inside[s] = count + 1;
+    } else if (count > 0) {
+      inside[s] = count - 1;
+      if (count == 1) {
+        exit_depth[s] = d;
+        pending |= bit;
+      }
+    } else if (!at_seam) {
+      // Leaving without having entered: the eye is inside (from the near plane).
+      entry_depth[s] = u_near;
+      entry_color[s] = fragments[i].color;
+      exit_depth[s] = d;
+      pending |= bit;
+    }  // else: a second exit at a node face
+  }
+  // What is still open ends behind the last kept fragment (list truncated) or at the
+  // opaque scene (its exit is hidden behind it, or beyond the far plane).
+  float end = listed > uint(K) ? last : linear_depth(texelFetch(u_opaque_depth, px, 0).r);
+  for (int s = 0; s < 32; ++s) {
+    bool closed = (pending & (1u << uint(s))) != 0u;
+    if ((closed || inside[s] > 0) && segments < K) {
+      seg_start[segments] = entry_depth[s];
+      seg_color[segments] = entry_color[s];
+      seg_length[segments] = (closed ? exit_depth[s] : max(end, entry_depth[s])) - entry_depth[s];
+      seg_slot[segments] = s;
+      ++segments;
+    }
+  }
+  // Front to back by where each segment begins.
+  for (int i = 1; i < segments; ++i) {
+    float start = seg_start[i];
+    uint c = seg_color[i];
+    float len = seg_length[i];
+    int slot = seg_slot[i];
+    int j = i;
+    while (j > 0 && seg_start[j - 1] > start) {
+      seg_start[j] = seg_start[j - 1];
+      seg_color[j] = seg_color[j - 1];
+      seg_length[j] = seg_length[j - 1];
+      seg_slot[j] = seg_slot[j - 1];
+      --j;
+    }
+    seg_start[j] = start;
+    seg_color[j] = c;
+    seg_length[j] = len;
+    seg_slot[j] = slot;
+  }
+  vec3 rgb = vec3(0.0);
+  float a = 0.0;
+  for (int i = 0; i < segments && a < 0.999; ++i) {
+    vec4 c = unpackUnorm4x8(seg_color[i]);
+    float o = alpha(u_slot_ids[seg_slot[i]], max(seg_length[i], 0.0) * to_true_km);
+    o = isnan(o) ? 1.0 : clamp(o * c.a * MAX_OPACITY_SCALE, 0.0, 1.0);
+    float w = (1.0 - a) * o;
+    rgb += w * c.rgb;
+    a += w;
+  }
+  o_color = vec4(rgb + (1.0 - a) * background.rgb, 1.0);
+}
+)";
+}
+
+std::string background_fragment_source() {
+  return std::string(kVersion) + R"(
+uniform vec3 u_top;
+uniform vec3 u_bottom;
+uniform float u_height;
+out vec4 o_color;
+void main() {
+  o_color = vec4(mix(u_bottom, u_top, gl_FragCoord.y / u_height), 1.0);
+}
+)";
+}
+
+std::string line_vertex_source() {
+  return std::string(kVersion) + R"(
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec4 a_color;
+uniform mat4 u_view_projection;
+out vec4 v_color;
+void main() {
+  v_color = a_color;
+  gl_Position = u_view_projection * vec4(a_position, 1.0);
+}
+)";
+}
+
+std::string line_fragment_source() {
+  return std::string(kVersion) + R"(
+in vec4 v_color;
+out vec4 o_color;
+void main() { o_color = v_color; }
+)";
+}
+
+const std::string& default_user_shader() {
+  static const std::string source(kDefaultUserShader);
+  return source;
+}
+
+}  // namespace strielad::render

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "view/node_geometry.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+
+namespace strielad::view {
+namespace {
+
+// d world / d axis along one axis at `value`, by a central difference scaled to the
+// value (the maps are smooth and monotonic; linear ones give their exact slope).
+double axis_slope(const lod::WorldFrame& frame, int axis, double value) {
+  const double h = std::max(std::abs(value), 1.0) * 1e-6;
+  return (frame.axis_to_world(axis, value + h) - frame.axis_to_world(axis, value - h)) /
+         (2 * h);
+}
+
+}  // namespace
+
+GeometryPlacer::GeometryPlacer(const format::Manifest& manifest)
+    : frame_(manifest, lod::WorldFrameOptions{.vertical_exaggeration = 1.0}) {
+  int negative = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto& domain = frame_.domain();
+    const double mid = frame_.world_to_axis(axis, 0.5 * (domain.lo[axis] + domain.hi[axis]));
+    if (axis_slope(frame_, axis, mid) < 0) ++negative;
+  }
+  mirrored_ = (negative % 2) == 1;
+}
+
+void GeometryPlacer::append_mesh(const Mesh& mesh, std::uint32_t slot, NodeGeometry& out) const {
+  const std::size_t first = out.vertex_count();
+  const std::size_t n = mesh.vertex_count();
+  if (first + n > std::numeric_limits<std::uint32_t>::max()) {
+    throw make_error(ErrorCode::kInvalidInput, "node {}: more than 2^32 vertices", out.node);
+  }
+  const std::size_t attributes = std::min(mesh.attributes.size(), kViewAttributeSlots);
+  out.vertices.resize((first + n) * kVertexFloats);
+  for (std::size_t v = 0; v < n; ++v) {
+    float* dst = out.vertices.data() + (first + v) * kVertexFloats;
+    const auto& p = mesh.positions[v];
+    lod::Vec3 normal{0, 0, 0};
+    for (int axis = 0; axis < 3; ++axis) {
+      const double world = frame_.axis_to_world(axis, p[axis]);
+      if (!std::isfinite(world)) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "node {}: sub-volume {}: vertex {} has no world position", out.node,
+                         mesh.subvolume_id, v);
+      }
+      dst[kVertexPosition + axis] = static_cast<float>(world);
+      // Inverse transpose of a diagonal Jacobian: divide by the slope.
+      normal[axis] = mesh.normals[v][axis] / axis_slope(frame_, axis, p[axis]);
+    }
+    const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] +
+                                    normal[2] * normal[2]);
+    for (int axis = 0; axis < 3; ++axis) {
+      dst[kVertexNormal + axis] = length > 0 ? static_cast<float>(normal[axis] / length)
+                                             : (axis == 2 ? 1.0f : 0.0f);
+    }
+    dst[kVertexSlot] = static_cast<float>(slot);
+    for (std::size_t a = 0; a < kViewAttributeSlots; ++a) {
+      dst[kVertexAttributes + a] = a < attributes ? mesh.attributes[a][v]
+                                                  : std::numeric_limits<float>::quiet_NaN();
+    }
+  }
+  out.indices.reserve(out.indices.size() + mesh.triangle_count() * 3);
+  for (const auto& t : mesh.triangles) {
+    for (const auto index : t) {
+      if (index >= n) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "node {}: sub-volume {}: index {} >= vertex count {}", out.node,
+                         mesh.subvolume_id, index, n);
+      }
+      out.indices.push_back(static_cast<std::uint32_t>(first + index));
+    }
+  }
+}
+
+}  // namespace strielad::view

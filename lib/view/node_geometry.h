@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: Apache-2.0
+// The meshes of one octree node as the viewer draws them: every sub-volume's mesh of a
+// NodeResult placed in the world frame (lod/world_frame.h, kilometres) and packed into
+// one interleaved vertex array and one index array, ready to upload as they are.
+//
+// Positions are world kilometres at vertical exaggeration 1 (z is the true height in
+// km); the renderer applies the exaggeration as a scale of z, so changing it needs no
+// new geometry. Normals are transformed with the inverse transpose of the axis-to-world
+// Jacobian, so they stay outward and perpendicular to the surface in the world frame.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "lod/world_frame.h"
+#include "octree/octree_layout.h"
+#include "protocol/messages.h"
+
+namespace strielad::view {
+
+// Per-vertex attribute values a colour function sees (the scene's first eight
+// attributes; formats/scene.md allows more, which the viewer does not pass on).
+inline constexpr std::size_t kViewAttributeSlots = 8;
+// Sub-volumes the viewer tells apart (the A-buffer keeps a 5-bit slot per fragment).
+inline constexpr std::size_t kMaxViewSubVolumes = 32;
+
+// Interleaved float layout of one vertex.
+inline constexpr std::size_t kVertexPosition = 0;   // 3 floats, world km (exaggeration 1)
+inline constexpr std::size_t kVertexNormal = 3;     // 3 floats, unit, world frame
+inline constexpr std::size_t kVertexSlot = 6;       // 1 float: the sub-volume's slot
+inline constexpr std::size_t kVertexAttributes = 7; // kViewAttributeSlots floats, NaN = missing
+inline constexpr std::size_t kVertexFloats = kVertexAttributes + kViewAttributeSlots;
+
+struct NodeGeometry {
+  NodeId node = 0;
+  std::vector<float> vertices;          // kVertexFloats per vertex
+  std::vector<std::uint32_t> indices;   // triangles, counter-clockwise seen from outside
+                                        // in axis coordinates (see mirrored)
+  std::size_t vertex_count() const { return vertices.size() / kVertexFloats; }
+  std::size_t triangle_count() const { return indices.size() / 3; }
+  bool empty() const { return indices.empty(); }
+};
+
+// Maps axis coordinates of a store to the viewer's world frame at exaggeration 1.
+class GeometryPlacer {
+ public:
+  // \error as lod::WorldFrame for axes without a world position.
+  explicit GeometryPlacer(const format::Manifest& manifest);
+
+  // The node's meshes packed. `slot_of_id(id)` gives the slot of a sub-volume id (the
+  // position of the sub-volume in the scene); a mesh whose id has no slot is left out.
+  // \error kInvalidInput naming the node when a mesh has a non-finite position or an
+  // index out of range (the decoder checks both; this guards the upload).
+  template <typename SlotOf>
+  std::shared_ptr<const NodeGeometry> place(const protocol::NodeResult& result,
+                                            SlotOf slot_of_id) const;
+
+  // True when the axis-to-world map reverses orientation (an odd number of decreasing
+  // axis maps, e.g. a pressure axis): counter-clockwise triangles seen from outside in
+  // axis coordinates are then clockwise in the world, and the renderer flips its
+  // front-face rule.
+  bool mirrored() const { return mirrored_; }
+  const lod::WorldFrame& frame() const { return frame_; }
+
+ private:
+  void append_mesh(const Mesh& mesh, std::uint32_t slot, NodeGeometry& out) const;
+
+  lod::WorldFrame frame_;
+  bool mirrored_ = false;
+};
+
+template <typename SlotOf>
+std::shared_ptr<const NodeGeometry> GeometryPlacer::place(const protocol::NodeResult& result,
+                                                          SlotOf slot_of_id) const {
+  auto geometry = std::make_shared<NodeGeometry>();
+  geometry->node = result.node;
+  for (const auto& sub : result.subvolumes) {
+    if (sub.outcome != NodeOutcome::kMesh || sub.mesh.empty()) continue;
+    const int slot = slot_of_id(sub.subvolume_id);
+    if (slot < 0) continue;
+    append_mesh(sub.mesh, static_cast<std::uint32_t>(slot), *geometry);
+  }
+  return geometry;
+}
+
+}  // namespace strielad::view
