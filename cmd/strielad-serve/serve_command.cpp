@@ -3,19 +3,17 @@
 #include <spdlog/spdlog.h>
 
 #include <csignal>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <thread>
 
 #include <nlohmann/json.hpp>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "commands.h"
 #include "core/error.h"
+#include "net/token_file.h"
 #include "serve/mpi_executor.h"
 #include "serve/mpi_runtime.h"
 #include "serve/mpi_worker.h"
@@ -36,25 +34,6 @@ struct ServeArgs {
   std::uint32_t max_nodes_per_update = protocol::kMaxNodesPerUpdate;
   bool json = false;
 };
-
-std::string read_token(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw make_error(ErrorCode::kNotFound, "{}: cannot read the token file", path);
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0 && (st.st_mode & (S_IRWXG | S_IRWXO))) {
-    spdlog::warn("{}: token file is readable by other users (chmod 600 it)", path);
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  std::string token = text.str();
-  while (!token.empty() && (token.back() == '\n' || token.back() == '\r')) token.pop_back();
-  if (token.empty()) throw make_error(ErrorCode::kInvalidInput, "{}: the token file is empty", path);
-  if (token.size() > protocol::kMaxTokenBytes) {
-    throw make_error(ErrorCode::kInvalidInput, "{}: token longer than {} bytes", path,
-                     protocol::kMaxTokenBytes);
-  }
-  return token;
-}
 
 // SIGINT and SIGTERM stop the server cleanly: they are blocked in every thread and
 // taken by one watcher thread.
@@ -142,7 +121,7 @@ int run_serve(const ServeArgs& args) {
   serve::ServerConfig config;
   config.root = args.root;
   config.listen = net::parse_endpoint(args.listen, "--listen");
-  if (!args.token_file.empty()) config.token = read_token(args.token_file);
+  if (!args.token_file.empty()) config.token = net::read_token_file(args.token_file);
   config.threads = args.threads;
   if (!(args.cache_mib >= 0)) {
     throw make_error(ErrorCode::kInvalidArgument, "--cache-mib must be >= 0, not {}", args.cache_mib);

@@ -6,6 +6,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <limits>
 #include <atomic>
 #include <chrono>
 
@@ -345,8 +346,14 @@ json finalize_store(const std::filesystem::path& dir) {
   json per_variable = json::object();
   for (std::uint32_t v = 0; v < store->variable_count(); ++v) {
     std::uint64_t counts[3] = {0, 0, 0}, chunk_bytes = 0;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::uint32_t s = 0; s < store->step_count(); ++s) {
       const auto entries = store->index(s, v);
+      // The root's exact range covers the whole step.
+      if (const auto& root = entries[layout.root()]; root.has_valid_data()) {
+        lo = std::min(lo, root.min);
+        hi = std::max(hi, root.max);
+      }
       for (NodeId n = 0; n < entries.size(); ++n) {
         const auto& e = entries[n];
         ++counts[static_cast<int>(e.kind)];
@@ -361,6 +368,10 @@ json finalize_store(const std::filesystem::path& dir) {
         {"chunk_bytes", chunk_bytes},
         {"ratio", chunk_bytes ? double(raw) / double(chunk_bytes) : 0.0},
         {"bricks", {{"empty", counts[0]}, {"constant", counts[1]}, {"data", counts[2]}}}};
+    // The exact range of the valid data over all steps (null when nothing is valid):
+    // what a viewer offers as the limits' range without reading the index.
+    per_variable[m.variables[v].name]["min"] = lo <= hi ? json(lo) : json(nullptr);
+    per_variable[m.variables[v].name]["max"] = lo <= hi ? json(hi) : json(nullptr);
   }
   for (std::uint32_t s = 0; s < store->step_count(); ++s) {
     const auto path = store->step_path(s);

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: Apache-2.0
+#include <memory>
+
+#include "cli/tool_main.h"
+#include "viewer_args.h"
+
+int main(int argc, char** argv) {
+  using namespace strielad;
+  const cli::ToolSpec spec{
+      "strielad-view",
+      "Explore a STRIELAD store (STORE, served in-process) or a strielad-serve (--connect): "
+      "level-of-detail cut, A-buffer pseudo-volumes, live GLSL colour functions",
+      [](CLI::App& app, cli::Action& action) {
+        auto args = std::make_shared<view_cmd::ViewerArgs>();
+        app.add_option("store", args->store, "A local store directory, served in-process");
+        app.add_option("--connect", args->connect, "HOST:PORT of a running strielad-serve");
+        app.add_option("--dataset", args->dataset,
+                       "With --connect: the store's name under the server's --root");
+        app.add_option("--token-file", args->token_file,
+                       "With --connect: file holding the server's shared secret");
+        app.add_option("--scene", args->scene_file,
+                       "Scene JSON (formats/scene.md); default: cloud water, cloud ice and rain "
+                       "where the store has clw, cli, qr");
+        app.add_option("--time", args->time, "Time step to show first (overrides the scene's)");
+        app.add_option("--shader", args->shader_file,
+                       "GLSL file with color() and alpha() (README \"User shaders\"); reloaded "
+                       "when it changes. Default: examples/shaders/clouds.glsl, built in");
+        app.add_option("--exaggeration", args->exaggeration,
+                       "Vertical exaggeration of the world frame (default 10)");
+        app.add_option("--lod-threshold", args->lod_threshold_sr,
+                       "Split a node covering more than this solid angle, sr (default 0.01)");
+        app.add_option("--max-nodes", args->max_nodes, "Most nodes in the cut (default 4096)");
+        app.add_option("--max-fragment-mib", args->max_fragment_mib,
+                       "A-buffer fragment memory bound, MiB (default 256: 16 M fragments)");
+        app.add_flag("--boxes", args->boxes, "Outline the cut's node boxes");
+        app.add_option("--size", args->size, "WIDTHxHEIGHT of the window or image (1280x720)");
+        app.add_option("--threads", args->threads,
+                       "In-process server: extraction workers (default: one per core)");
+        app.add_option("--cache-mib", args->cache_mib,
+                       "In-process server: brick cache budget, MiB (default 1024)");
+        app.add_flag("--offscreen", args->offscreen,
+                     "Render without a window (EGL; no X server needed) once the cut has fully "
+                     "arrived, write --out and exit");
+        app.add_option("--camera", args->camera_file,
+                       "Camera path JSON (formats/camera-path.md): one keyframe for one image, "
+                       "several for numbered frames at --fps; default: the home view");
+        app.add_option("--fps", args->fps, "Frames per second of a camera path (default 30)");
+        app.add_option("--out", args->out,
+                       "Image file (PNG); for a camera path a pattern with {} for the frame "
+                       "number, e.g. frames/f{:04}.png");
+        app.add_flag("--json", args->json, "Offscreen: one JSON line of statistics per frame");
+        app.add_option("--frames", args->frames,
+                       "Window: close after this many frames (for smoke tests; 0 = never)");
+        app.add_option("--screenshot", args->screenshot,
+                       "Window: save the last frame, panel included, as PNG on exit");
+        app.callback([args, &action] {
+          if (args->store.empty() == args->connect.empty()) {
+            throw CLI::ValidationError("give exactly one of STORE or --connect HOST:PORT");
+          }
+          if (!args->connect.empty() && args->dataset.empty()) {
+            throw CLI::ValidationError("--connect needs --dataset NAME");
+          }
+          if (args->offscreen && args->out.empty()) {
+            throw CLI::ValidationError("--offscreen needs --out FILE.png");
+          }
+          action = [args] {
+            return args->offscreen ? view_cmd::run_offscreen(*args) : view_cmd::run_window(*args);
+          };
+        });
+      }};
+  return cli::run_tool(spec, argc, argv);
+}

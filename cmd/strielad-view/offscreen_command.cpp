@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: Apache-2.0
+// `strielad-view --offscreen`: images of complete views without a window (EGL), for
+// batch figures, tests and the view benchmark.
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "lod/camera_path.h"
+#include "render/complete_frame.h"
+#include "render/headless_context.h"
+#include "view/default_scene.h"
+#include "view/orbit_camera.h"
+#include "view/view_controller.h"
+#include "viewer_args.h"
+#include "viewer_session.h"
+
+namespace strielad::view_cmd {
+namespace {
+
+std::filesystem::path frame_path(const std::string& pattern, std::size_t frame, bool many) {
+  if (pattern.find('{') != std::string::npos) {
+    try {
+      return fmt::format(fmt::runtime(pattern), frame);
+    } catch (const fmt::format_error& e) {
+      throw make_error(ErrorCode::kInvalidArgument, "--out {}: not a valid pattern: {}", pattern,
+                       e.what());
+    }
+  }
+  if (!many) return pattern;
+  // frames.png -> frames_0000.png
+  std::filesystem::path p(pattern);
+  return p.parent_path() / fmt::format("{}_{:04}{}", p.stem().string(), frame, p.extension().string());
+}
+
+}  // namespace
+
+int run_offscreen(const ViewerArgs& args) {
+  const auto [width, height] = parse_size(args.size);
+  auto context = render::HeadlessContext::create();
+  spdlog::info("headless {}", context->description());
+  ViewerSession session = open_session(args);
+
+  render::RenderSettings settings;
+  settings.max_fragment_bytes = static_cast<std::size_t>(args.max_fragment_mib * 1048576.0);
+  render::VolumeRenderer renderer(settings);
+  if (!session.shader_source.empty()) {
+    const auto update = renderer.set_user_shader(session.shader_source, session.shader_name);
+    if (!update.ok) throw make_error(ErrorCode::kInvalidInput, "{}", update.error);
+  }
+  view::ViewOptions options;
+  options.vertical_exaggeration = args.exaggeration;
+  options.lod.split_solid_angle_sr = args.lod_threshold_sr;
+  options.lod.max_nodes = args.max_nodes;
+  view::ViewController controller(*session.link, session.scene, options);
+  std::vector<std::uint32_t> ids;
+  for (const auto& s : session.scene.subvolumes) ids.push_back(s.id);
+  if (const auto update = renderer.set_scene_layout(ids, session.scene.attributes); !update.ok) {
+    throw make_error(ErrorCode::kInvalidInput, "{}", update.error);
+  }
+  const double aspect = double(width) / double(height);
+
+  // The cameras: a path's samples at --fps, one keyframe, or the home view.
+  std::vector<lod::Camera> cameras;
+  if (!args.camera_file.empty()) {
+    const auto path = lod::load_camera_path_file(args.camera_file);
+    const lod::WorldCameraPath world(path, controller.frame(), args.camera_file);
+    if (!(args.fps > 0) || !std::isfinite(args.fps)) {
+      throw make_error(ErrorCode::kInvalidArgument, "--fps {}: must be > 0", args.fps);
+    }
+    const double span = world.end_time() - world.start_time();
+    const auto frames = static_cast<std::size_t>(std::floor(span * args.fps + 1e-9)) + 1;
+    for (std::size_t i = 0; i < frames; ++i) {
+      const auto pose = world.sample(world.start_time() + double(i) / args.fps);
+      cameras.push_back(lod::pose_camera(pose, aspect, controller.frame().domain()));
+    }
+  } else {
+    cameras.push_back(view::OrbitCamera(controller.frame().domain()).camera(aspect));
+  }
+
+  render::OffscreenTarget target(width, height);
+  const double time_s = view::seconds_since_first_step(controller.link().manifest(),
+                                                       controller.time_step());
+  for (std::size_t i = 0; i < cameras.size(); ++i) {
+    auto inputs = render::frame_inputs(controller, cameras[i]);
+    inputs.time_seconds = time_s;
+    if (args.boxes) {
+      for (const auto& n : controller.cut().nodes()) {
+        inputs.outline_boxes.push_back(controller.cut().box(n.node));
+      }
+    }
+    auto frame = render::render_complete_frame(controller, renderer, target, inputs);
+    if (args.boxes) {
+      // The outlines of the cut that was complete (the update may have refined it).
+      inputs.outline_boxes.clear();
+      for (const auto& n : controller.cut().nodes()) {
+        inputs.outline_boxes.push_back(controller.cut().box(n.node));
+      }
+      frame.stats = renderer.render(inputs, target.framebuffer(), width, height);
+      frame.image.pixels = render::VolumeRenderer::read_pixels(target.framebuffer(), width, height);
+    }
+    const auto out = frame_path(args.out, i, cameras.size() > 1);
+    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+    render::write_png(out, frame.image);
+    const auto& s = frame.stats;
+    if (args.json) {
+      nlohmann::json line{{"frame", i},
+                          {"file", out.string()},
+                          {"cut_nodes", frame.cut_nodes},
+                          {"nodes_with_mesh", frame.nodes_with_mesh},
+                          {"triangles", s.triangles_drawn},
+                          {"wait_ms", frame.wait_ms},
+                          {"render_ms", frame.render_ms},
+                          {"geometry_ms", s.geometry_ms},
+                          {"resolve_ms", s.resolve_ms},
+                          {"fragments", s.fragments},
+                          {"dropped_fragments", s.dropped_fragments},
+                          {"covered_pixels", s.covered_pixels},
+                          {"truncated_pixels", s.truncated_pixels},
+                          {"max_fragments_per_pixel", s.max_fragments_per_pixel},
+                          {"failed_nodes", controller.failed_nodes()}};
+      std::cout << line.dump() << std::endl;
+    } else {
+      spdlog::info("{}: {} nodes ({} with meshes, {} triangles), complete after {:.0f} ms, "
+                   "rendered in {:.0f} ms, {:.1f} fragments per covered pixel",
+                   out.string(), frame.cut_nodes, frame.nodes_with_mesh, s.triangles_drawn,
+                   frame.wait_ms, frame.render_ms, s.fragments_per_covered_pixel());
+    }
+  }
+  if (controller.failed_nodes() > 0) {
+    spdlog::warn("{} nodes could not be extracted: {}", controller.failed_nodes(),
+                 controller.last_error().value_or(""));
+  }
+  return 0;
+}
+
+}  // namespace strielad::view_cmd

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: Apache-2.0
+// The flags of strielad-view (README "Viewing a store").
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "lod/lod_cut.h"
+#include "lod/world_frame.h"
+#include "render/volume_renderer.h"
+
+namespace strielad::view_cmd {
+
+struct ViewerArgs {
+  std::string store;        // a local store: served in-process
+  std::string connect;      // HOST:PORT of a strielad-serve
+  std::string dataset;      // with --connect: the store's name under the server's root
+  std::string token_file;   // with --connect
+  std::string scene_file;   // formats/scene.md; default: view::default_scene
+  std::optional<std::uint32_t> time;
+  std::string shader_file;  // the user's color()/alpha(); default: the built-in clouds
+  double exaggeration = lod::kDefaultVerticalExaggeration;
+  double lod_threshold_sr = lod::kDefaultSplitSolidAngleSr;
+  std::size_t max_nodes = lod::kDefaultMaxNodes;
+  double max_fragment_mib = render::kDefaultMaxFragmentBytes / double(1 << 20);
+  bool boxes = false;
+  std::string size = "1280x720";
+  unsigned threads = 0;
+  double cache_mib = 1024;
+  // Headless.
+  bool offscreen = false;
+  std::string camera_file;  // formats/camera-path.md: one keyframe, or a path
+  double fps = 30;
+  std::string out;          // frame.png, or a pattern with {} for the frame number
+  bool json = false;
+  // Window: stop after this many frames (0 = run until closed) and save the last one,
+  // panel included (for smoke tests and README pictures).
+  std::size_t frames = 0;
+  std::string screenshot;
+};
+
+int run_window(const ViewerArgs& args);
+int run_offscreen(const ViewerArgs& args);
+
+}  // namespace strielad::view_cmd

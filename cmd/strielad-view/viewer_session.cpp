@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "viewer_session.h"
+
+#include <spdlog/spdlog.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "core/error.h"
+#include "net/socket.h"
+#include "net/token_file.h"
+#include "view/default_scene.h"
+#include "view/local_server.h"
+
+namespace strielad::view_cmd {
+
+std::pair<int, int> parse_size(const std::string& text) {
+  static const std::regex pattern(R"((\d{1,5})x(\d{1,5}))");
+  std::smatch m;
+  if (!std::regex_match(text, m, pattern)) {
+    throw make_error(ErrorCode::kInvalidArgument, "--size {}: expected WIDTHxHEIGHT, e.g. 1280x720",
+                     text);
+  }
+  const int w = std::stoi(m[1]), h = std::stoi(m[2]);
+  if (w < 16 || h < 16 || w > 16384 || h > 16384) {
+    throw make_error(ErrorCode::kInvalidArgument, "--size {}: each side must be 16 to 16384", text);
+  }
+  return {w, h};
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw make_error(ErrorCode::kNotFound, "{}: cannot read the file", path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw make_error(ErrorCode::kIo, "{}: read error", path);
+  return text.str();
+}
+
+ViewerSession open_session(const ViewerArgs& args) {
+  ViewerSession session;
+  std::unique_ptr<client::ServerClient> client;
+  if (!args.store.empty()) {
+    view::LocalServerOptions options;
+    options.threads = args.threads;
+    options.cache_bytes = static_cast<std::uint64_t>(args.cache_mib * 1048576.0);
+    auto local = view::open_local_store(args.store, options);
+    session.server = std::move(local.server);
+    client = std::move(local.client);
+    session.dataset_name = args.store;
+  } else {
+    client::ClientOptions options;
+    options.client_name = "strielad-view";
+    if (!args.token_file.empty()) options.token = net::read_token_file(args.token_file);
+    client = client::ServerClient::connect(net::parse_endpoint(args.connect, "--connect"), options);
+    client->open_dataset(args.dataset);
+    session.dataset_name = args.connect + "/" + args.dataset;
+  }
+  const format::Manifest manifest = client->manifest();
+  session.scene = args.scene_file.empty() ? view::default_scene(manifest)
+                                          : load_scene_file(args.scene_file);
+  if (args.time) session.scene.time = *args.time;
+  resolve_scene(session.scene, manifest,
+                args.scene_file.empty() ? std::string("default scene") : args.scene_file);
+  if (!args.shader_file.empty()) {
+    session.shader_source = read_text_file(args.shader_file);
+    session.shader_name = args.shader_file;
+  } else {
+    session.shader_name = "built-in clouds.glsl";
+  }
+  session.link = std::make_unique<view::ViewLink>(std::move(client));
+  spdlog::info("{}: {} x {} x {} grid, {} variables, {} time steps, {} octree nodes",
+               session.dataset_name, manifest.x.size(), manifest.y.size(), manifest.z.size(),
+               manifest.variables.size(), manifest.time.values.size(),
+               session.link->octree().node_count());
+  return session;
+}
+
+}  // namespace strielad::view_cmd

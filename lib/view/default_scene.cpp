@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "view/default_scene.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/error.h"
+
+namespace strielad::view {
+namespace {
+
+bool has_variable(const format::Manifest& m, const std::string& name) {
+  return std::any_of(m.variables.begin(), m.variables.end(),
+                     [&](const auto& v) { return v.name == name; });
+}
+
+}  // namespace
+
+std::optional<std::pair<double, double>> variable_range(const format::Manifest& manifest,
+                                                        const std::string& variable) {
+  const auto& summary = manifest.summary;
+  if (!summary.is_object() || !summary.contains("variables")) return std::nullopt;
+  const auto& variables = summary["variables"];
+  if (!variables.is_object() || !variables.contains(variable)) return std::nullopt;
+  const auto& v = variables[variable];
+  if (!v.is_object() || !v.contains("min") || !v.contains("max") || !v["min"].is_number() ||
+      !v["max"].is_number()) {
+    return std::nullopt;
+  }
+  return std::make_pair(v["min"].get<double>(), v["max"].get<double>());
+}
+
+Scene default_scene(const format::Manifest& manifest, std::uint32_t time) {
+  Scene scene;
+  scene.time = time;
+  struct Cloud {
+    const char* var;
+    const char* name;
+    double min;
+  };
+  const Cloud clouds[] = {{"clw", "cloud water", 1e-5}, {"cli", "cloud ice", 1e-6},
+                          {"qr", "rain", 1e-5}};
+  std::uint32_t id = 1;
+  for (const auto& c : clouds) {
+    if (!has_variable(manifest, c.var)) continue;
+    SubVolume s;
+    s.id = id++;
+    s.name = c.name;
+    s.limits.push_back(Limit{.var = c.var, .min = c.min, .max = std::nullopt});
+    scene.subvolumes.push_back(std::move(s));
+  }
+  if (scene.subvolumes.empty() && !manifest.variables.empty()) {
+    const auto& first = manifest.variables.front().name;
+    if (const auto range = variable_range(manifest, first); range && range->first < range->second) {
+      SubVolume s;
+      s.id = 1;
+      s.name = first;
+      s.limits.push_back(Limit{.var = first, .min = 0.5 * (range->first + range->second),
+                               .max = std::nullopt});
+      scene.subvolumes.push_back(std::move(s));
+    }
+  }
+  if (scene.subvolumes.empty()) {
+    std::string names;
+    for (const auto& v : manifest.variables) names += (names.empty() ? "" : ", ") + v.name;
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "no default scene for a store with variables {}: give one with --scene",
+                     names);
+  }
+  for (const char* a : {"ta", "ua", "va", "wa"}) {
+    if (has_variable(manifest, a)) scene.attributes.emplace_back(a);
+  }
+  return scene;
+}
+
+double seconds_since_first_step(const format::Manifest& manifest, std::uint32_t step) {
+  const auto& t = manifest.time;
+  if (step >= t.values.size()) return 0;
+  std::string unit;
+  for (const char c : t.units) {
+    if (std::isspace(static_cast<unsigned char>(c))) break;
+    unit += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  double factor = 0;
+  if (unit == "seconds" || unit == "second" || unit == "s" || unit == "sec") factor = 1;
+  if (unit == "minutes" || unit == "minute" || unit == "min") factor = 60;
+  if (unit == "hours" || unit == "hour" || unit == "h") factor = 3600;
+  if (unit == "days" || unit == "day" || unit == "d") factor = 86400;
+  if (factor == 0 || t.units.find(" since ") == std::string::npos) return step;
+  return (t.values[step] - t.values.front()) * factor;
+}
+
+}  // namespace strielad::view

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: Apache-2.0
+// The viewer's interactive camera in the world frame (lod/world_frame.h, km): orbit
+// about a target, pan, zoom and fly, as mouse and keys drive it. Pitch stays within
+// +-89 degrees so the view never flips over the pole of the orbit.
+#pragma once
+
+#include "lod/camera.h"
+#include "lod/geometry.h"
+
+namespace strielad::view {
+
+class OrbitCamera {
+ public:
+  // Starts at home() for the domain.
+  explicit OrbitCamera(const lod::WorldBox& domain);
+
+  // The home view: the whole domain from the south at 50 degrees elevation, at a
+  // distance where a 45 degree view holds its bounding sphere.
+  void home();
+  // Rotates about the target: yaw about world z, pitch up/down (degrees).
+  void orbit(double yaw_deg, double pitch_deg);
+  // Moves eye and target across the view: fractions of the visible height at the target.
+  void pan(double right_fraction, double up_fraction);
+  // Moves the eye towards (factor < 1) or away from the target; the distance stays
+  // between 10 m and 100 times the domain's size.
+  void zoom(double factor);
+  // Moves eye and target along the view direction projected on the ground (forward),
+  // sideways and vertically, in km.
+  void fly(double forward_km, double right_km, double up_km);
+  void look_from(const lod::Vec3& eye, const lod::Vec3& target);
+  // The vertical exaggeration changed by `ratio` (new / old): world z scales with it.
+  void rescale_vertical(double ratio, const lod::WorldBox& new_domain);
+
+  lod::Camera camera(double aspect, double fov_y_deg = 45.0) const;
+  lod::Vec3 eye() const;
+  const lod::Vec3& target() const { return target_; }
+  double distance() const { return distance_; }
+
+ private:
+  lod::WorldBox domain_;
+  lod::Vec3 target_{};
+  double distance_ = 1.0;
+  double yaw_deg_ = 0;    // 0: looking north (eye south of the target)
+  double pitch_deg_ = 50; // elevation of the eye above the target's horizon
+};
+
+}  // namespace strielad::view
