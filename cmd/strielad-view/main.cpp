@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "cli/tool_main.h"
+#include "core/error.h"
 #include "viewer_args.h"
 
 int main(int argc, char** argv) {
@@ -54,16 +55,17 @@ int main(int argc, char** argv) {
         app.add_option("--screenshot", args->screenshot,
                        "Window: save the last frame, panel included, as PNG on exit");
         app.callback([args, &action] {
-          if (args->store.empty() == args->connect.empty()) {
-            throw CLI::ValidationError("give exactly one of STORE or --connect HOST:PORT");
-          }
-          if (!args->connect.empty() && args->dataset.empty()) {
-            throw CLI::ValidationError("--connect needs --dataset NAME");
-          }
-          if (args->offscreen && args->out.empty()) {
-            throw CLI::ValidationError("--offscreen needs --out FILE.png");
-          }
           action = [args] {
+            if (args->store.empty() == args->connect.empty()) {
+              throw make_error(ErrorCode::kInvalidArgument,
+                               "give exactly one of STORE or --connect HOST:PORT");
+            }
+            if (!args->connect.empty() && args->dataset.empty()) {
+              throw make_error(ErrorCode::kInvalidArgument, "--connect needs --dataset NAME");
+            }
+            if (args->offscreen && args->out.empty()) {
+              throw make_error(ErrorCode::kInvalidArgument, "--offscreen needs --out FILE.png");
+            }
             return args->offscreen ? view_cmd::run_offscreen(*args) : view_cmd::run_window(*args);
           };
         });

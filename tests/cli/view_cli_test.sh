@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# strielad-view: bad flags and files give one line on stderr with the documented exit
+# status; --offscreen renders a store (one camera and a camera path) to PNG files; the
+# window runs a few frames under Xvfb and saves a screenshot (skipped without xvfb-run).
+# Usage: view_cli_test.sh STRIELAD_CONVERT WORK_DIR (strielad-view is found next to
+# strielad-convert in the build tree).
+set -uo pipefail
+convert=$1
+work=$2
+view="$(dirname "$convert")/../strielad-view/strielad-view"
+rm -rf "$work" && mkdir -p "$work"
+
+# shellcheck source=../support/expect_cli_error.sh
+source "$(dirname "$0")/../support/expect_cli_error.sh"
+# expect STATUS "SUBSTRING" -- ARGS...
+expect() { expect_cli_error "$view" "$work" "$@"; }
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+is_png() { [[ -s "$1" ]] && [[ "$(head -c 4 "$1" | od -An -c | tr -d ' ')" == "211PNG" ]]; }
+
+"$convert" sample -o "$work/data" --dims 40x36x12 --steps 2 --vars clw,cli,qr,ta -q
+"$convert" "$work"/data/*.nc -o "$work/store" --brick 8 -q
+echo '{"subvolumes": [{"id": 1, "limits": [{"var": "nope", "min": 1e-6}]}]}' > "$work/unknown-var.json"
+printf 'vec4 color(int id, float attributes[MAX_ATTRIBUTES], vec3 normal, vec3 sun,\n' > "$work/bad.glsl"
+printf '           vec3 position, vec3 view, float time) {\n  return vec4(1.0) +;\n}\n' >> "$work/bad.glsl"
+printf 'float alpha(int id, float distance) { return 0.5; }\n' >> "$work/bad.glsl"
+echo '{"keyframes": [{"t": 0, "eye": [0, 0, 0], "target": [0, 0, 0]}]}' > "$work/bad-camera.json"
+
+expect 2 "exactly one of STORE or --connect" -- --offscreen --out "$work/x.png"
+expect 2 "--offscreen needs --out" -- "$work/store" --offscreen
+expect 3 "no such store directory" -- "$work/no-such-store" --offscreen --out "$work/x.png"
+expect 3 "nope" -- "$work/store" --scene "$work/unknown-var.json" --offscreen --out "$work/x.png"
+expect 2 "--size" -- "$work/store" --size big --offscreen --out "$work/x.png"
+expect 4 "bad.glsl:3" -- "$work/store" --shader "$work/bad.glsl" --offscreen --out "$work/x.png"
+expect 3 "no-shader.glsl" -- "$work/store" --shader "$work/no-shader.glsl" --offscreen --out "$work/x.png"
+expect 4 "bad-camera.json" -- "$work/store" --camera "$work/bad-camera.json" --offscreen --out "$work/x.png"
+expect 3 "time step 7" -- "$work/store" --time 7 --offscreen --out "$work/x.png"
+
+# One image of the home view, with statistics.
+if "$view" "$work/store" --offscreen --size 160x90 --threads 2 --out "$work/home.png" --json \
+    >"$work/home.json" 2>"$work/home.err"; then
+  is_png "$work/home.png" || fail "home.png is not a PNG image"
+  grep -q '"nodes_with_mesh":[1-9]' "$work/home.json" || fail "no meshes: $(cat "$work/home.json")"
+  echo "ok: offscreen home view"
+else
+  fail "offscreen home view"; cat "$work/home.err"
+fi
+
+# A camera path: 0.2 s at 10 fps = 3 numbered frames.
+cat > "$work/path.json" <<'JSON'
+{"keyframes": [{"t": 0, "eye": [5.0, 54.0, 30000], "target": [5.5, 55.0, 2000]},
+               {"t": 0.2, "eye": [5.2, 54.3, 20000], "target": [5.5, 55.0, 2000]}]}
+JSON
+if "$view" "$work/store" --offscreen --size 96x64 --threads 2 --camera "$work/path.json" --fps 10 \
+    --out "$work/frames/f{:03}.png" -q 2>"$work/path.err"; then
+  for f in 000 001 002; do is_png "$work/frames/f$f.png" || fail "frame $f missing"; done
+  [[ ! -e "$work/frames/f003.png" ]] || fail "a frame beyond the path's end"
+  echo "ok: camera path frames"
+else
+  fail "camera path"; cat "$work/path.err"
+fi
+
+# The window: a few frames under Xvfb, then a screenshot.
+if command -v xvfb-run >/dev/null; then
+  if xvfb-run -a -s "-screen 0 800x600x24" "$view" "$work/store" --size 640x400 --threads 2 \
+      --frames 5 --screenshot "$work/window.png" -q 2>"$work/window.err"; then
+    is_png "$work/window.png" || fail "no window screenshot"
+    echo "ok: window under Xvfb"
+  else
+    fail "window under Xvfb"; cat "$work/window.err"
+  fi
+else
+  echo "skip: window (no xvfb-run)"
+fi
+
+if [[ $failures -ne 0 ]]; then
+  echo "$failures failure(s)"
+  exit 1
+fi
+rm -rf "$work"
