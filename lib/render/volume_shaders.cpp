@@ -217,107 +217,99 @@ void main() {
   float to_true_km = length(vec3(ray_world.xy, ray_world.z / u_vertical_exaggeration)) /
                      max(-ray_eye.z, 1e-6);
 
-  // One walk front to back (the sort pass relinked the list in depth order). Per
-  // sub-volume slot: a nesting count, where its current segment began and its colour,
-  // and where it last left: it may go on through a node face (a leave and an enter
-  // within u_seam_relative of the depth join into one segment). A segment is closed
-  // when its slot's next fragment shows it did not go on, or at the end of the list.
+  // One walk front to back (the sort pass relinked the list in depth order). A
+  // segment of a sub-volume slot opens at an entry and gets the next place in the
+  // segment list, so the list is in order of where segments begin; it closes at the
+  // exit that brings the slot's nesting count to 0, unless the slot enters again within
+  // u_seam_relative of that depth (it leaves one node and enters the next: the same
+  // segment goes on). A slot left without having entered began at the near plane (the
+  // eye is inside): such segments come before all others.
+  // Every loop has a fixed trip count: Mesa's llvmpipe 22.3 ends loops whose lanes
+  // leave at different iterations too early in some 4x4 pixel blocks
+  // (tests/render/abuffer_pixels_test.cpp and abuffer_limits_test.cpp catch it).
   int inside[32];
-  float entry_depth[32];
-  uint entry_color[32];
-  float exit_depth[32];
+  int open_segment[32];   // the slot's current segment, -1 when none
+  float exit_depth[32];   // where the slot last left (its segment may go on)
+  uint pending = 0u;      // slots that left and may go on through a node face
   for (int s = 0; s < 32; ++s) {
     inside[s] = 0;
-    entry_depth[s] = 0.0;
-    entry_color[s] = 0u;
+    open_segment[s] = -1;
     exit_depth[s] = 0.0;
   }
-  uint pending = 0u;
   float seg_start[K];
+  float seg_end[K];
   uint seg_color[K];
-  float seg_length[K];
   int seg_slot[K];
   int segments = 0;
+  // Segments from the near plane, one per slot at most.
+  float near_end[32];
+  uint near_color[32];
+  uint near_slots = 0u;
   float last = 0.0;
-  for (uint i = head; i != 0xFFFFFFFFu; i = fragments[i].next) {
+  uint i = head;
+  for (int k = 0; k < K; ++k) {
+    if (i == 0xFFFFFFFFu) continue;
     float d = fragments[i].depth;
     uint meta = fragments[i].meta;
+    uint color = fragments[i].color;
+    i = fragments[i].next;
     last = d;
     int s = int(meta & 31u);
     uint bit = 1u << uint(s);
     bool entering = (meta & 32u) != 0u;
-    bool is_pending = (pending & bit) != 0u;
-    bool at_seam = is_pending && d - exit_depth[s] <= u_seam_relative * d;
-    int count = inside[s];
-    if (count == 0 && is_pending && !at_seam) {
-      if (segments < K) {
-        seg_start[segments] = entry_depth[s];
-        seg_color[segments] = entry_color[s];
-        seg_length[segments] = exit_depth[s] - entry_depth[s];
+    bool at_seam = (pending & bit) != 0u && d - exit_depth[s] <= u_seam_relative * d;
+    if (!at_seam) pending &= ~bit;  // its segment ended at exit_depth (already recorded)
+    if (entering) {
+      if (inside[s] == 0 && !at_seam && segments < K) {
+        seg_start[segments] = d;
+        seg_end[segments] = d;
+        seg_color[segments] = color;
         seg_slot[segments] = s;
-        ++segments;
+        open_segment[s] = segments++;
       }
       pending &= ~bit;
-      is_pending = false;
-    }
-    if (entering) {
-      if (count == 0 && !is_pending) {
-        entry_depth[s] = d;
-        entry_color[s] = fragments[i].color;
-      }
-      pending &= ~bit;  // leaves one node, enters the next: one segment
-      inside[s] = count + 1;
-    } else if (count > 0) {
-      inside[s] = count - 1;
-      if (count == 1) {
+      ++inside[s];
+    } else if (inside[s] > 0) {
+      if (--inside[s] == 0) {
+        if (open_segment[s] >= 0) seg_end[open_segment[s]] = d;
         exit_depth[s] = d;
         pending |= bit;
       }
     } else if (!at_seam) {
-      // Leaving without having entered: the eye is inside (from the near plane).
-      entry_depth[s] = u_near;
-      entry_color[s] = fragments[i].color;
+      if ((near_slots & bit) == 0u) {
+        near_slots |= bit;
+        near_color[s] = color;
+        near_end[s] = d;
+      } else if (open_segment[s] < 0) {
+        near_end[s] = d;  // the near-plane segment went on through a node face
+      }
       exit_depth[s] = d;
       pending |= bit;
+    } else if ((near_slots & bit) != 0u && open_segment[s] < 0) {
+      near_end[s] = d;
     }  // else: a second exit at a node face
   }
   // What is still open ends behind the last kept fragment (list truncated) or at the
   // opaque scene (its exit is hidden behind it, or beyond the far plane).
   float end = listed > uint(K) ? last : linear_depth(texelFetch(u_opaque_depth, px, 0).r);
   for (int s = 0; s < 32; ++s) {
-    bool closed = (pending & (1u << uint(s))) != 0u;
-    if ((closed || inside[s] > 0) && segments < K) {
-      seg_start[segments] = entry_depth[s];
-      seg_color[segments] = entry_color[s];
-      seg_length[segments] = (closed ? exit_depth[s] : max(end, entry_depth[s])) - entry_depth[s];
-      seg_slot[segments] = s;
-      ++segments;
-    }
-  }
-  // Front to back by where each segment begins.
-  for (int i = 1; i < segments; ++i) {
-    float start = seg_start[i];
-    uint c = seg_color[i];
-    float len = seg_length[i];
-    int slot = seg_slot[i];
-    int j = i;
-    while (j > 0 && seg_start[j - 1] > start) {
-      seg_start[j] = seg_start[j - 1];
-      seg_color[j] = seg_color[j - 1];
-      seg_length[j] = seg_length[j - 1];
-      seg_slot[j] = seg_slot[j - 1];
-      --j;
-    }
-    seg_start[j] = start;
-    seg_color[j] = c;
-    seg_length[j] = len;
-    seg_slot[j] = slot;
+    if (inside[s] > 0 && open_segment[s] >= 0) seg_end[open_segment[s]] = max(end, seg_start[open_segment[s]]);
   }
   vec3 rgb = vec3(0.0);
   float a = 0.0;
-  for (int i = 0; i < segments && a < 0.999; ++i) {
-    vec4 c = unpackUnorm4x8(seg_color[i]);
-    float o = alpha(u_slot_ids[seg_slot[i]], max(seg_length[i], 0.0) * to_true_km);
+  for (int s = 0; s < 32 && near_slots != 0u; ++s) {  // (uniform unless the eye is inside)
+    if ((near_slots & (1u << uint(s))) == 0u) continue;
+    vec4 c = unpackUnorm4x8(near_color[s]);
+    float o = alpha(u_slot_ids[s], max(near_end[s] - u_near, 0.0) * to_true_km);
+    o = isnan(o) ? 1.0 : clamp(o * c.a * MAX_OPACITY_SCALE, 0.0, 1.0);
+    float w = (1.0 - a) * o;
+    rgb += w * c.rgb;
+    a += w;
+  }
+  for (int k = 0; k < K; ++k) {
+    if (k >= segments) continue;
+    vec4 c = unpackUnorm4x8(seg_color[k]);
+    float o = alpha(u_slot_ids[seg_slot[k]], max(seg_end[k] - seg_start[k], 0.0) * to_true_km);
     o = isnan(o) ? 1.0 : clamp(o * c.a * MAX_OPACITY_SCALE, 0.0, 1.0);
     float w = (1.0 - a) * o;
     rgb += w * c.rgb;

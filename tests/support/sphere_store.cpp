@@ -9,8 +9,9 @@
 
 namespace strielad::testing {
 
-std::filesystem::path write_sphere_store(const std::filesystem::path& dir, unsigned brick) {
-  constexpr std::size_t n = 33;
+std::filesystem::path write_sphere_store(const std::filesystem::path& dir, unsigned brick,
+                                         std::size_t samples) {
+  const std::size_t n = samples;
   std::vector<double> lon(n), lat(n), height(n);
   for (std::size_t i = 0; i < n; ++i) {
     lon[i] = double(i) / double(n - 1);
