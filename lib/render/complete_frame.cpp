@@ -39,15 +39,12 @@ CompleteFrame render_complete_frame(view::ViewController& controller, VolumeRend
   }
   frame.wait_ms = std::chrono::duration<double, std::milli>(clock::now() - start).count();
   renderer.meshes().sync(controller.meshes(), SIZE_MAX);
-  for (int attempt = 0; attempt <= options.max_redraws; ++attempt) {
-    const auto t0 = clock::now();
-    frame.stats = renderer.render(inputs, target.framebuffer(), target.width(), target.height());
-    frame.image = RgbaImage{target.width(), target.height(),
-                            VolumeRenderer::read_pixels(target.framebuffer(), target.width(),
-                                                        target.height())};
-    frame.render_ms = std::chrono::duration<double, std::milli>(clock::now() - t0).count();
-    if (!frame.stats.needs_redraw) break;
-  }
+  const auto t0 = clock::now();
+  frame.stats = renderer.render(inputs, target.framebuffer(), target.width(), target.height());
+  frame.image = RgbaImage{target.width(), target.height(),
+                          VolumeRenderer::read_pixels(target.framebuffer(), target.width(),
+                                                      target.height())};
+  frame.render_ms = std::chrono::duration<double, std::milli>(clock::now() - t0).count();
   frame.cut_nodes = controller.meshes().size();
   frame.nodes_with_mesh = renderer.meshes().meshes().size();
   return frame;

@@ -3,7 +3,7 @@
 // strielad-view (--offscreen), the render tests and the view benchmark. The cut for the
 // camera is sent, results are applied as they come, and the frame is rendered when the
 // cut no longer changes and the current request is answered for every node of it
-// (view::ViewController::complete), then rendered again while the fragment pool grew.
+// (view::ViewController::complete).
 #pragma once
 
 #include <chrono>
@@ -18,7 +18,6 @@ namespace strielad::render {
 
 struct CompleteFrameOptions {
   std::chrono::milliseconds timeout{std::chrono::minutes(10)};
-  int max_redraws = 4;  // renders after a pool growth, at most
 };
 
 struct CompleteFrame {

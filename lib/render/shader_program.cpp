@@ -70,6 +70,12 @@ std::vector<ShaderDiagnostic> parse_info_log(const std::string& log, const std::
       text = m[3];
     }
     ShaderDiagnostic d;
+    if (line_number > kUserLineOffset) {
+      // User code, whatever string the driver names (Mesa names string 0 for errors
+      // found inside expressions).
+      string_number = 1;
+      line_number -= kUserLineOffset;
+    }
     if (string_number == 1) {
       d.user_line = line_number;
       d.message = column > 0 ? fmt::format("{}:{}:{}: {}", user_name, line_number, column, text)
@@ -92,7 +98,9 @@ CompileResult compile_program(const std::vector<StageSource>& stages,
   bool failed = false;
   for (const auto& stage : stages) {
     GlShader shader(glCreateShader(stage.stage));
-    const std::string user = stage.user ? "#line 1 1\n" + *stage.user + "\n" : std::string();
+    const std::string user =
+        stage.user ? fmt::format("#line {} 1\n", kUserLineOffset + 1) + *stage.user + "\n"
+                   : std::string();
     const char* sources[2] = {stage.builtin.c_str(), user.c_str()};
     glShaderSource(shader.get(), stage.user ? 2 : 1, sources, nullptr);
     glCompileShader(shader.get());

@@ -3,10 +3,12 @@
 // user code, with compiler messages pointing at the user's file and line.
 //
 // Each stage's source is two GLSL source strings: the built-in part (source string 0)
-// and, when a stage includes user code, "#line 1 1" and the user's text (source string
-// 1). Compiler logs name a position as "string:line": Mesa writes "1:12(5): error: ...",
-// NVIDIA "1(12) : error ...". Positions in string 1 are rewritten to "NAME:12:5:" (NAME
-// is the user file), positions in string 0 to "built-in <stage>:LINE:".
+// and, when a stage includes user code, "#line 100001 1" and the user's text (source
+// string 1). Compiler logs name a position as "string:line": Mesa writes
+// "1:100012(5): error: ...", NVIDIA "1(100012) : error ...". Mesa 22.3 names string 0
+// for errors found inside expressions, so user code is recognized by its line numbers
+// (above kUserLineOffset) as well as by string 1: such positions are rewritten to
+// "NAME:12:5:" (NAME is the user file), other positions to "built-in <stage>:LINE:".
 #pragma once
 
 #include <epoxy/gl.h>
@@ -18,6 +20,9 @@
 #include "render/gl_handles.h"
 
 namespace strielad::render {
+
+// User code is numbered from kUserLineOffset + 1 (the built-in parts are far shorter).
+inline constexpr int kUserLineOffset = 100000;
 
 struct StageSource {
   GLenum stage = GL_VERTEX_SHADER;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "render/volume_shaders.h"
@@ -79,6 +80,12 @@ lod::Mat4 inverse(const lod::Mat4& m) {
   return out;
 }
 
+// The near edge of depth bin `bin` (log-spaced from near to far, as depth_bin() in the
+// geometry shader); kDepthBins gives the far plane.
+double depth_bin_edge(const lod::Camera& camera, int bin) {
+  return camera.near_km * std::pow(camera.far_km / camera.near_km, double(bin) / kDepthBins);
+}
+
 double elapsed_ms(const GlQuery& query) {
   GLuint64 ns = 0;
   glGetQueryObjectui64v(query.get(), GL_QUERY_RESULT, &ns);
@@ -109,6 +116,9 @@ VolumeRenderer::VolumeRenderer(RenderSettings settings) : settings_(settings) {
                        GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
   resolve_stats_ = make_buffer();
   glNamedBufferStorage(resolve_stats_.get(), 4 * sizeof(GLuint), nullptr,
+                       GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+  histogram_ = make_buffer();
+  glNamedBufferStorage(histogram_.get(), kDepthBins * sizeof(GLuint), nullptr,
                        GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
   for (auto& t : timers_) t = make_query(GL_TIME_ELAPSED);
   const auto update = compile_user_programs(default_user_shader(), user_name_);
@@ -259,36 +269,13 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glEndQuery(GL_TIME_ELAPSED);
 
-  // 2. Geometry pass into the per-pixel lists.
-  glBeginQuery(GL_TIME_ELAPSED, timers_[1].get());
-  const GLuint end_of_list = kEndOfList;
-  glClearTexImage(heads_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &end_of_list);
-  const GLuint zero = 0;
-  glNamedBufferSubData(counter_.get(), 0, sizeof(GLuint), &zero);
-  const GLuint zeros[4] = {0, 0, 0, 0};
-  glNamedBufferSubData(resolve_stats_.get(), 0, sizeof(zeros), zeros);
-  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                  GL_BUFFER_UPDATE_BARRIER_BIT);
-  glDepthFunc(GL_LESS);
-  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  const GLuint g = geometry_program_.get();
-  glUseProgram(g);
-  set_mat4(g, "u_view_projection", view_projection);
-  set_mat4(g, "u_view", view);
-  set_float(g, "u_vertical_exaggeration", inputs.vertical_exaggeration);
-  set_vec3(g, "u_eye", inputs.camera.eye);
-  const lod::Vec3 sun = lod::normalize(inputs.sun_direction);
-  set_vec3(g, "u_sun", sun);
-  set_float(g, "u_time", inputs.time_seconds);
-  glProgramUniform1i(g, location(g, "u_mirrored"), inputs.mirrored ? 1 : 0);
-  glProgramUniform1ui(g, location(g, "u_capacity"), static_cast<GLuint>(capacity_));
+  // 2. Geometry pass into the per-pixel lists: nearest node first; every fragment is
+  // also counted in a depth histogram. When the pool overflows, it grows (up to the
+  // bound) and the pass runs again; at the bound, the pass runs again with a depth
+  // limit below which everything fits, so the fragments dropped are exactly the
+  // farthest (to the histogram's resolution).
   std::array<GLint, 32> ids{};
   for (std::size_t i = 0; i < slot_ids_.size(); ++i) ids[i] = static_cast<GLint>(slot_ids_[i]);
-  glProgramUniform1iv(g, location(g, "u_slot_ids"), 32, ids.data());
-  glBindImageTexture(0, heads_.get(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-  glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, counter_.get());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, pool_.get());
-  // Nearest node first, so that a full pool drops the farthest fragments.
   std::vector<std::pair<double, const GpuMesh*>> order;
   order.reserve(meshes_.meshes().size());
   for (const auto& [node, mesh] : meshes_.meshes()) {
@@ -297,19 +284,80 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
   }
   std::sort(order.begin(), order.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (const auto& [distance, mesh] : order) {
-    glBindVertexArray(mesh->vertex_array.get());
-    glDrawElements(GL_TRIANGLES, mesh->index_count, GL_UNSIGNED_INT, nullptr);
-    ++stats.nodes_drawn;
-    stats.triangles_drawn += static_cast<std::size_t>(mesh->index_count) / 3;
+  const GLuint g = geometry_program_.get();
+  const auto geometry_pass = [&](float depth_limit) {
+    const GLuint end_of_list = kEndOfList;
+    glClearTexImage(heads_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &end_of_list);
+    const GLuint zero = 0;
+    glNamedBufferSubData(counter_.get(), 0, sizeof(GLuint), &zero);
+    glClearNamedBufferData(histogram_.get(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                    GL_BUFFER_UPDATE_BARRIER_BIT);
+    glBindFramebuffer(GL_FRAMEBUFFER, opaque_framebuffer_.get());
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_LESS);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glUseProgram(g);
+    set_mat4(g, "u_view_projection", view_projection);
+    set_mat4(g, "u_view", view);
+    set_float(g, "u_vertical_exaggeration", inputs.vertical_exaggeration);
+    set_vec3(g, "u_eye", inputs.camera.eye);
+    set_vec3(g, "u_sun", lod::normalize(inputs.sun_direction));
+    set_float(g, "u_time", inputs.time_seconds);
+    set_float(g, "u_near", inputs.camera.near_km);
+    set_float(g, "u_far", inputs.camera.far_km);
+    set_float(g, "u_depth_limit", depth_limit);
+    glProgramUniform1i(g, location(g, "u_mirrored"), inputs.mirrored ? 1 : 0);
+    glProgramUniform1ui(g, location(g, "u_capacity"), static_cast<GLuint>(capacity_));
+    glProgramUniform1iv(g, location(g, "u_slot_ids"), 32, ids.data());
+    glBindImageTexture(0, heads_.get(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, counter_.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, pool_.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, histogram_.get());
+    stats.nodes_drawn = 0;
+    stats.triangles_drawn = 0;
+    for (const auto& [distance, mesh] : order) {
+      glBindVertexArray(mesh->vertex_array.get());
+      glDrawElements(GL_TRIANGLES, mesh->index_count, GL_UNSIGNED_INT, nullptr);
+      ++stats.nodes_drawn;
+      stats.triangles_drawn += static_cast<std::size_t>(mesh->index_count) / 3;
+    }
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                    GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    GLuint generated = 0;
+    glGetNamedBufferSubData(counter_.get(), 0, sizeof(GLuint), &generated);
+    return static_cast<std::uint64_t>(generated);
+  };
+  glBeginQuery(GL_TIME_ELAPSED, timers_[1].get());
+  float depth_limit = std::numeric_limits<float>::max();
+  std::uint64_t generated = geometry_pass(depth_limit);
+  stats.fragments = generated;
+  if (generated > capacity_) {
+    ensure_pool(static_cast<std::size_t>(generated) + generated / 8);
+    if (generated > capacity_) {
+      // At the bound: the nearest depth bins that fit.
+      std::array<GLuint, kDepthBins> bins{};
+      glGetNamedBufferSubData(histogram_.get(), 0, sizeof(bins), bins.data());
+      std::uint64_t kept = 0;
+      int bin = 0;
+      while (bin < kDepthBins && kept + bins[bin] <= capacity_) kept += bins[bin++];
+      depth_limit = static_cast<float>(depth_bin_edge(inputs.camera, bin));
+    }
+    ++stats.geometry_passes;
+    generated = geometry_pass(depth_limit);
   }
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glEndQuery(GL_TIME_ELAPSED);
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
-                  GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  stats.depth_limit_km = depth_limit;
+  stats.dropped_fragments = stats.fragments - std::min<std::uint64_t>(generated, capacity_);
 
   // 3. Sort each pixel's list (no colour output), 4. resolve into the target.
   glBeginQuery(GL_TIME_ELAPSED, timers_[2].get());
+  const GLuint zeros[4] = {0, 0, 0, 0};
+  glNamedBufferSubData(resolve_stats_.get(), 0, sizeof(zeros), zeros);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glBindFramebuffer(GL_FRAMEBUFFER, opaque_framebuffer_.get());
   glDisable(GL_DEPTH_TEST);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glUseProgram(sort_program_.get());
@@ -330,6 +378,7 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
   set_float(r, "u_far", inputs.camera.far_km);
   set_float(r, "u_vertical_exaggeration", inputs.vertical_exaggeration);
   set_float(r, "u_seam_relative", settings_.seam_relative);
+  set_float(r, "u_depth_limit", depth_limit);
   set_float(r, "u_time", inputs.time_seconds);
   glProgramUniform1iv(r, location(r, "u_slot_ids"), 32, ids.data());
   glBindImageTexture(0, heads_.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
@@ -343,24 +392,15 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
 
   if (!inputs.outline_boxes.empty()) draw_outlines(inputs, view_projection);
 
-  GLuint generated = 0;
-  glGetNamedBufferSubData(counter_.get(), 0, sizeof(GLuint), &generated);
   GLuint resolved[4] = {0, 0, 0, 0};
   glGetNamedBufferSubData(resolve_stats_.get(), 0, sizeof(resolved), resolved);
-  stats.fragments = generated;
   stats.fragment_capacity = capacity_;
-  stats.dropped_fragments = generated > capacity_ ? generated - capacity_ : 0;
   stats.covered_pixels = resolved[0];
   stats.truncated_pixels = resolved[1];
   stats.max_fragments_per_pixel = resolved[2];
   stats.opaque_ms = elapsed_ms(timers_[0]);
   stats.geometry_ms = elapsed_ms(timers_[1]);
   stats.resolve_ms = elapsed_ms(timers_[2]);
-  if (stats.dropped_fragments > 0) {
-    const std::size_t before = capacity_;
-    ensure_pool(static_cast<std::size_t>(generated) + generated / 4);
-    stats.needs_redraw = capacity_ > before;
-  }
   glBindVertexArray(0);
   glUseProgram(0);
   return stats;

@@ -14,11 +14,12 @@
 //    one segment); each segment gets the colour of its entry and the opacity
 //    alpha(id, true km travelled inside) times the colour's opacity scale; segments are
 //    composited front to back by where they start, over the opaque pass.
-// Fragment memory is bounded: the pool starts at 4 fragments per pixel and grows, up to
-// max_fragment_bytes, when a frame needed more (that frame reports needs_redraw). At
-// the bound, fragments beyond it are counted and dropped; drawing nodes nearest first
-// makes the dropped ones mostly the farthest. Pixels with more than K fragments keep
-// the K nearest, and sub-volumes still open behind them end at the K-th.
+// Fragment memory is bounded: the pool starts at 4 fragments per pixel; a frame that
+// needs more grows it, up to max_fragment_bytes, and runs the geometry pass again. At
+// the bound, the pass runs again with a depth limit taken from a 256-bin histogram of
+// the fragments' depths (log-spaced from near to far), so that exactly the farthest
+// bins are dropped and sub-volumes open at the limit end there. Pixels with more than
+// K fragments keep the K nearest, and sub-volumes still open behind them end at the K-th.
 #pragma once
 
 #include <array>
@@ -37,6 +38,7 @@ namespace strielad::render {
 
 inline constexpr std::size_t kDefaultMaxFragmentBytes = 256ull << 20;  // 16 M fragments
 inline constexpr std::size_t kFragmentBytes = 16;
+inline constexpr int kDepthBins = 256;
 
 struct RenderSettings {
   std::size_t max_fragment_bytes = kDefaultMaxFragmentBytes;
@@ -66,7 +68,8 @@ struct FrameStats {
   std::size_t nodes_drawn = 0;
   std::size_t triangles_drawn = 0;
   double opaque_ms = 0, geometry_ms = 0, resolve_ms = 0;  // GPU time (timer queries)
-  bool needs_redraw = false;  // the pool grew: the next frame shows what this one dropped
+  int geometry_passes = 1;    // 2 when the pool overflowed (grown, or a depth limit set)
+  float depth_limit_km = 0;   // fragments beyond this eye depth were dropped (max: none)
   double fragments_per_covered_pixel() const {
     return covered_pixels ? static_cast<double>(fragments - dropped_fragments) / covered_pixels : 0;
   }
@@ -131,7 +134,7 @@ class VolumeRenderer {
   GlFramebuffer opaque_framebuffer_;
   GlTexture opaque_color_, opaque_depth_;
   GlTexture heads_, listed_;
-  GlBuffer pool_, counter_, resolve_stats_;
+  GlBuffer pool_, counter_, resolve_stats_, histogram_;
   std::size_t capacity_ = 0;
   std::array<GlQuery, 3> timers_;
 

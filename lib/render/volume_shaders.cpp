@@ -86,7 +86,11 @@ std::string geometry_fragment_source(const std::string& prelude) {
 layout(binding = 0, r32ui) uniform coherent uimage2D u_heads;
 layout(binding = 0, offset = 0) uniform atomic_uint u_fragment_counter;
 layout(std430, binding = 1) buffer FragmentPool { Fragment fragments[]; };
+layout(std430, binding = 3) buffer DepthHistogram { uint depth_bins[256]; };
 uniform uint u_capacity;
+uniform float u_near;
+uniform float u_far;
+uniform float u_depth_limit;
 uniform vec3 u_eye;
 uniform vec3 u_sun;
 uniform float u_time;
@@ -108,6 +112,10 @@ void main() {
                  normalize(u_eye - v_world), u_time);
   if (any(isnan(c)) || any(isinf(c))) c = vec4(1.0, 0.0, 1.0, 1.0);  // shows a broken colour
   c = vec4(clamp(c.rgb, 0.0, 1.0), clamp(c.a, 0.0, MAX_OPACITY_SCALE) / MAX_OPACITY_SCALE);
+  if (v_eye_depth >= u_depth_limit) return;  // beyond what the pool can hold
+  // Log-spaced depth bins from near to far (VolumeRenderer's depth limit).
+  float t = log(max(v_eye_depth, u_near) / u_near) / log(u_far / u_near);
+  atomicAdd(depth_bins[clamp(int(t * 256.0), 0, 255)], 1u);
   uint index = atomicCounterIncrement(u_fragment_counter);
   if (index >= u_capacity) return;  // the pool is full: counted, not stored
   bool entering = gl_FrontFacing != u_mirrored;
@@ -191,6 +199,7 @@ uniform float u_near;
 uniform float u_far;
 uniform int u_slot_ids[32];
 uniform float u_seam_relative;
+uniform float u_depth_limit;
 uniform float u_time;
 out vec4 o_color;
 )" + prelude + R"(
@@ -292,6 +301,7 @@ void main() {
   // What is still open ends behind the last kept fragment (list truncated) or at the
   // opaque scene (its exit is hidden behind it, or beyond the far plane).
   float end = listed > uint(K) ? last : linear_depth(texelFetch(u_opaque_depth, px, 0).r);
+  end = min(end, u_depth_limit);
   for (int s = 0; s < 32; ++s) {
     if (inside[s] > 0 && open_segment[s] >= 0) seg_end[open_segment[s]] = max(end, seg_start[open_segment[s]]);
   }

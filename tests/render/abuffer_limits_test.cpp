@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // What the A-buffer does at its memory bounds (README "A-buffer limits"): a pixel with
 // more than K = 32 fragments keeps the nearest 32, so what is lost lies behind what is
-// kept; a full fragment pool drops fragments of the nodes drawn last, which are the
-// farthest, and counts them. Both are measured here on nested sphere shells and on two
+// kept; a frame that overflows a pool at its bound is drawn again with a depth limit,
+// so that the fragments dropped are the farthest, and counted. Both are measured here on nested sphere shells and on two
 // spheres along the view.
 #include <cmath>
+#include <limits>
 
 #include "render/png_file.h"
 #include "render_fixture.h"
@@ -67,39 +68,55 @@ TEST_F(AbufferLimitsTest, APixelOverKFragmentsKeepsTheNearestAndLosesLittle) {
   RecordProperty("centre_red", centre[0]);
 }
 
-TEST_F(AbufferLimitsTest, AFullPoolDropsTheFarthestNodesFragmentsAndCountsThem) {
+// The sphere store of the pixel tests: its spheres lie in different octree nodes at
+// every level below the root, so drawing nodes nearest first orders them.
+class AbufferPoolTest : public RenderTest {};
+
+TEST_F(AbufferPoolTest, AFullPoolDropsTheFarthestNodesFragmentsAndCountsThem) {
+  const lod::Vec3 east{330.0, 0.0, 55.0}, middle{5.0, 0.0, 55.0};
+  // Seen from the east, sphere 2 (blue) hides sphere 1 (red) behind it. First how many
+  // fragments the near sphere alone has, then both spheres unbounded.
+  Scene near_only;
+  near_only.subvolumes = {sphere(3, "d2", 20.0)};
+  const auto alone = render(near_only, east, middle, flat_shader("return 1.0;"));
   Scene scene;
   scene.subvolumes = {sphere(1, "d1", 20.0), sphere(3, "d2", 20.0)};
-  const lod::Vec3 east{330.0, 0.0, 55.0}, middle{5.0, 0.0, 55.0};
-  // Unbounded first: how many fragments the view has.
   const auto full = render(scene, east, middle, flat_shader("return 1.0;"));
   ASSERT_EQ(full.stats.dropped_fragments, 0u);
-  const std::uint64_t needed = full.stats.fragments;
-  // A pool a third of that (at least the 1024-fragment minimum): the bound holds, the
-  // excess is counted, and the nearer sphere (blue, drawn first) still shows.
+  // A pool that holds the near sphere's fragments only: the bound holds, the rest is
+  // counted, and the second geometry pass with a depth limit from the histogram drops
+  // exactly the far sphere's: the picture is the unbounded one.
+  const std::size_t capacity = std::max<std::size_t>(alone.stats.fragments, 1024);
+  ASSERT_GT(full.stats.fragments, capacity);
   renderer_ = std::make_unique<render::VolumeRenderer>(render::RenderSettings{
-      .max_fragment_bytes = std::max<std::size_t>(needed / 3, 1024) * render::kFragmentBytes,
+      .max_fragment_bytes = capacity * render::kFragmentBytes,
       .background_top = {0, 0, 0},
       .background_bottom = {0, 0, 0}});
   const auto bounded = render(scene, east, middle, flat_shader("return 1.0;"));
-  EXPECT_LE(bounded.stats.fragment_capacity, std::max<std::uint64_t>(needed / 3, 1024));
-  EXPECT_EQ(bounded.stats.dropped_fragments, bounded.stats.fragments - bounded.stats.fragment_capacity);
-  EXPECT_GT(bounded.stats.dropped_fragments, 0u);
-  EXPECT_FALSE(bounded.stats.needs_redraw);  // at the bound: nothing more to grow
-  const auto cam = camera(east, middle);
-  const auto front = bounded.image.at(project(cam, kSphereCenter2).first,
-                                      project(cam, kSphereCenter2).second);
-  EXPECT_EQ(front[2], 255) << "the nearest sphere lost fragments";
-  RecordProperty("fragments_needed", static_cast<int>(needed));
+  EXPECT_EQ(bounded.stats.fragment_capacity, capacity);
+  EXPECT_EQ(bounded.stats.dropped_fragments, full.stats.fragments - capacity);
+  EXPECT_EQ(bounded.stats.geometry_passes, 2);
+  EXPECT_LT(bounded.stats.depth_limit_km, 340.0f);  // between the spheres' depths
+  EXPECT_GT(bounded.stats.depth_limit_km, 320.0f);
+  EXPECT_EQ(bounded.image.pixels, full.image.pixels);
+  RecordProperty("fragments_needed", static_cast<int>(full.stats.fragments));
   RecordProperty("dropped", static_cast<int>(bounded.stats.dropped_fragments));
 }
 
-TEST_F(AbufferLimitsTest, ThePoolGrowsToWhatAFrameNeeded) {
-  Scene scene;
-  scene.subvolumes = {sphere(1, "d1", 30.0)};
-  const auto frame = render(scene, kEye, kSphereCenter1, flat_shader("return 0.5;"));
+TEST_F(AbufferLimitsTest, ThePoolGrowsWithinTheFrameThatNeedsIt) {
+  // First at a bound of 1024 fragments (the smallest): the frame is cut at a depth.
+  renderer_->set_max_fragment_bytes(1024 * render::kFragmentBytes);
+  const auto small = render(shells(), kEye, kSphereCenter1, red_shader(0.5));
+  EXPECT_EQ(small.stats.fragment_capacity, 1024u);
+  EXPECT_LT(small.stats.depth_limit_km, std::numeric_limits<float>::max());
+  EXPECT_GT(small.stats.dropped_fragments, 0u);
+  // The default bound: the same frame grows the pool and is drawn again, whole.
+  renderer_->set_max_fragment_bytes(render::kDefaultMaxFragmentBytes);
+  const auto frame = render(shells(), kEye, kSphereCenter1, red_shader(0.5));
+  EXPECT_EQ(frame.stats.geometry_passes, 2);
   EXPECT_EQ(frame.stats.dropped_fragments, 0u);
   EXPECT_GE(frame.stats.fragment_capacity, frame.stats.fragments);
+  EXPECT_EQ(frame.stats.depth_limit_km, std::numeric_limits<float>::max());
 }
 
 }  // namespace
