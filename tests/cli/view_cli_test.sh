@@ -60,6 +60,34 @@ else
   fail "camera path"; cat "$work/path.err"
 fi
 
+# Through a running strielad-serve (--connect, with a token).
+serve="$(dirname "$convert")/../strielad-serve/strielad-serve"
+mkdir -p "$work/root" && cp -r "$work/store" "$work/root/sample"  # (symbolic links out of the root are refused)
+umask 077 && echo "s3cret" > "$work/token" && umask 022
+"$serve" --root "$work/root" --listen 127.0.0.1:0 --token-file "$work/token" --threads 2 --json -q \
+  >"$work/endpoint" 2>"$work/serve.err" &
+serve_pid=$!
+for _ in $(seq 100); do [[ -s "$work/endpoint" ]] && break; sleep 0.1; done
+port=$(sed -n 's/.*"port": *\([0-9]*\).*/\1/p' "$work/endpoint")
+if [[ -n "$port" ]]; then
+  if "$view" --connect "127.0.0.1:$port" --dataset sample --token-file "$work/token" --offscreen \
+      --size 160x90 --out "$work/remote.png" --json >"$work/remote.json" 2>"$work/remote.err"; then
+    is_png "$work/remote.png" || fail "remote.png is not a PNG image"
+    grep -q '"nodes_with_mesh":[1-9]' "$work/remote.json" || fail "remote: no meshes"
+    # The same view in-process and through the server is the same picture.
+    cmp -s "$work/remote.png" "$work/home.png" || fail "remote and in-process pictures differ"
+    echo "ok: --connect"
+  else
+    fail "--connect"; cat "$work/remote.err"
+  fi
+  expect 3 "no-such-dataset" -- --connect "127.0.0.1:$port" --dataset no-such-dataset \
+    --token-file "$work/token" --offscreen --out "$work/x.png"
+  expect 2 "--connect needs --dataset" -- --connect "127.0.0.1:$port" --offscreen --out "$work/x.png"
+else
+  fail "strielad-serve did not start: $(cat "$work/serve.err")"
+fi
+kill -TERM "$serve_pid" 2>/dev/null; wait "$serve_pid" 2>/dev/null
+
 # The window: a few frames under Xvfb, then a screenshot.
 if command -v xvfb-run >/dev/null; then
   if xvfb-run -a -s "-screen 0 800x600x24" "$view" "$work/store" --size 640x400 --threads 2 \
