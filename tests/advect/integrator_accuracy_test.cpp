@@ -55,6 +55,7 @@ TEST(IntegratorAccuracyTest, Rk4ConvergesAtFourthOrder) {
 TEST(IntegratorAccuracyTest, Dopri5MeetsItsToleranceAndTighterCostsMore) {
   const auto field = rotation();
   advect::AdvectOptions loose, tight;
+  loose.method = tight.method = Method::kDopri5;
   loose.rtol = 1e-4;
   tight.rtol = 1e-9;
   loose.atol = {1e-3, 1e-3, 1e-3};
@@ -75,6 +76,7 @@ TEST(IntegratorAccuracyTest, Dopri5MeetsItsToleranceAndTighterCostsMore) {
 TEST(IntegratorAccuracyTest, BackwardIntegrationReturnsToTheStart) {
   const auto field = rotation();
   advect::AdvectOptions o;
+  o.method = Method::kDopri5;
   o.rtol = 1e-10;
   o.atol = {1e-8, 1e-8, 1e-8};
   const auto forward = advect::advect(field, {10000, 0, 500}, 0, 600, o);
