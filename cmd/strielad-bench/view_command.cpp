@@ -4,14 +4,13 @@
 #include <fmt/ranges.h>
 
 #include <memory>
-#include <regex>
 #include <string>
 #include <thread>
 #include <tuple>
 #include <vector>
 
+#include "cli/image_size.h"
 #include "commands.h"
-#include "core/error.h"
 #include "render/view_bench.h"
 #include "sample/sample_args.h"
 #include "suite_output.h"
@@ -40,16 +39,6 @@ struct ViewFlags {
 
 bool given(const ViewFlags& f, const char* name) { return f.sub->count(name) > 0; }
 
-std::pair<int, int> parse_size(const std::string& text) {
-  static const std::regex pattern(R"((\d{1,5})[xX](\d{1,5}))");
-  std::smatch m;
-  if (!std::regex_match(text, m, pattern)) {
-    throw make_error(ErrorCode::kInvalidArgument, "--size {}: expected WIDTHxHEIGHT, e.g. 1280x720",
-                     text);
-  }
-  return {std::stoi(m[1]), std::stoi(m[2])};
-}
-
 std::string describe(const bench::ViewSuiteReport& r) {
   const auto& o = r.options;
   return fmt::format(
@@ -73,7 +62,7 @@ int run(const ViewFlags& f) {
   if (!f.quick || given(f, "--brick")) o.brick = f.brick;
   if (!f.quick || given(f, "--repeat")) o.repeat = f.repeat;
   if (!f.quick || given(f, "--cache-mib")) o.cache_mib = f.cache_mib;
-  if (!f.quick || given(f, "--size")) std::tie(o.width, o.height) = parse_size(f.size);
+  if (!f.quick || given(f, "--size")) std::tie(o.width, o.height) = cli::parse_image_size(f.size);
   o.variables = sample::parse_variable_list(f.vars);
   o.work = f.work;
   o.seed = f.seed;

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/image_size.h"
 #include "core/error.h"
 #include "lod/camera_path.h"
 #include "render/complete_frame.h"
@@ -41,7 +42,7 @@ std::filesystem::path frame_path(const std::string& pattern, std::size_t frame, 
 }  // namespace
 
 int run_offscreen(const ViewerArgs& args) {
-  const auto [width, height] = parse_size(args.size);
+  const auto [width, height] = cli::parse_image_size(args.size);
   auto context = render::HeadlessContext::create();
   spdlog::info("headless {}", context->description());
   ViewerSession session = open_session(args);
@@ -89,21 +90,8 @@ int run_offscreen(const ViewerArgs& args) {
   for (std::size_t i = 0; i < cameras.size(); ++i) {
     auto inputs = render::frame_inputs(controller, cameras[i]);
     inputs.time_seconds = time_s;
-    if (args.boxes) {
-      for (const auto& n : controller.cut().nodes()) {
-        inputs.outline_boxes.push_back(controller.cut().box(n.node));
-      }
-    }
-    auto frame = render::render_complete_frame(controller, renderer, target, inputs);
-    if (args.boxes) {
-      // The outlines of the cut that was complete (the update may have refined it).
-      inputs.outline_boxes.clear();
-      for (const auto& n : controller.cut().nodes()) {
-        inputs.outline_boxes.push_back(controller.cut().box(n.node));
-      }
-      frame.stats = renderer.render(inputs, target.framebuffer(), width, height);
-      frame.image.pixels = render::VolumeRenderer::read_pixels(target.framebuffer(), width, height);
-    }
+    const auto frame = render::render_complete_frame(controller, renderer, target, inputs,
+                                                     {.outline_cut = args.boxes});
     const auto out = frame_path(args.out, i, cameras.size() > 1);
     if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
     render::write_png(out, frame.image);

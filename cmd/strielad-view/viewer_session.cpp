@@ -3,11 +3,9 @@
 
 #include <spdlog/spdlog.h>
 
-#include <fstream>
-#include <regex>
-#include <sstream>
 
 #include "core/error.h"
+#include "core/file_io.h"
 #include "net/socket.h"
 #include "net/token_file.h"
 #include "view/default_scene.h"
@@ -15,27 +13,9 @@
 
 namespace strielad::view_cmd {
 
-std::pair<int, int> parse_size(const std::string& text) {
-  static const std::regex pattern(R"((\d{1,5})x(\d{1,5}))");
-  std::smatch m;
-  if (!std::regex_match(text, m, pattern)) {
-    throw make_error(ErrorCode::kInvalidArgument, "--size {}: expected WIDTHxHEIGHT, e.g. 1280x720",
-                     text);
-  }
-  const int w = std::stoi(m[1]), h = std::stoi(m[2]);
-  if (w < 16 || h < 16 || w > 16384 || h > 16384) {
-    throw make_error(ErrorCode::kInvalidArgument, "--size {}: each side must be 16 to 16384", text);
-  }
-  return {w, h};
-}
-
 std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw make_error(ErrorCode::kNotFound, "{}: cannot read the file", path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw make_error(ErrorCode::kIo, "{}: read error", path);
-  return text.str();
+  const auto bytes = read_file_bytes(path);
+  return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
 }
 
 ViewerSession open_session(const ViewerArgs& args) {

@@ -27,9 +27,6 @@ struct ViewerSession {
 // kIo when the server cannot be reached.
 ViewerSession open_session(const ViewerArgs& args);
 
-// "1280x720" -> {1280, 720}. \error kInvalidArgument naming --size.
-std::pair<int, int> parse_size(const std::string& text);
-
 // The shader file's text. \error kNotFound / kIo naming the file.
 std::string read_text_file(const std::string& path);
 

@@ -18,7 +18,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/image_size.h"
 #include "core/error.h"
+#include "render/complete_frame.h"
 #include "render/headless_context.h"
 #include "render/png_file.h"
 #include "render/volume_renderer.h"
@@ -76,7 +78,7 @@ void apply_shader(render::VolumeRenderer& renderer, PanelState& state, const std
 }  // namespace
 
 int run_window(const ViewerArgs& args) {
-  const auto [width0, height0] = parse_size(args.size);
+  const auto [width0, height0] = cli::parse_image_size(args.size);
   GlfwLibrary glfw;
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
@@ -259,10 +261,7 @@ int run_window(const ViewerArgs& args) {
     const lod::Camera cam = camera.camera(aspect);
     const auto counters = controller.update(cam);
     renderer.meshes().sync(controller.meshes(), kUploadBytesPerFrame);
-    render::FrameInputs inputs;
-    inputs.camera = cam;
-    inputs.vertical_exaggeration = controller.options().vertical_exaggeration;
-    inputs.mirrored = controller.link().placer().mirrored();
+    render::FrameInputs inputs = render::frame_inputs(controller, cam);
     inputs.time_seconds = view::seconds_since_first_step(manifest, controller.time_step());
     if (state.boxes) {
       for (const auto& n : controller.cut().nodes()) {

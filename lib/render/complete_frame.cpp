@@ -38,6 +38,13 @@ CompleteFrame render_complete_frame(view::ViewController& controller, VolumeRend
     if (counters.events == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   frame.wait_ms = std::chrono::duration<double, std::milli>(clock::now() - start).count();
+  if (options.outline_cut) {
+    inputs.outline_boxes.clear();
+    inputs.outline_colors.clear();
+    for (const auto& n : controller.cut().nodes()) {
+      inputs.outline_boxes.push_back(controller.cut().box(n.node));
+    }
+  }
   renderer.meshes().sync(controller.meshes(), SIZE_MAX);
   const auto t0 = clock::now();
   frame.stats = renderer.render(inputs, target.framebuffer(), target.width(), target.height());

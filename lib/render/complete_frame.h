@@ -18,6 +18,8 @@ namespace strielad::render {
 
 struct CompleteFrameOptions {
   std::chrono::milliseconds timeout{std::chrono::minutes(10)};
+  // Outline the boxes of the cut that was complete (replacing inputs.outline_boxes).
+  bool outline_cut = false;
 };
 
 struct CompleteFrame {

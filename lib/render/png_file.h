@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Writing and reading RGBA8 PNG images (stb_image_write / stb_image, Debian libstb).
+// Writing RGBA8 PNG images (stb_image_write, Debian libstb).
 #pragma once
 
 #include <array>
@@ -18,10 +18,9 @@ struct RgbaImage {
   }
 };
 
-// Atomic: written to a temporary file beside `path`, then renamed over it.
-// \error kIo naming the file.
+// Encoded in memory, then written atomically (core/file_io.h write_file_atomically).
+// \error kInvalidArgument for an image whose size does not match its pixels; kIo
+// naming the file.
 void write_png(const std::filesystem::path& path, const RgbaImage& image);
-// \error kNotFound / kInvalidInput naming the file.
-RgbaImage read_png(const std::filesystem::path& path);
 
 }  // namespace strielad::render

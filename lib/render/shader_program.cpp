@@ -19,20 +19,14 @@ std::string stage_name(GLenum stage) {
   }
 }
 
-std::string shader_log(GLuint shader) {
+// The info log of a shader (glGetShaderiv/glGetShaderInfoLog) or a program
+// (glGetProgramiv/glGetProgramInfoLog).
+template <typename GetIv, typename GetLog>
+std::string info_log(GLuint object, GetIv get_iv, GetLog get_log) {
   GLint length = 0;
-  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+  get_iv(object, GL_INFO_LOG_LENGTH, &length);
   std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-  glGetShaderInfoLog(shader, length, nullptr, log.data());
-  log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
-  return log;
-}
-
-std::string program_log(GLuint program) {
-  GLint length = 0;
-  glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-  std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-  glGetProgramInfoLog(program, length, nullptr, log.data());
+  get_log(object, length, nullptr, log.data());
   log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
   return log;
 }
@@ -106,7 +100,7 @@ CompileResult compile_program(const std::vector<StageSource>& stages,
     glCompileShader(shader.get());
     GLint status = GL_FALSE;
     glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &status);
-    auto diagnostics = parse_info_log(shader_log(shader.get()), user_name,
+    auto diagnostics = parse_info_log(info_log(shader.get(), glGetShaderiv, glGetShaderInfoLog), user_name,
                                       "built-in " + stage_name(stage.stage));
     result.diagnostics.insert(result.diagnostics.end(), diagnostics.begin(), diagnostics.end());
     if (status != GL_TRUE) {
@@ -124,7 +118,7 @@ CompileResult compile_program(const std::vector<StageSource>& stages,
   GLint linked = GL_FALSE;
   glGetProgramiv(program.get(), GL_LINK_STATUS, &linked);
   if (linked != GL_TRUE) {
-    auto diagnostics = parse_info_log(program_log(program.get()), user_name, "link");
+    auto diagnostics = parse_info_log(info_log(program.get(), glGetProgramiv, glGetProgramInfoLog), user_name, "link");
     if (diagnostics.empty()) diagnostics.push_back({"linking failed", 0});
     for (auto& d : diagnostics) d.message = "link: " + d.message;
     result.diagnostics.insert(result.diagnostics.end(), diagnostics.begin(), diagnostics.end());
