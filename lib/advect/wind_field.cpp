@@ -129,4 +129,25 @@ Sample WindField::rate(const Vec3& p, double t, Vec3& rate) const {
   return Sample::kOk;
 }
 
+WindField sample_wind(WindGrid grid, double t0, double t1, const WindFormula& formula) {
+  std::array<WindSlice, 2> slices;
+  for (int s = 0; s < 2; ++s) {
+    for (const double z : grid.axes[2])
+      for (const double y : grid.axes[1])
+        for (const double x : grid.axes[0]) {
+          const Vec3 w = formula(x, y, z, s == 0 ? t0 : t1);
+          slices[s].u.push_back(static_cast<float>(w[0]));
+          slices[s].v.push_back(static_cast<float>(w[1]));
+          slices[s].w.push_back(static_cast<float>(w[2]));
+        }
+  }
+  return WindField(std::move(grid), t0, std::move(slices[0]), t1, std::move(slices[1]));
+}
+
+std::vector<double> evenly_spaced(double first, double last, std::size_t n) {
+  std::vector<double> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = first + (last - first) * double(i) / double(n - 1);
+  return v;
+}
+
 }  // namespace strielad::advect

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace strielad::advect {
@@ -63,5 +64,15 @@ class WindField {
   double t0_, t1_;
   std::array<WindSlice, 2> slices_;
 };
+
+// (u, v, w) of a wind given by a formula at (x, y, z, t).
+using WindFormula = std::function<Vec3(double x, double y, double z, double t)>;
+
+// A WindField of `formula` sampled (as float, like model output) on `grid` at t0 and t1:
+// for benchmarks and tests with known trajectories. \error as WindField's constructor.
+WindField sample_wind(WindGrid grid, double t0, double t1, const WindFormula& formula);
+
+// n values from first to last, evenly spaced (n >= 2).
+std::vector<double> evenly_spaced(double first, double last, std::size_t n);
 
 }  // namespace strielad::advect

@@ -18,33 +18,20 @@ namespace {
 
 using advect::Vec3;
 using Clock = std::chrono::steady_clock;
-using Formula = std::function<Vec3(double x, double y, double z, double t)>;
+using Formula = advect::WindFormula;
 using Exact = std::function<Vec3(const Vec3& start, double t)>;
 
 constexpr double kPi = std::numbers::pi;
 
 std::vector<double> linspace(double a, double b, std::size_t n) {
-  std::vector<double> v(n);
-  for (std::size_t i = 0; i < n; ++i) v[i] = a + (b - a) * double(i) / double(n - 1);
-  return v;
+  return advect::evenly_spaced(a, b, n);
 }
 
 advect::WindField sample(std::array<std::vector<double>, 3> axes, double t1, const Formula& f) {
   advect::WindGrid grid;
   grid.horizontal = advect::Horizontal::kMetres;
   grid.axes = std::move(axes);
-  advect::WindSlice slices[2];
-  for (int s = 0; s < 2; ++s) {
-    for (const double z : grid.axes[2])
-      for (const double y : grid.axes[1])
-        for (const double x : grid.axes[0]) {
-          const Vec3 w = f(x, y, z, s == 0 ? 0.0 : t1);
-          slices[s].u.push_back(static_cast<float>(w[0]));
-          slices[s].v.push_back(static_cast<float>(w[1]));
-          slices[s].w.push_back(static_cast<float>(w[2]));
-        }
-  }
-  return advect::WindField(std::move(grid), 0, std::move(slices[0]), t1, std::move(slices[1]));
+  return advect::sample_wind(std::move(grid), 0, t1, f);
 }
 
 struct Flow {
