@@ -39,6 +39,19 @@ int main(int argc, char** argv) {
                        "In-process server: extraction workers (default: one per core)");
         app.add_option("--cache-mib", args->cache_mib,
                        "In-process server: brick cache budget, MiB (default 1024)");
+        app.add_flag("--advect", args->advect,
+                     "Move the meshes with the wind between time steps (smooth playback; "
+                     "README \"Advection\")");
+        app.add_option("--wind", args->wind, "Wind components U,V,W (default ua,va,wa)");
+        app.add_option("--wind-store", args->wind_store,
+                       "Store to read the wind from (default: STORE; with --connect, the "
+                       "served store's directory if this machine can read it)");
+        app.add_option("--wind-level", args->wind_level,
+                       "Octree level of the wind (default: the finest with at most 4 M "
+                       "samples)");
+        app.add_option("--advect-seconds", args->advect_seconds,
+                       "Offscreen: draw the step's meshes moved this many seconds towards the "
+                       "next step (implies --advect)");
         app.add_flag("--offscreen", args->offscreen,
                      "Render without a window (EGL; no X server needed) once the cut has fully "
                      "arrived, write --out and exit");
@@ -63,6 +76,11 @@ int main(int argc, char** argv) {
             if (!args->connect.empty() && args->dataset.empty()) {
               throw make_error(ErrorCode::kInvalidArgument, "--connect needs --dataset NAME");
             }
+            if (args->advect_seconds && !args->offscreen) {
+              throw make_error(ErrorCode::kInvalidArgument,
+                               "--advect-seconds is for --offscreen; the window has a slider");
+            }
+            if (args->advect_seconds) args->advect = true;
             if (args->offscreen && args->out.empty()) {
               throw make_error(ErrorCode::kInvalidArgument, "--offscreen needs --out FILE.png");
             }

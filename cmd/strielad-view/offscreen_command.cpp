@@ -84,12 +84,37 @@ int run_offscreen(const ViewerArgs& args) {
     cameras.push_back(view::OrbitCamera(controller.frame().domain()).camera(aspect));
   }
 
+  // Wind advection: the step's displacement map, computed before the first frame.
+  std::vector<render::MeshMotion> motions;
+  const double advect_s = args.advect_seconds.value_or(0.0);
+  if (args.advect_seconds) {
+    if (!std::isfinite(advect_s) || advect_s < 0) {
+      throw make_error(ErrorCode::kInvalidArgument, "--advect-seconds {}: must be >= 0", advect_s);
+    }
+    session.advection->want({controller.time_step()});
+    session.advection->wait_idle();
+    auto map = session.advection->map(controller.time_step());
+    if (!map) {
+      throw make_error(ErrorCode::kInvalidArgument, "--advect-seconds: step {}: {}",
+                       controller.time_step(),
+                       session.advection->error().empty() ? "the store's last step has no next "
+                                                            "step to advect towards"
+                                                          : session.advection->error());
+    }
+    if (advect_s > map->seconds) {
+      spdlog::warn("--advect-seconds {}: the step lasts {} s; drawn at its end", advect_s,
+                   map->seconds);
+    }
+    motions.push_back({std::move(map), advect_s});
+  }
+
   render::OffscreenTarget target(width, height);
   const double time_s = view::seconds_since_first_step(controller.link().manifest(),
-                                                       controller.time_step());
+                                                       controller.time_step()) + advect_s;
   for (std::size_t i = 0; i < cameras.size(); ++i) {
     auto inputs = render::frame_inputs(controller, cameras[i]);
     inputs.time_seconds = time_s;
+    inputs.motions = motions;
     const auto frame = render::render_complete_frame(controller, renderer, target, inputs,
                                                      {.outline_cut = args.boxes});
     const auto out = frame_path(args.out, i, cameras.size() > 1);
@@ -102,6 +127,8 @@ int run_offscreen(const ViewerArgs& args) {
                           {"cut_nodes", frame.cut_nodes},
                           {"nodes_with_mesh", frame.nodes_with_mesh},
                           {"triangles", s.triangles_drawn},
+                          {"advect_seconds", advect_s},
+                          {"nodes_moved", s.nodes_moved},
                           {"wait_ms", frame.wait_ms},
                           {"render_ms", frame.render_ms},
                           {"geometry_ms", s.geometry_ms},

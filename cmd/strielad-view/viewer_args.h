@@ -28,6 +28,12 @@ struct ViewerArgs {
   std::string size = "1280x720";
   unsigned threads = 0;
   double cache_mib = 1024;
+  // Wind advection between steps (README "Advection").
+  bool advect = false;            // start with meshes moving with the wind
+  std::string wind = "ua,va,wa";  // the wind components U,V,W
+  std::string wind_store;         // where to read the wind; default: STORE
+  std::optional<std::uint32_t> wind_level;
+  std::optional<double> advect_seconds;  // offscreen: seconds after the step
   // Headless.
   bool offscreen = false;
   std::string camera_file;  // formats/camera-path.md: one keyframe, or a path

@@ -186,6 +186,19 @@ void draw_panel(PanelState& state, const PanelInfo& info, const format::Manifest
     ImGui::SameLine();
     ImGui::SetNextItemWidth(120);
     ImGui::SliderFloat("steps/s", &state.play_fps, 0.2f, 20.0f, "%.1f");
+    if (state.advect_available) {
+      ImGui::Checkbox("move with the wind", &state.advect);
+      if (state.advect) {
+        if (info.step_seconds > 0) {
+          ImGui::SliderFloat("s after step", &state.advect_seconds, 0.0f,
+                             static_cast<float>(info.step_seconds), "%.0f");
+          ImGui::TextDisabled("%zu nodes moved", info.nodes_moved);
+        } else {
+          ImGui::TextDisabled("computing the step's trajectories...");
+        }
+      }
+    }
+    ImGui::TextDisabled("%s", info.advect_status.c_str());
     if (state.time_step < steps) {
       ImGui::TextDisabled("%s = %g %s", manifest.time.name.c_str(),
                           manifest.time.values[static_cast<std::size_t>(state.time_step)],

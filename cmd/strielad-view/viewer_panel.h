@@ -21,6 +21,10 @@ struct PanelState {
   bool time_changed = false;
   bool playing = false;
   float play_fps = 2.0f;       // time steps per second at most (each waits to be complete)
+  // Wind advection: the meshes drawn advect_seconds after their step.
+  bool advect = false;
+  bool advect_available = false;
+  float advect_seconds = 0;
   float lod_threshold_sr = 0.01f;
   int max_nodes = 4096;
   bool lod_changed = false;
@@ -47,6 +51,9 @@ struct PanelInfo {
   double cache_hit_rate = -1;  // from the server's stats; < 0 unknown
   std::string error;           // the last error from the server, if any
   bool complete = false;
+  std::string advect_status;   // wind source, or why advection is unavailable
+  double step_seconds = 0;     // length of the current step (0: no map yet)
+  std::size_t nodes_moved = 0;
 };
 
 void draw_panel(PanelState& state, const PanelInfo& info, const format::Manifest& manifest);

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "viewer_session.h"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
-
 
 #include "core/error.h"
 #include "core/file_io.h"
@@ -17,6 +17,32 @@ std::string read_text_file(const std::string& path) {
   const auto bytes = read_file_bytes(path);
   return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
 }
+
+namespace {
+
+// The wind is read from a store directory on this machine: STORE, or --wind-store.
+void open_advection(const ViewerArgs& args, ViewerSession& session) {
+  const std::string path = !args.wind_store.empty() ? args.wind_store : args.store;
+  if (path.empty()) {
+    session.advection_status = "no wind: give --wind-store DIR (the served store's directory)";
+    if (args.advect) throw make_error(ErrorCode::kInvalidArgument, "--advect with --connect "
+                                      "needs --wind-store DIR to read the wind from");
+    return;
+  }
+  view::AdvectionSettings settings;
+  settings.names = view::parse_wind_names(args.wind);
+  settings.level = args.wind_level;
+  try {
+    session.advection = std::make_unique<view::AdvectionWorker>(Store::open(path), settings);
+    session.advection_status =
+        fmt::format("wind {} from level {}", args.wind, session.advection->level());
+  } catch (const Error& e) {
+    if (args.advect) throw;
+    session.advection_status = e.what();  // shown in the panel; advection is off
+  }
+}
+
+}  // namespace
 
 ViewerSession open_session(const ViewerArgs& args) {
   ViewerSession session;
@@ -50,6 +76,7 @@ ViewerSession open_session(const ViewerArgs& args) {
     session.shader_name = "built-in clouds.glsl";
   }
   session.link = std::make_unique<view::ViewLink>(std::move(client));
+  open_advection(args, session);
   spdlog::info("{}: {} x {} x {} grid, {} variables, {} time steps, {} octree nodes",
                session.dataset_name, manifest.x.size(), manifest.y.size(), manifest.z.size(),
                manifest.variables.size(), manifest.time.values.size(),

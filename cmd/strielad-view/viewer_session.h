@@ -9,6 +9,7 @@
 
 #include "scene/scene.h"
 #include "serve/server.h"
+#include "view/advection_worker.h"
 #include "view/view_link.h"
 #include "viewer_args.h"
 
@@ -21,10 +22,14 @@ struct ViewerSession {
   Scene scene;
   std::string shader_name;   // the file, or "built-in clouds.glsl"
   std::string shader_source; // empty: the built-in one
+  // Wind advection: null when the store has no wind (advection_status says why).
+  std::unique_ptr<view::AdvectionWorker> advection;
+  std::string advection_status;
 };
 
 // \error kNotFound / kInvalidInput naming the store, scene or shader file at fault;
-// kIo when the server cannot be reached.
+// kIo when the server cannot be reached; with --advect, the errors of
+// view::AdvectionWorker (a store without wind, a wind level outside the octree).
 ViewerSession open_session(const ViewerArgs& args);
 
 // The shader file's text. \error kNotFound / kIo naming the file.

@@ -25,6 +25,7 @@
 #include "render/png_file.h"
 #include "render/volume_renderer.h"
 #include "shader_file_watch.h"
+#include "view/advection_playback.h"
 #include "view/default_scene.h"
 #include "view/orbit_camera.h"
 #include "view/view_controller.h"
@@ -128,6 +129,13 @@ int run_window(const ViewerArgs& args) {
   state.max_nodes = static_cast<int>(args.max_nodes);
   state.boxes = args.boxes;
   view::OrbitCamera camera(controller.frame().domain());
+  std::optional<view::AdvectionPlayback> playback;
+  if (session.advection) {
+    playback.emplace(*session.advection);
+    playback->set_step(controller.time_step());
+    state.advect_available = true;
+    state.advect = args.advect;
+  }
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -138,6 +146,7 @@ int run_window(const ViewerArgs& args) {
 
   Mouse mouse;
   PanelInfo info;
+  info.advect_status = session.advection_status;
   info.dataset = session.dataset_name;
   auto last_frame = clock_type::now();
   auto last_stats = last_frame;
@@ -194,9 +203,18 @@ int run_window(const ViewerArgs& args) {
       }
     }
 
-    // Playback: the next step once the current one is complete, at most play_fps.
-    if (state.playing && controller.complete() &&
-        std::chrono::duration<double>(now - last_step).count() >= 1.0 / state.play_fps) {
+    // Playback: the next step once the current one is complete, at most play_fps; with
+    // advection, once the meshes have moved to the step's end (view/advection_playback.h).
+    auto tick = view::AdvectionPlayback::Tick::kNoMap;
+    if (playback && state.advect) {
+      playback->set_seconds(state.advect_seconds);
+      tick = playback->tick(dt, state.playing, state.play_fps, controller.complete());
+      state.advect_seconds = static_cast<float>(playback->seconds());
+    }
+    const bool plain_step_due =
+        tick == view::AdvectionPlayback::Tick::kNoMap && controller.complete() &&
+        std::chrono::duration<double>(now - last_step).count() >= 1.0 / state.play_fps;
+    if (state.playing && (tick == view::AdvectionPlayback::Tick::kNextStep || plain_step_due)) {
       state.time_step = (state.time_step + 1) % int(manifest.time.values.size());
       state.time_changed = true;
     }
@@ -208,6 +226,8 @@ int run_window(const ViewerArgs& args) {
         controller.set_time(static_cast<std::uint32_t>(state.time_step));
         state.scene.time = controller.time_step();
         last_step = now;
+        if (playback) playback->set_step(controller.time_step());
+        state.advect_seconds = 0;
       }
       if (state.scene_changed) {
         state.scene_changed = false;
@@ -263,6 +283,11 @@ int run_window(const ViewerArgs& args) {
     renderer.meshes().sync(controller.meshes(), kUploadBytesPerFrame);
     render::FrameInputs inputs = render::frame_inputs(controller, cam);
     inputs.time_seconds = view::seconds_since_first_step(manifest, controller.time_step());
+    if (playback && state.advect) {
+      inputs.motions = playback->motions();
+      inputs.time_seconds += playback->seconds();
+    }
+    info.step_seconds = playback ? playback->step_seconds() : 0;
     if (state.boxes) {
       for (const auto& n : controller.cut().nodes()) {
         inputs.outline_boxes.push_back(controller.cut().box(n.node));
@@ -290,6 +315,7 @@ int run_window(const ViewerArgs& args) {
     info.results = link.results;
     info.failed = link.failed;
     info.bytes_received = link.bytes_received;
+    info.nodes_moved = info.frame.nodes_moved;
     info.gpu_triangles = renderer.meshes().triangles();
     info.gpu_bytes = renderer.meshes().bytes();
     if (controller.last_error()) info.error = *controller.last_error();

@@ -75,6 +75,10 @@ class WorldFrame {
   double vertical_exaggeration() const { return exaggeration_; }
   // Axis-unit value of the origin along x and y (lon0/lat0 for geographic frames).
   double origin(int axis) const { return origin_[axis]; }
+  // World km per axis unit along x or y (geographic: per degree, longitude at lat0).
+  double km_per_unit(int axis) const { return km_per_unit_[axis]; }
+  // Metres (height) or pascals (pressure) per unit of the vertical axis.
+  double vertical_unit() const { return vertical_unit_; }
 
  private:
   HorizontalMap horizontal_ = HorizontalMap::kGeographic;

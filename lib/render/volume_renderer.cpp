@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 #include "core/error.h"
 #include "render/volume_shaders.h"
@@ -285,6 +286,12 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
   std::sort(order.begin(), order.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
   const GLuint g = geometry_program_.get();
+  // The displacement of each step that moves (a handful of steps at most).
+  motion_textures_.sync(inputs.motions);
+  std::unordered_map<std::uint32_t, MotionBinding> motions;
+  for (const auto& m : inputs.motions) {
+    if (m.map) motions[m.map->step] = motion_textures_.binding(m.map->step);
+  }
   const auto geometry_pass = [&](float depth_limit) {
     const GLuint end_of_list = kEndOfList;
     glClearTexImage(heads_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &end_of_list);
@@ -316,8 +323,32 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, pool_.get());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, histogram_.get());
     stats.nodes_drawn = 0;
+    stats.nodes_moved = 0;
     stats.triangles_drawn = 0;
+    const MotionBinding* bound = nullptr;
     for (const auto& [distance, mesh] : order) {
+      const MotionBinding* motion = nullptr;
+      if (!inputs.motions.empty()) {
+        const auto it = motions.find(mesh->source->step);
+        if (it != motions.end() && it->second.map != nullptr) motion = &it->second;
+      }
+      if (motion != bound || (!motion && stats.nodes_drawn == 0)) {
+        glProgramUniform1i(g, location(g, "u_moving"), motion ? 1 : 0);
+        if (motion) {
+          const auto& map = *motion->map;
+          set_float(g, "u_motion_weight", motion->weight);
+          set_vec3(g, "u_motion_lo", map.box.lo);
+          lod::Vec3 size{};
+          for (int a = 0; a < 3; ++a) size[a] = std::max(map.box.hi[a] - map.box.lo[a], 1e-9);
+          set_vec3(g, "u_motion_size", size);
+          set_vec3(g, "u_motion_lattice",
+                   lod::Vec3{double(map.lattice[0]), double(map.lattice[1]), double(map.lattice[2])});
+          glBindTextureUnit(2, motion->from);
+          glBindTextureUnit(3, motion->to);
+        }
+        bound = motion;
+      }
+      if (motion) ++stats.nodes_moved;
       glBindVertexArray(mesh->vertex_array.get());
       glDrawElements(GL_TRIANGLES, mesh->index_count, GL_UNSIGNED_INT, nullptr);
       ++stats.nodes_drawn;

@@ -32,6 +32,7 @@
 #include "lod/geometry.h"
 #include "render/gl_handles.h"
 #include "render/gpu_meshes.h"
+#include "render/mesh_motion.h"
 #include "render/shader_program.h"
 
 namespace strielad::render {
@@ -56,6 +57,9 @@ struct FrameInputs {
   // Node boxes to outline (world frame), with an RGBA colour each; empty: none.
   std::vector<lod::WorldBox> outline_boxes;
   std::vector<std::array<float, 4>> outline_colors;
+  // Meshes of a motion's step move with its displacement map (wind advection); meshes
+  // of other steps are drawn where they are.
+  std::vector<MeshMotion> motions;
 };
 
 struct FrameStats {
@@ -66,6 +70,7 @@ struct FrameStats {
   std::uint64_t truncated_pixels = 0;   // with more than K fragments
   std::uint32_t max_fragments_per_pixel = 0;
   std::size_t nodes_drawn = 0;
+  std::size_t nodes_moved = 0;  // drawn with a displacement map
   std::size_t triangles_drawn = 0;
   double opaque_ms = 0, geometry_ms = 0, resolve_ms = 0;  // GPU time (timer queries)
   int geometry_passes = 1;    // 2 when the pool overflowed (grown, or a depth limit set)
@@ -139,6 +144,7 @@ class VolumeRenderer {
   std::array<GlQuery, 3> timers_;
 
   GpuMeshes meshes_;
+  MotionTextures motion_textures_;
 };
 
 }  // namespace strielad::render

@@ -61,6 +61,14 @@ layout(location = 4) in vec4 a_attributes1;
 uniform mat4 u_view_projection;
 uniform mat4 u_view;
 uniform float u_vertical_exaggeration;
+// Wind advection (render/mesh_motion.h): displacement keyframes around the mesh's time.
+uniform bool u_moving;
+uniform float u_motion_weight;
+uniform vec3 u_motion_lo;
+uniform vec3 u_motion_size;
+uniform vec3 u_motion_lattice;
+layout(binding = 2) uniform sampler3D u_motion_from;
+layout(binding = 3) uniform sampler3D u_motion_to;
 out vec3 v_world;
 out vec3 v_normal;
 out float v_eye_depth;
@@ -68,7 +76,15 @@ flat out int v_slot;
 out vec4 v_attributes0;
 out vec4 v_attributes1;
 void main() {
-  vec3 world = vec3(a_position.xy, a_position.z * u_vertical_exaggeration);
+  vec3 position = a_position;
+  if (u_moving) {
+    // Texel centres sit at lattice points: (u (n - 1) + 0.5) / n.
+    vec3 u = clamp((a_position - u_motion_lo) / u_motion_size, 0.0, 1.0);
+    vec3 tc = (u * (u_motion_lattice - 1.0) + 0.5) / u_motion_lattice;
+    position += mix(texture(u_motion_from, tc).xyz, texture(u_motion_to, tc).xyz,
+                    u_motion_weight);
+  }
+  vec3 world = vec3(position.xy, position.z * u_vertical_exaggeration);
   v_world = world;
   v_normal = vec3(a_normal.xy, a_normal.z / u_vertical_exaggeration);
   v_eye_depth = -(u_view * vec4(world, 1.0)).z;

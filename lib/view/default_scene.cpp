@@ -73,21 +73,27 @@ Scene default_scene(const format::Manifest& manifest, std::uint32_t time) {
   return scene;
 }
 
-double seconds_since_first_step(const format::Manifest& manifest, std::uint32_t step) {
+std::optional<double> time_unit_seconds(const format::Manifest& manifest) {
   const auto& t = manifest.time;
-  if (step >= t.values.size()) return 0;
   std::string unit;
   for (const char c : t.units) {
     if (std::isspace(static_cast<unsigned char>(c))) break;
     unit += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   }
-  double factor = 0;
-  if (unit == "seconds" || unit == "second" || unit == "s" || unit == "sec") factor = 1;
-  if (unit == "minutes" || unit == "minute" || unit == "min") factor = 60;
-  if (unit == "hours" || unit == "hour" || unit == "h") factor = 3600;
-  if (unit == "days" || unit == "day" || unit == "d") factor = 86400;
-  if (factor == 0 || t.units.find(" since ") == std::string::npos) return step;
-  return (t.values[step] - t.values.front()) * factor;
+  if (t.units.find(" since ") == std::string::npos) return std::nullopt;
+  if (unit == "seconds" || unit == "second" || unit == "s" || unit == "sec") return 1.0;
+  if (unit == "minutes" || unit == "minute" || unit == "min") return 60.0;
+  if (unit == "hours" || unit == "hour" || unit == "h") return 3600.0;
+  if (unit == "days" || unit == "day" || unit == "d") return 86400.0;
+  return std::nullopt;
+}
+
+double seconds_since_first_step(const format::Manifest& manifest, std::uint32_t step) {
+  const auto& t = manifest.time;
+  if (step >= t.values.size()) return 0;
+  const auto factor = time_unit_seconds(manifest);
+  if (!factor) return step;
+  return (t.values[step] - t.values.front()) * *factor;
 }
 
 }  // namespace strielad::view

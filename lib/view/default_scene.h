@@ -26,6 +26,10 @@ Scene default_scene(const format::Manifest& manifest, std::uint32_t time = 0);
 std::optional<std::pair<double, double>> variable_range(const format::Manifest& manifest,
                                                         const std::string& variable);
 
+// Seconds per unit of the time axis ("hours since ..." gives 3600); nothing when the
+// units are not "<unit> since <date>" with a unit of seconds, minutes, hours or days.
+std::optional<double> time_unit_seconds(const format::Manifest& manifest);
+
 // Seconds from the first time step to step `step`, from the time axis units ("hours
 // since ...", "seconds since ...", ...); the step index when the units are unknown.
 double seconds_since_first_step(const format::Manifest& manifest, std::uint32_t step);

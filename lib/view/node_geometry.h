@@ -35,6 +35,7 @@ inline constexpr std::size_t kVertexFloats = kVertexAttributes + kViewAttributeS
 
 struct NodeGeometry {
   NodeId node = 0;
+  std::uint32_t step = 0;               // the time step the meshes show
   std::vector<float> vertices;          // kVertexFloats per vertex
   std::vector<std::uint32_t> indices;   // triangles, counter-clockwise seen from outside
                                         // in axis coordinates (see mirrored)
@@ -49,13 +50,13 @@ class GeometryPlacer {
   // \error as lod::WorldFrame for axes without a world position.
   explicit GeometryPlacer(const format::Manifest& manifest);
 
-  // The node's meshes packed. `slot_of_id(id)` gives the slot of a sub-volume id (the
+  // The node's meshes of time step `step` packed. `slot_of_id(id)` gives the slot of a sub-volume id (the
   // position of the sub-volume in the scene); a mesh whose id has no slot is left out.
   // \error kInvalidInput naming the node when a mesh has a non-finite position or an
   // index out of range (the decoder checks both; this guards the upload).
   template <typename SlotOf>
   std::shared_ptr<const NodeGeometry> place(const protocol::NodeResult& result,
-                                            SlotOf slot_of_id) const;
+                                            std::uint32_t step, SlotOf slot_of_id) const;
 
   // True when the axis-to-world map reverses orientation (an odd number of decreasing
   // axis maps, e.g. a pressure axis): counter-clockwise triangles seen from outside in
@@ -73,9 +74,11 @@ class GeometryPlacer {
 
 template <typename SlotOf>
 std::shared_ptr<const NodeGeometry> GeometryPlacer::place(const protocol::NodeResult& result,
+                                                          std::uint32_t step,
                                                           SlotOf slot_of_id) const {
   auto geometry = std::make_shared<NodeGeometry>();
   geometry->node = result.node;
+  geometry->step = step;
   for (const auto& sub : result.subvolumes) {
     if (sub.outcome != NodeOutcome::kMesh || sub.mesh.empty()) continue;
     const int slot = slot_of_id(sub.subvolume_id);

@@ -172,6 +172,7 @@ void ViewLink::start_generation(const Scene* scene, std::uint32_t step, std::uin
     started = client_->set_time(step);
   }
   epoch_ = epoch;
+  step_ = started.step;
   generation_active_ = true;
   push_event(message_event(LinkEvent::Kind::kGeneration, epoch, 0,
                            std::to_string(started.step)));
@@ -189,7 +190,7 @@ void ViewLink::receive(protocol::Message& message) {
   if (auto* result = std::get_if<protocol::NodeResult>(&message)) {
     LinkEvent event = message_event(LinkEvent::Kind::kResult, epoch_, result->node, {});
     try {
-      event.geometry = placer_.place(*result, [&](std::uint32_t id) {
+      event.geometry = placer_.place(*result, step_, [&](std::uint32_t id) {
         const auto it = std::find(slot_ids_.begin(), slot_ids_.end(), id);
         return it == slot_ids_.end() ? -1 : static_cast<int>(it - slot_ids_.begin());
       });

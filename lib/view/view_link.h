@@ -100,6 +100,7 @@ class ViewLink {
   std::unordered_map<NodeId, float> cut_;  // the render thread's cut, as sent
   std::vector<std::uint32_t> slot_ids_;    // sub-volume id per slot, current scene
   std::uint64_t epoch_ = 0;                // in effect
+  std::uint32_t step_ = 0;                 // time step of the generation in effect
   bool generation_active_ = false;
 
   mutable std::mutex mutex_;  // guards everything below

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # strielad-view: bad flags and files give one line on stderr with the documented exit
-# status; --offscreen renders a store (one camera and a camera path) to PNG files; the
+# status; --offscreen renders a store (one camera and a camera path) to PNG files, and
+# meshes moved with the wind (--advect-seconds); the
 # window runs a few frames under Xvfb and saves a screenshot (skipped without xvfb-run).
 # Usage: view_cli_test.sh STRIELAD_CONVERT WORK_DIR (strielad-view is found next to
 # strielad-convert in the build tree).
@@ -18,7 +19,7 @@ expect() { expect_cli_error "$view" "$work" "$@"; }
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 is_png() { [[ -s "$1" ]] && [[ "$(head -c 4 "$1" | od -An -c | tr -d ' ')" == "211PNG" ]]; }
 
-"$convert" sample -o "$work/data" --dims 40x36x12 --steps 2 --vars clw,cli,qr,ta -q
+"$convert" sample -o "$work/data" --dims 40x36x12 --steps 2 --vars clw,cli,qr,ta,ua,va,wa -q
 "$convert" "$work"/data/*.nc -o "$work/store" --brick 8 -q
 echo '{"subvolumes": [{"id": 1, "limits": [{"var": "nope", "min": 1e-6}]}]}' > "$work/unknown-var.json"
 printf 'vec4 color(int id, float attributes[MAX_ATTRIBUTES], vec3 normal, vec3 sun,\n' > "$work/bad.glsl"
@@ -58,6 +59,22 @@ if "$view" "$work/store" --offscreen --size 96x64 --threads 2 --camera "$work/pa
   echo "ok: camera path frames"
 else
   fail "camera path"; cat "$work/path.err"
+fi
+
+# Wind advection: the meshes of step 0 moved 300 s (to step 1's time) differ from the
+# unmoved ones; bad uses are refused with one line.
+expect 2 "--advect-seconds is for --offscreen" -- "$work/store" --advect-seconds 60
+expect 3 "omega" -- "$work/store" --wind ua,va,omega --advect-seconds 60 --offscreen --out "$work/x.png"
+expect 2 "no next step" -- "$work/store" --time 1 --advect-seconds 60 --offscreen --out "$work/x.png"
+expect 2 "U,V,W" -- "$work/store" --wind ua,va --advect-seconds 60 --offscreen --out "$work/x.png"
+if "$view" "$work/store" --offscreen --size 160x90 --threads 2 --advect-seconds 300 \
+    --out "$work/moved.png" --json >"$work/moved.json" 2>"$work/moved.err"; then
+  is_png "$work/moved.png" || fail "moved.png is not a PNG image"
+  grep -q '"nodes_moved":[1-9]' "$work/moved.json" || fail "nothing moved: $(cat "$work/moved.json")"
+  ! cmp -s "$work/moved.png" "$work/home.png" || fail "the moved picture is the unmoved one"
+  echo "ok: --advect-seconds"
+else
+  fail "--advect-seconds"; cat "$work/moved.err"
 fi
 
 # Through a running strielad-serve (--connect, with a token).

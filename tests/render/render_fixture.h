@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Shared set-up of the render tests: a headless OpenGL context, the sphere store
 // (support/sphere_store.h) served in-process, and a helper that renders a scene from a
-// camera once its cut is complete.
+// camera once its cut is complete (optionally with meshes moved by displacement maps).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -76,7 +76,8 @@ class RenderTest : public ::testing::Test {
 
   // Renders `scene` seen from `eye` towards `target` with `shader`.
   render::CompleteFrame render(const Scene& scene, const lod::Vec3& eye, const lod::Vec3& target,
-                               const std::string& shader) {
+                               const std::string& shader,
+                               const std::vector<render::MeshMotion>& motions = {}) {
     if (!controller_) {
       controller_ = std::make_unique<view::ViewController>(*link_, scene);
     } else {
@@ -88,8 +89,9 @@ class RenderTest : public ::testing::Test {
     const auto update = renderer_->set_user_shader(shader, "test.glsl");
     EXPECT_TRUE(update.ok) << update.error;
     const auto cam = camera(eye, target);
-    return render::render_complete_frame(*controller_, *renderer_, *target_,
-                                         render::frame_inputs(*controller_, cam));
+    auto inputs = render::frame_inputs(*controller_, cam);
+    inputs.motions = motions;
+    return render::render_complete_frame(*controller_, *renderer_, *target_, inputs);
   }
 
   // Pixel (column, row from the top) where a world point appears.

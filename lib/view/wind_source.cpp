@@ -1,0 +1,161 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "view/wind_source.h"
+
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/error.h"
+#include "view/default_scene.h"
+
+namespace strielad::view {
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string::npos) return {};
+  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
+// One component at one step on the level's grid, x fastest; NaN where missing.
+std::vector<float> read_level(const Store& store, std::uint32_t step, std::uint32_t variable,
+                              std::uint32_t level, std::atomic<std::uint64_t>& bytes) {
+  const auto& layout = store.octree();
+  const LevelShape& shape = layout.level(level);
+  const auto& n = shape.samples;
+  std::vector<float> out(n[0] * n[1] * n[2], std::numeric_limits<float>::quiet_NaN());
+  const std::size_t nodes = shape.node_count();
+  tbb::parallel_for(std::size_t{0}, nodes, [&](std::size_t i) {
+    const NodeId id = static_cast<NodeId>(shape.first_node + i);
+    const Brick brick = store.read_brick(step, variable, id);
+    bytes += brick.bytes.size();
+    const std::vector<float> values = brick.to_vector<float>();
+    const IndexBox& box = brick.box;
+    // Neighbouring bricks share their boundary samples (equal values): writing them
+    // twice from two threads writes the same bits.
+    for (std::size_t z = 0; z < brick.dims[2]; ++z) {
+      for (std::size_t y = 0; y < brick.dims[1]; ++y) {
+        const std::size_t src = (z * brick.dims[1] + y) * brick.dims[0];
+        const std::size_t dst = ((box.lo[2] + z) * n[1] + box.lo[1] + y) * n[0] + box.lo[0];
+        std::copy_n(values.data() + src, brick.dims[0], out.data() + dst);
+      }
+    }
+  });
+  return out;
+}
+
+}  // namespace
+
+WindNames parse_wind_names(const std::string& text) {
+  std::vector<std::string> parts;
+  std::stringstream in(text);
+  for (std::string part; std::getline(in, part, ',');) parts.push_back(trim(part));
+  if (parts.size() != 3 || parts[0].empty() || parts[1].empty() || parts[2].empty()) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "wind variables '{}': expected three names U,V,W (e.g. ua,va,wa)", text);
+  }
+  return WindNames{parts[0], parts[1], parts[2]};
+}
+
+WindUnits wind_units(const lod::WorldFrame& frame) {
+  WindUnits units;
+  if (frame.horizontal() == lod::HorizontalMap::kGeographic) {
+    units.horizontal = advect::Horizontal::kDegrees;
+    units.scale[0] = units.scale[1] = 1.0;
+  } else {
+    units.horizontal = advect::Horizontal::kMetres;
+    units.scale[0] = frame.km_per_unit(0) * 1000.0;
+    units.scale[1] = frame.km_per_unit(1) * 1000.0;
+  }
+  units.vertical = frame.vertical() == lod::VerticalMap::kPressure ? advect::Vertical::kPascals
+                                                                    : advect::Vertical::kMetres;
+  units.scale[2] = frame.vertical_unit();
+  return units;
+}
+
+std::uint32_t choose_wind_level(const OctreeLayout& layout, std::size_t max_samples) {
+  for (std::size_t l = 0; l < layout.level_count(); ++l) {
+    const auto& s = layout.level(l).samples;
+    if (s[0] * s[1] * s[2] <= max_samples) return static_cast<std::uint32_t>(l);
+  }
+  return static_cast<std::uint32_t>(layout.level_count() - 1);
+}
+
+WindStep load_wind_step(const Store& store, std::uint32_t step, const WindNames& names,
+                        std::uint32_t level) {
+  const auto& manifest = store.manifest();
+  const auto& layout = store.octree();
+  if (level >= layout.level_count()) {
+    throw make_error(ErrorCode::kInvalidArgument, "{}: wind level {}: the octree has {} levels",
+                     store.path().string(), level, layout.level_count());
+  }
+  if (step + 1 >= store.step_count()) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "{}: time step {}: no later step to advect towards (the store has {})",
+                     store.path().string(), step, store.step_count());
+  }
+  const auto unit_seconds = time_unit_seconds(manifest);
+  if (!unit_seconds) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "{}: time axis '{}' has units '{}': advection needs '<seconds|minutes|"
+                     "hours|days> since <date>'",
+                     store.path().string(), manifest.time.name, manifest.time.units);
+  }
+  const double seconds = (manifest.time.values[step + 1] - manifest.time.values[step]) *
+                         *unit_seconds;
+  if (!(seconds > 0) || !std::isfinite(seconds)) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "{}: time steps {} and {} are not in increasing time ({} s apart)",
+                     store.path().string(), step, step + 1, seconds);
+  }
+  std::array<std::uint32_t, 3> variables{};
+  const std::array<const std::string*, 3> wanted{&names.u, &names.v, &names.w};
+  for (int c = 0; c < 3; ++c) {
+    try {
+      variables[c] = static_cast<std::uint32_t>(manifest.variable_index(*wanted[c]));
+    } catch (const Error& e) {
+      throw make_error(ErrorCode::kNotFound, "{}: wind component: {}", store.path().string(),
+                       e.what());
+    }
+  }
+
+  const lod::WorldFrame frame(manifest, lod::WorldFrameOptions{.vertical_exaggeration = 1.0});
+  const WindUnits units = wind_units(frame);
+  advect::WindGrid grid;
+  grid.horizontal = units.horizontal;
+  grid.vertical = units.vertical;
+  const LevelShape& shape = layout.level(level);
+  const std::array<const std::vector<double>*, 3> axis_values{&manifest.x.values,
+                                                              &manifest.y.values,
+                                                              &manifest.z.values};
+  for (int a = 0; a < 3; ++a) {
+    for (std::size_t c = 0; c < shape.samples[a]; ++c) {
+      grid.axes[a].push_back((*axis_values[a])[layout.fine_index(level, a, c)] *
+                             units.scale[a]);
+    }
+  }
+  std::atomic<std::uint64_t> bytes{0};
+  std::array<advect::WindSlice, 2> slices;
+  for (int t = 0; t < 2; ++t) {
+    slices[t].u = read_level(store, step + t, variables[0], level, bytes);
+    slices[t].v = read_level(store, step + t, variables[1], level, bytes);
+    slices[t].w = read_level(store, step + t, variables[2], level, bytes);
+  }
+  try {
+    return WindStep{.field = advect::WindField(std::move(grid), 0.0, std::move(slices[0]),
+                                               seconds, std::move(slices[1])),
+                    .units = units,
+                    .step = step,
+                    .seconds = seconds,
+                    .level = level,
+                    .bytes_read = bytes.load()};
+  } catch (const Error& e) {
+    throw make_error(e.code(), "{}: wind at level {}: {}", store.path().string(), level,
+                     e.what());
+  }
+}
+
+}  // namespace strielad::view
