@@ -9,7 +9,7 @@
 //
 // The level: wind for display does not need full resolution. choose_wind_level picks
 // the finest level with at most `max_samples` samples (default 4 M: 96 MB of float wind
-// for the two steps; level 3 of the paper's 1429 x 1556 x 150 grid, 180 x 196 x 19).
+// for the two steps; level 3 of the paper's 1429 x 1556 x 150 grid, 180 x 196 x 20).
 #pragma once
 
 #include <array>
