@@ -52,6 +52,11 @@ int main(int argc, char** argv) {
         app.add_option("--advect-seconds", args->advect_seconds,
                        "Offscreen: draw the step's meshes moved this many seconds towards the "
                        "next step (implies --advect)");
+        app.add_option("--sun", args->sun,
+                       "Light: 'time' (default) the sun's true direction at the simulation "
+                       "time over the domain centre (night is dark), or 'fixed' (from the "
+                       "south-southeast, 54 degrees up, whatever the time)")
+            ->check(CLI::IsMember({"time", "fixed"}));
         app.add_flag("--offscreen", args->offscreen,
                      "Render without a window (EGL; no X server needed) once the cut has fully "
                      "arrived, write --out and exit");

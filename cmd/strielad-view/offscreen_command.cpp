@@ -17,6 +17,7 @@
 #include "render/headless_context.h"
 #include "view/default_scene.h"
 #include "view/orbit_camera.h"
+#include "view/sun_direction.h"
 #include "view/view_controller.h"
 #include "viewer_args.h"
 #include "viewer_session.h"
@@ -111,8 +112,15 @@ int run_offscreen(const ViewerArgs& args) {
   render::OffscreenTarget target(width, height);
   const double time_s = view::seconds_since_first_step(controller.link().manifest(),
                                                        controller.time_step()) + advect_s;
+  std::optional<view::SunAtTime> sun;
+  if (args.sun == "time") {
+    sun = view::sun_at_step(controller.link().placer().frame(), controller.link().manifest(),
+                            controller.time_step(), advect_s);
+    if (!sun) spdlog::info("the store's time axis or grid gives no real date or place: fixed sun");
+  }
   for (std::size_t i = 0; i < cameras.size(); ++i) {
     auto inputs = render::frame_inputs(controller, cameras[i]);
+    if (sun) inputs.sun_direction = sun->direction;
     inputs.time_seconds = time_s;
     inputs.motions = motions;
     const auto frame = render::render_complete_frame(controller, renderer, target, inputs,
@@ -128,6 +136,8 @@ int run_offscreen(const ViewerArgs& args) {
                           {"nodes_with_mesh", frame.nodes_with_mesh},
                           {"triangles", s.triangles_drawn},
                           {"advect_seconds", advect_s},
+                          {"sun_elevation_deg", sun ? nlohmann::json(sun->position.elevation_deg) : nlohmann::json()},
+                          {"sun_azimuth_deg", sun ? nlohmann::json(sun->position.azimuth_deg) : nlohmann::json()},
                           {"nodes_moved", s.nodes_moved},
                           {"advect_trajectories", motions.empty() ? 0 : motions[0].map->points()},
                           {"advect_evaluations", motions.empty() ? 0 : motions[0].map->evaluations},

@@ -34,6 +34,7 @@ struct ViewerArgs {
   std::string wind_store;         // where to read the wind; default: STORE
   std::optional<std::uint32_t> wind_level;
   std::optional<double> advect_seconds;  // offscreen: seconds after the step
+  std::string sun = "time";  // "time": the true sun at the simulation time; "fixed"
   // Headless.
   bool offscreen = false;
   std::string camera_file;  // formats/camera-path.md: one keyframe, or a path

@@ -199,6 +199,9 @@ void draw_panel(PanelState& state, const PanelInfo& info, const format::Manifest
       }
     }
     ImGui::TextDisabled("%s", info.advect_status.c_str());
+    if (info.sun_elevation_deg) {
+      ImGui::TextDisabled("sun %.1f deg above the horizon", *info.sun_elevation_deg);
+    }
     if (state.time_step < steps) {
       ImGui::TextDisabled("%s = %g %s", manifest.time.name.c_str(),
                           manifest.time.values[static_cast<std::size_t>(state.time_step)],

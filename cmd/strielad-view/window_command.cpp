@@ -28,6 +28,7 @@
 #include "view/advection_playback.h"
 #include "view/default_scene.h"
 #include "view/orbit_camera.h"
+#include "view/sun_direction.h"
 #include "view/view_controller.h"
 #include "viewer_args.h"
 #include "viewer_panel.h"
@@ -286,6 +287,14 @@ int run_window(const ViewerArgs& args) {
     if (playback && state.advect) {
       inputs.motions = playback->motions();
       inputs.time_seconds += playback->seconds();
+    }
+    if (args.sun == "time") {
+      const double after = playback && state.advect ? playback->seconds() : 0.0;
+      if (const auto sun = view::sun_at_step(controller.link().placer().frame(), manifest,
+                                             controller.time_step(), after)) {
+        inputs.sun_direction = sun->direction;
+        info.sun_elevation_deg = sun->position.elevation_deg;
+      }
     }
     info.step_seconds = playback ? playback->step_seconds() : 0;
     if (state.boxes) {

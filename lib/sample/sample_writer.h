@@ -23,7 +23,9 @@ struct SampleFileLayout {
 };
 
 inline constexpr float kSampleFillValue = -9.0e33f;
-inline constexpr const char* kSampleTimeUnits = "seconds since 2013-04-26 00:00:00";
+// Noon UTC: the HD(CP)2 LEM day over Germany was a day of daytime convection, and a
+// sample lit by the true sun (strielad-view --sun time) should be seen in daylight.
+inline constexpr const char* kSampleTimeUnits = "seconds since 2013-04-26 12:00:00";
 
 class SampleFileWriter {
  public:

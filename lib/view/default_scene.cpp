@@ -5,6 +5,7 @@
 #include <cctype>
 
 #include "core/error.h"
+#include "geo/cf_time.h"
 
 namespace strielad::view {
 namespace {
@@ -74,18 +75,11 @@ Scene default_scene(const format::Manifest& manifest, std::uint32_t time) {
 }
 
 std::optional<double> time_unit_seconds(const format::Manifest& manifest) {
-  const auto& t = manifest.time;
-  std::string unit;
-  for (const char c : t.units) {
-    if (std::isspace(static_cast<unsigned char>(c))) break;
-    unit += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  }
-  if (t.units.find(" since ") == std::string::npos) return std::nullopt;
-  if (unit == "seconds" || unit == "second" || unit == "s" || unit == "sec") return 1.0;
-  if (unit == "minutes" || unit == "minute" || unit == "min") return 60.0;
-  if (unit == "hours" || unit == "hour" || unit == "h") return 3600.0;
-  if (unit == "days" || unit == "day" || unit == "d") return 86400.0;
-  return std::nullopt;
+  const auto& units = manifest.time.units;
+  const auto since = units.find(" since ");
+  if (since == std::string::npos) return std::nullopt;
+  const auto first = units.find_first_not_of(' ');
+  return geo::cf_unit_seconds(std::string_view(units).substr(first, since - first));
 }
 
 double seconds_since_first_step(const format::Manifest& manifest, std::uint32_t step) {

@@ -50,7 +50,7 @@ TEST_F(SampleCfAttributesTest, CoordinatesCarryCfAttributes) {
   EXPECT_EQ(f.text_att("height", "positive"), "up");
   EXPECT_EQ(f.text_att("time", "axis"), "T");
   EXPECT_EQ(f.text_att("time", "standard_name"), "time");
-  EXPECT_EQ(f.text_att("time", "units"), "seconds since 2013-04-26 00:00:00");
+  EXPECT_EQ(f.text_att("time", "units"), "seconds since 2013-04-26 12:00:00");
   EXPECT_EQ(f.text_att("time", "calendar"), "proleptic_gregorian");
   for (const char* c : {"lon", "lat", "height", "time"}) {
     EXPECT_FALSE(f.text_att(c, "long_name").empty()) << c;
