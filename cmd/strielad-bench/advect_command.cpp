@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // strielad-bench advect [--repeat N] [--trajectories N] [--quick] [--csv FILE] [--json FILE]
+//                       [--plot FILE.png]
 #include <fmt/format.h>
 
+#include <iostream>
 #include <memory>
 
 #include "bench/advect_suite.h"
@@ -15,7 +17,7 @@ struct AdvectFlags {
   int repeat = 5;
   int trajectories = 16;
   bool quick = false;
-  std::string csv, json, command_line;
+  std::string csv, json, plot, command_line;
 };
 
 int run(const AdvectFlags& f) {
@@ -23,6 +25,7 @@ int run(const AdvectFlags& f) {
   o.repeat = f.repeat;
   o.trajectories = f.trajectories;
   o.quick = f.quick;
+  o.plot_png = f.plot;
   o.command_line = f.command_line;
   const auto report = bench::run_advect_suite(o);
   const auto tables = bench::advect_report_tables(report);
@@ -33,6 +36,7 @@ int run(const AdvectFlags& f) {
       report.machine.value("cores", 0u));
   emit_suite_report(header, tables, f.csv, f.json,
                     [&] { return bench::advect_report_json(report, tables); });
+  if (!report.plot_status.empty()) std::cout << "plot: " << report.plot_status << "\n";
   return 0;
 }
 
@@ -43,13 +47,16 @@ void register_advect(CLI::App& app, cli::Action& action, std::string command_lin
   f->command_line = std::move(command_line);
   auto* sub = app.add_subcommand(
       "advect",
-      "Error against run time of the advection integrators (Euler, RK4, Dormand-Prince 5(4)) "
-      "on flows with known trajectories, stiff ones included");
+      "Error against run time of the advection integrators (Euler, RK4, Dormand-Prince 5(4), "
+      "Rosenbrock RODAS3) on flows with known trajectories, stiff ones included, and on the "
+      "sample generator's wind");
   sub->add_option("--repeat", f->repeat, "Timed runs per setting")->capture_default_str();
   sub->add_option("--trajectories", f->trajectories, "Start points per flow")->capture_default_str();
   sub->add_flag("--quick", f->quick, "Few settings and start points: checks the harness");
   sub->add_option("--csv", f->csv, "Write the tables as CSV");
   sub->add_option("--json", f->json, "Write the report as JSON");
+  sub->add_option("--plot", f->plot,
+                  "Write the work-precision diagrams (PNG via gnuplot, with its .gp and .dat)");
   sub->callback([f, &action] { action = [f] { return run(*f); }; });
 }
 

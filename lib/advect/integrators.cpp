@@ -4,21 +4,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "advect/rosenbrock_stepper.h"
+#include "advect/stepper_support.h"
 #include "core/error.h"
 
 namespace strielad::advect {
 namespace {
 
-// The field with a count of its evaluations (what work-precision diagrams plot).
-struct Field {
-  const WindField& wind;
-  std::uint64_t evaluations = 0;
-  Sample rate(const Vec3& p, double t, Vec3& out) {
-    ++evaluations;
-    return wind.rate(p, t, out);
-  }
-  bool inside(const Vec3& p) const { return wind.inside(p); }
-};
+using Field = CountedField;
 
 Vec3 axpy(const Vec3& p, double h, const Vec3& k) {
   return {p[0] + h * k[0], p[1] + h * k[1], p[2] + h * k[2]};
@@ -94,18 +87,13 @@ DopriStep dopri_step(Field& field, const Vec3& p, double t, double h, const Vec3
     return r;
   }
   if (!stage(r.next, t + h, r.k7)) return r;
-  double sum = 0;
+  Vec3 err;
   for (int a = 0; a < 3; ++a) {
-    const double err = h * (e1 * k1[a] + e3 * k3[a] + e4 * k4[a] + e5 * k5[a] + e6 * k6[a] +
-                            e7 * r.k7[a]);
-    const double scale = o.atol[a] + o.rtol * std::max(std::abs(p[a]), std::abs(r.next[a]));
-    sum += (err / scale) * (err / scale);
+    err[a] = h * (e1 * k1[a] + e3 * k3[a] + e4 * k4[a] + e5 * k5[a] + e6 * k6[a] + e7 * r.k7[a]);
   }
-  r.error = std::sqrt(sum / 3);
+  r.error = scaled_error(err, p, r.next, o);
   return r;
 }
-
-Stop stop_for(Sample s) { return s == Sample::kMissing ? Stop::kMissingWind : Stop::kLeftDomain; }
 
 void validate(const Vec3& start, double t_start, double t_end, const AdvectOptions& o) {
   for (int a = 0; a < 3; ++a) {
@@ -247,6 +235,7 @@ std::string_view method_name(Method method) {
     case Method::kEuler: return "euler";
     case Method::kRk4: return "rk4";
     case Method::kDopri5: return "dopri5";
+    case Method::kRosenbrock: return "rosenbrock";
   }
   return "unknown";
 }
@@ -271,8 +260,13 @@ AdvectResult advect(const WindField& field, const Vec3& start, double t_start, d
     return r;
   }
   Field counted{field};
-  return options.method == Method::kDopri5 ? advect_dopri(counted, start, t_start, t_end, options)
-                                           : advect_fixed(counted, start, t_start, t_end, options);
+  switch (options.method) {
+    case Method::kDopri5: return advect_dopri(counted, start, t_start, t_end, options);
+    case Method::kRosenbrock: return advect_rosenbrock(counted, start, t_start, t_end, options);
+    case Method::kEuler:
+    case Method::kRk4: break;
+  }
+  return advect_fixed(counted, start, t_start, t_end, options);
 }
 
 }  // namespace strielad::advect

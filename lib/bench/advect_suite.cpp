@@ -3,15 +3,19 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <map>
 #include <numbers>
+#include <span>
 
 #include "advect/integrators.h"
 #include "bench/latency_stats.h"
 #include "bench/machine_info.h"
+#include "sample/sample_atmosphere.h"
+#include "sample/sample_grid.h"
 
 namespace strielad::bench {
 namespace {
@@ -41,7 +45,49 @@ struct Flow {
   std::vector<Vec3> starts;
   Exact exact;  // null: the reference is RK4 with a very small step
   std::vector<double> euler_steps, rk4_steps;
+  // The adaptive methods' absolute tolerance: 1 mm in the axis units.
+  Vec3 atol{1e-3, 1e-3, 1e-3};
 };
+
+constexpr double kDegree = kPi / 180;
+constexpr double kReferenceStepS = 0.25;
+
+// Distance in metres between two positions on the flow's grid (degrees: on the local
+// tangent plane, which is exact enough for errors of kilometres and less).
+double distance_m(const advect::WindGrid& grid, const Vec3& a, const Vec3& b) {
+  if (grid.horizontal == advect::Horizontal::kMetres) {
+    return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+  }
+  const double cos_lat = std::cos(0.5 * (a[1] + b[1]) * kDegree);
+  return std::hypot((a[0] - b[0]) * kDegree * advect::kEarthRadiusM * cos_lat,
+                    (a[1] - b[1]) * kDegree * advect::kEarthRadiusM, a[2] - b[2]);
+}
+
+// The sample generator's wind (SampleAtmosphere: ua, va, wa, as `strielad-convert
+// sample` writes them) at times 0 and t1 on its lon/lat/stretched-height grid of `dims`.
+// Heights run top to bottom, as in the sample files; WindField takes descending axes.
+advect::WindField generated_wind(Dims3 dims, std::uint64_t seed, double t1) {
+  const sample::SampleGrid grid(dims);
+  const std::size_t level = grid.level_size();
+  std::array<advect::WindSlice, 2> slices;
+  for (int s = 0; s < 2; ++s) {
+    const sample::SampleAtmosphere atmosphere(grid, seed, s == 0 ? 0.0 : t1);
+    const auto fill = [&](sample::SampleVariable variable, std::vector<float>& out) {
+      out.resize(dims.count());
+      for (std::size_t k = 0; k < dims.z; ++k) {
+        atmosphere.fill_level(variable, k, std::span<float>(out).subspan(k * level, level));
+      }
+    };
+    fill(sample::SampleVariable::kUa, slices[s].u);
+    fill(sample::SampleVariable::kVa, slices[s].v);
+    fill(sample::SampleVariable::kWa, slices[s].w);
+  }
+  advect::WindGrid wind_grid;
+  wind_grid.axes = {grid.lon, grid.lat, grid.height};
+  wind_grid.horizontal = advect::Horizontal::kDegrees;
+  wind_grid.vertical = advect::Vertical::kMetres;
+  return advect::WindField(std::move(wind_grid), 0, std::move(slices[0]), t1, std::move(slices[1]));
+}
 
 // Start points on a ring or a line inside the domain, the same for every method.
 std::vector<Vec3> spread(int n, const std::function<Vec3(double u)>& at) {
@@ -65,7 +111,7 @@ std::vector<Flow> make_flows(const AdvectSuiteOptions& o) {
              return Vec3{s[0] * std::cos(a) - s[1] * std::sin(a), s[0] * std::sin(a) + s[1] * std::cos(a), s[2]};
            },
            {60, 30, 15, 7.5, 3.75},
-           {900, 600, 300, 120, 60}};
+           {900, 600, 300, 120, 60, 30}};
     flows.push_back(std::move(f));
   }
   {  // Shear layer: u = s z, rising at w; x(t) = x0 + s (z0 t + w t^2 / 2).
@@ -79,7 +125,7 @@ std::vector<Flow> make_flows(const AdvectSuiteOptions& o) {
              return Vec3{s[0] + shear * (s[2] * t + rise * t * t / 2), s[1], s[2] + rise * t};
            },
            {60, 30, 15, 7.5, 3.75},
-           {900, 600, 300, 120, 60}};
+           {900, 600, 300, 120, 60, 30}};
     flows.push_back(std::move(f));
   }
   for (const double k : {1.0, 10.0}) {  // Stiff: fast convergence to y = y0, slow in x.
@@ -111,7 +157,23 @@ std::vector<Flow> make_flows(const AdvectSuiteOptions& o) {
            spread(n, [](double u) { return Vec3{120e3 + 160e3 * u, 280e3 - 160e3 * u, 3000 + 4000 * u}; }),
            nullptr,
            {60, 30, 15, 7.5, 3.75},
-           {900, 600, 300, 120, 60}};
+           {900, 600, 300, 120, 60, 30}};
+    flows.push_back(std::move(f));
+  }
+  {  // The sample generator's wind between two outputs an hour apart, on a coarse view of
+     // its grid (4.5-14.5 E, 47.5-54.5 N, 21 km to 20 m): jet, cyclone, noise and the
+     // sharp updrafts of its clouds. Start points inside, away from the edges.
+    const Dims3 dims = o.quick ? Dims3{41, 40, 20} : Dims3{143, 156, 60};
+    Flow f{fmt::format("generated sample wind, {}x{}x{} lon/lat/height (1 h, reference RK4 0.25 s)",
+                       dims.x, dims.y, dims.z),
+           generated_wind(dims, 1, 3600),
+           3600,
+           spread(n, [](double u) { return Vec3{5.5 + 4.0 * u, 53.0 - 4.5 * u, 1500 + 7000 * u}; }),
+           nullptr,
+           {60, 30, 15, 7.5, 3.75},
+           {900, 600, 300, 120, 60, 30, 15}};
+    const double degree_m = kDegree * advect::kEarthRadiusM;
+    f.atol = {1e-3 / degree_m, 1e-3 / degree_m, 1e-3};
     flows.push_back(std::move(f));
   }
   if (o.quick) {
@@ -149,8 +211,7 @@ AdvectRun run_setting(const Flow& flow, const std::vector<Vec3>& truth, const Se
       ++stops[std::string(advect::stop_name(res.stop))];
       if (res.stop == advect::Stop::kReached) {
         ++run.reached;
-        errors.push_back(std::hypot(res.position[0] - truth[i][0], res.position[1] - truth[i][1],
-                                    res.position[2] - truth[i][2]));
+        errors.push_back(distance_m(flow.field.grid(), res.position, truth[i]));
       }
     }
   }
@@ -166,6 +227,63 @@ AdvectRun run_setting(const Flow& flow, const std::vector<Vec3>& truth, const Se
   return run;
 }
 
+// The truth at the end time per start point: exact, or RK4 with very small steps. A
+// start point whose reference trajectory leaves the domain (or meets fill) has no truth
+// to compare with: it is left out of the flow, and the note says so.
+std::vector<Vec3> end_positions(Flow& flow, std::string& note) {
+  std::vector<Vec3> truth, kept;
+  int left = 0;
+  for (const auto& start : flow.starts) {
+    if (flow.exact) {
+      truth.push_back(flow.exact(start, flow.duration));
+      kept.push_back(start);
+      continue;
+    }
+    const auto ref = advect::advect(flow.field, start, 0, flow.duration,
+                                    {.method = advect::Method::kRk4, .step_s = kReferenceStepS,
+                                     .max_steps = 100'000'000});
+    if (ref.stop != advect::Stop::kReached) {
+      ++left;
+      continue;
+    }
+    truth.push_back(ref.position);
+    kept.push_back(start);
+  }
+  if (left > 0) {
+    note = fmt::format("{} of {} start points left out: their reference trajectory stopped early "
+                       "(left the domain or met fill)",
+                       left, flow.starts.size());
+  }
+  flow.starts = std::move(kept);
+  return truth;
+}
+
+std::vector<Setting> settings_for(const Flow& flow, bool quick) {
+  std::vector<Setting> settings;
+  for (const double h : flow.euler_steps) {
+    settings.push_back({{.method = advect::Method::kEuler, .step_s = h, .max_steps = 100'000'000},
+                        fmt::format("step {:g} s", h)});
+  }
+  for (const double h : flow.rk4_steps) {
+    settings.push_back({{.method = advect::Method::kRk4, .step_s = h, .max_steps = 100'000'000},
+                        fmt::format("step {:g} s", h)});
+  }
+  const std::vector<double> tolerances =
+      quick ? std::vector<double>{1e-4, 1e-7}
+            : std::vector<double>{1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
+  for (const auto method : {advect::Method::kDopri5, advect::Method::kRosenbrock}) {
+    for (const double rtol : tolerances) {
+      advect::AdvectOptions a;
+      a.method = method;
+      a.rtol = rtol;
+      a.atol = flow.atol;
+      a.step_s = 60;
+      settings.push_back({a, fmt::format("rtol {:.0e}", rtol)});
+    }
+  }
+  return settings;
+}
+
 }  // namespace
 
 AdvectSuiteReport run_advect_suite(const AdvectSuiteOptions& o) {
@@ -173,50 +291,27 @@ AdvectSuiteReport run_advect_suite(const AdvectSuiteOptions& o) {
   AdvectSuiteReport report;
   report.options = o;
   const int repeat = o.quick ? 1 : std::max(o.repeat, 1);
-  for (const auto& flow : make_flows(o)) {
-    std::vector<Vec3> truth;
-    for (const auto& start : flow.starts) {
-      if (flow.exact) {
-        truth.push_back(flow.exact(start, flow.duration));
-      } else {
-        const auto ref = advect::advect(flow.field, start, 0, flow.duration,
-                                        {.method = advect::Method::kRk4, .step_s = 0.25,
-                                         .max_steps = 100'000'000});
-        truth.push_back(ref.position);
-      }
+  for (auto& flow : make_flows(o)) {
+    AdvectFlowInfo info;
+    info.name = flow.name;
+    const std::vector<Vec3> truth = end_positions(flow, info.note);
+    info.trajectories = static_cast<int>(flow.starts.size());
+    report.flows.push_back(info);
+    if (flow.starts.empty()) continue;
+    for (const auto& s : settings_for(flow, o.quick)) {
+      report.runs.push_back(run_setting(flow, truth, s, repeat));
     }
-    std::vector<Setting> settings;
-    for (const double h : flow.euler_steps) {
-      settings.push_back({{.method = advect::Method::kEuler, .step_s = h, .max_steps = 100'000'000},
-                          fmt::format("step {:g} s", h)});
-    }
-    for (const double h : flow.rk4_steps) {
-      settings.push_back({{.method = advect::Method::kRk4, .step_s = h, .max_steps = 100'000'000},
-                          fmt::format("step {:g} s", h)});
-    }
-    const std::vector<double> tolerances = o.quick ? std::vector<double>{1e-4, 1e-7}
-                                                   : std::vector<double>{1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9};
-    for (const double rtol : tolerances) {
-      advect::AdvectOptions a;
-      a.method = advect::Method::kDopri5;
-      a.rtol = rtol;
-      a.atol = {1e-3, 1e-3, 1e-3};  // metres
-      a.step_s = 60;
-      settings.push_back({a, fmt::format("rtol {:.0e}", rtol)});
-    }
-    for (const auto& s : settings) report.runs.push_back(run_setting(flow, truth, s, repeat));
   }
   report.machine = machine_info("/tmp");
   report.seconds = std::chrono::duration<double>(Clock::now() - suite_start).count();
+  if (!o.plot_png.empty()) report.plot_status = write_advect_plot(report, o.plot_png);
   return report;
 }
 
 std::vector<Table> advect_report_tables(const AdvectSuiteReport& report) {
   std::vector<Table> tables;
   std::vector<std::string> flows;
-  for (const auto& r : report.runs) {
-    if (flows.empty() || flows.back() != r.flow) flows.push_back(r.flow);
-  }
+  for (const auto& info : report.flows) flows.push_back(info.name);
   for (std::size_t f = 0; f < flows.size(); ++f) {
     Table t;
     t.name = fmt::format("flow_{}", f + 1);
@@ -231,16 +326,17 @@ std::vector<Table> advect_report_tables(const AdvectSuiteReport& report) {
              Cell(r.evaluations ? r.wall_us / double(r.evaluations) : 0.0, 3), r.stops});
     }
     t.notes.push_back("error: distance at the end time to the exact (or reference) position, over all start points; '-' when some stopped early (see trajectories)");
+    if (!report.flows[f].note.empty()) t.notes.push_back(report.flows[f].note);
     tables.push_back(std::move(t));
   }
   // The cheapest setting per method that brings every trajectory within 1 m.
   Table best;
   best.name = "cheapest_within_1m";
   best.title = "Fewest field evaluations with every trajectory within 1 m of the truth";
-  best.columns = {"flow", "euler", "rk4", "dopri5"};
+  best.columns = {"flow", "euler", "rk4", "dopri5", "rosenbrock"};
   for (const auto& flow : flows) {
     std::vector<Cell> row{flow};
-    for (const char* m : {"euler", "rk4", "dopri5"}) {
+    for (const char* m : {"euler", "rk4", "dopri5", "rosenbrock"}) {
       const AdvectRun* pick = nullptr;
       for (const auto& r : report.runs) {
         if (r.flow == flow && r.method == m && !std::isnan(r.max_error_m) && r.max_error_m <= 1.0 &&
@@ -273,11 +369,17 @@ nlohmann::json advect_report_json(const AdvectSuiteReport& report, const std::ve
   }
   nlohmann::json t = nlohmann::json::array();
   for (const auto& table : tables) t.push_back(table_json(table));
+  nlohmann::json flows = nlohmann::json::array();
+  for (const auto& f : report.flows) {
+    flows.push_back({{"name", f.name}, {"trajectories", f.trajectories}, {"note", f.note}});
+  }
   return {{"suite", "advect"},
           {"command", report.options.command_line},
           {"options", {{"repeat", report.options.repeat}, {"trajectories", report.options.trajectories}, {"quick", report.options.quick}}},
           {"machine", report.machine},
           {"seconds", report.seconds},
+          {"plot", report.plot_status},
+          {"flows", flows},
           {"runs", runs},
           {"tables", t}};
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Trajectories that cannot go on stop flagged, inside the domain, never with a NaN
-// position: leaving the domain (sideways and through the top with strong vertical wind),
-// fill in the wind, zero wind, the pole, tiny, zero and huge time spans, bad arguments.
+// position: leaving the domain (sideways, through the top with strong vertical wind and
+// backwards in time), fill in the wind, zero wind, the pole, tiny, zero and huge time
+// spans, bad arguments. Every integrator, Rosenbrock included.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,7 +32,7 @@ void expect_finite_inside(const advect::WindField& field, const advect::AdvectRe
 
 TEST(AdvectionEdgeCasesTest, LeavingTheDomainStopsAtItsBoundaryFlagged) {
   const auto field = uniform({10, 0, 0});  // 10 m/s east: the east edge after 900 s from x = 1000
-  for (const Method m : {Method::kEuler, Method::kRk4, Method::kDopri5}) {
+  for (const Method m : {Method::kEuler, Method::kRk4, Method::kDopri5, Method::kRosenbrock}) {
     const auto r = advect::advect(field, {1000, 5000, 5000}, 0, 3600, {.method = m, .step_s = 60});
     EXPECT_EQ(r.stop, Stop::kLeftDomain) << advect::method_name(m);
     expect_finite_inside(field, r);
@@ -42,10 +43,23 @@ TEST(AdvectionEdgeCasesTest, LeavingTheDomainStopsAtItsBoundaryFlagged) {
 
 TEST(AdvectionEdgeCasesTest, StrongVerticalWindLeavesThroughTheTop) {
   const auto field = uniform({0, 0, 50});  // 50 m/s up: the top (10 km) after 180 s
-  const auto r = advect::advect(field, {5000, 5000, 1000}, 0, 3600, {.method = Method::kDopri5});
-  EXPECT_EQ(r.stop, Stop::kLeftDomain);
-  expect_finite_inside(field, r);
-  EXPECT_NEAR(r.position[2], 10000, 0.1);
+  for (const Method m : {Method::kDopri5, Method::kRosenbrock}) {
+    const auto r = advect::advect(field, {5000, 5000, 1000}, 0, 3600, {.method = m});
+    EXPECT_EQ(r.stop, Stop::kLeftDomain) << advect::method_name(m);
+    expect_finite_inside(field, r);
+    EXPECT_NEAR(r.position[2], 10000, 0.1) << advect::method_name(m);
+  }
+}
+
+TEST(AdvectionEdgeCasesTest, LeavingTheDomainBackwardsInTimeStopsFlagged) {
+  const auto field = uniform({10, 0, 0});  // backwards the point moves west: x = 0 at t = 2700
+  for (const Method m : {Method::kRk4, Method::kDopri5, Method::kRosenbrock}) {
+    const auto r = advect::advect(field, {9000, 5000, 5000}, 3600, 0, {.method = m, .step_s = 60});
+    EXPECT_EQ(r.stop, Stop::kLeftDomain) << advect::method_name(m);
+    expect_finite_inside(field, r);
+    EXPECT_NEAR(r.position[0], 0, 0.1) << advect::method_name(m);
+    EXPECT_NEAR(r.t, 2700, 0.01) << advect::method_name(m);
+  }
 }
 
 TEST(AdvectionEdgeCasesTest, FillInTheWindStopsBeforeIt) {
@@ -55,7 +69,7 @@ TEST(AdvectionEdgeCasesTest, FillInTheWindStopsBeforeIt) {
   const auto field = sample_wind(std::move(g), 0, 3600, [](double x, double, double, double) {
     return Vec3{x >= 6000 ? std::nan("") : 10.0, 0, 0};
   });
-  for (const Method m : {Method::kEuler, Method::kRk4, Method::kDopri5}) {
+  for (const Method m : {Method::kEuler, Method::kRk4, Method::kDopri5, Method::kRosenbrock}) {
     const auto r = advect::advect(field, {1000, 5000, 5000}, 0, 3600, {.method = m, .step_s = 60});
     EXPECT_EQ(r.stop, Stop::kMissingWind) << advect::method_name(m);
     expect_finite_inside(field, r);
@@ -69,9 +83,11 @@ TEST(AdvectionEdgeCasesTest, ZeroWindKeepsThePointWhereItIs) {
   const auto r = advect::advect(field, {1234, 5678, 910}, 0, 3600);
   EXPECT_EQ(r.stop, Stop::kReached);
   EXPECT_EQ(r.position, (Vec3{1234, 5678, 910}));
-  const auto adaptive = advect::advect(field, {1234, 5678, 910}, 0, 3600, {.method = Method::kDopri5});
-  EXPECT_EQ(adaptive.position, (Vec3{1234, 5678, 910}));
-  EXPECT_LT(adaptive.evaluations, 50u);  // the adaptive step grows at once
+  for (const Method m : {Method::kDopri5, Method::kRosenbrock}) {
+    const auto adaptive = advect::advect(field, {1234, 5678, 910}, 0, 3600, {.method = m});
+    EXPECT_EQ(adaptive.position, (Vec3{1234, 5678, 910})) << advect::method_name(m);
+    EXPECT_LT(adaptive.evaluations, 50u) << advect::method_name(m);  // the step grows at once
+  }
 }
 
 TEST(AdvectionEdgeCasesTest, AtThePoleThePositionStaysFinite) {
@@ -80,7 +96,7 @@ TEST(AdvectionEdgeCasesTest, AtThePoleThePositionStaysFinite) {
   const auto field = sample_wind(std::move(g), 0, 3600, [](double, double, double, double) {
     return Vec3{10, 0, 0};
   });
-  for (const Method m : {Method::kEuler, Method::kRk4, Method::kDopri5}) {
+  for (const Method m : {Method::kEuler, Method::kRk4, Method::kDopri5, Method::kRosenbrock}) {
     const auto r = advect::advect(field, {0, 89.9999, 500}, 0, 3600, {.method = m});
     expect_finite_inside(field, r);
     EXPECT_NE(r.stop, Stop::kReached) << advect::method_name(m);
@@ -106,8 +122,10 @@ TEST(AdvectionEdgeCasesTest, TinyZeroAndHugeSpans) {
   EXPECT_EQ(huge.stop, Stop::kStepLimit);
   EXPECT_EQ(huge.evaluations, 0u);
   // The adaptive pair gets there in few steps (wind constant in time beyond t1).
-  const auto far = advect::advect(uniform({0, 0, 0}), {100, 100, 100}, 0, 1e9, {.method = Method::kDopri5});
-  EXPECT_EQ(far.stop, Stop::kReached);
+  for (const Method m : {Method::kDopri5, Method::kRosenbrock}) {
+    const auto far = advect::advect(uniform({0, 0, 0}), {100, 100, 100}, 0, 1e9, {.method = m});
+    EXPECT_EQ(far.stop, Stop::kReached) << advect::method_name(m);
+  }
 }
 
 TEST(AdvectionEdgeCasesTest, BadArgumentsAreRefused) {
