@@ -57,6 +57,12 @@ int main(int argc, char** argv) {
                        "time over the domain centre (night is dark), or 'fixed' (from the "
                        "south-southeast, 54 degrees up, whatever the time)")
             ->check(CLI::IsMember({"time", "fixed"}));
+        app.add_option("--tracks", args->tracks_file,
+                       "Flight tracks, CSV with columns id,time,lon,lat,altitude (README "
+                       "\"Flight tracks\")");
+        app.add_option("--track-minutes", args->track_minutes,
+                       "Draw the part of each track flown in the last N minutes (default 2)")
+            ->check(CLI::Range(0.0, 1e6));
         app.add_flag("--offscreen", args->offscreen,
                      "Render without a window (EGL; no X server needed) once the cut has fully "
                      "arrived, write --out and exit");

@@ -118,9 +118,11 @@ int run_offscreen(const ViewerArgs& args) {
                             controller.time_step(), advect_s);
     if (!sun) spdlog::info("the store's time axis or grid gives no real date or place: fixed sun");
   }
+  const auto tracks = tracks_at(session, args, controller.time_step(), advect_s);
   for (std::size_t i = 0; i < cameras.size(); ++i) {
     auto inputs = render::frame_inputs(controller, cameras[i]);
     if (sun) inputs.sun_direction = sun->direction;
+    inputs.tracks = tracks;
     inputs.time_seconds = time_s;
     inputs.motions = motions;
     const auto frame = render::render_complete_frame(controller, renderer, target, inputs,
@@ -139,6 +141,8 @@ int run_offscreen(const ViewerArgs& args) {
                           {"sun_elevation_deg", sun ? nlohmann::json(sun->position.elevation_deg) : nlohmann::json()},
                           {"sun_azimuth_deg", sun ? nlohmann::json(sun->position.azimuth_deg) : nlohmann::json()},
                           {"nodes_moved", s.nodes_moved},
+                          {"tracks_shown", tracks ? tracks->tracks_shown : 0},
+                          {"track_segments", tracks ? tracks->segment_count() : 0},
                           {"advect_trajectories", motions.empty() ? 0 : motions[0].map->points()},
                           {"advect_evaluations", motions.empty() ? 0 : motions[0].map->evaluations},
                           {"advect_map_ms", motions.empty() ? 0.0 : motions[0].map->compute_seconds * 1e3},

@@ -10,6 +10,7 @@
 #include "net/token_file.h"
 #include "view/default_scene.h"
 #include "view/local_server.h"
+#include "view/simulation_time.h"
 
 namespace strielad::view_cmd {
 
@@ -77,11 +78,40 @@ ViewerSession open_session(const ViewerArgs& args) {
   }
   session.link = std::make_unique<view::ViewLink>(std::move(client));
   open_advection(args, session);
+  if (!args.tracks_file.empty()) {
+    if (!view::step_julian_day(manifest, 0)) {
+      throw make_error(ErrorCode::kUnsupported,
+                       "--tracks {}: the store's time axis '{}' (units '{}', calendar '{}') has "
+                       "no real date to place the tracks in time",
+                       args.tracks_file, manifest.time.name, manifest.time.units,
+                       manifest.time.calendar);
+    }
+    if (session.link->placer().frame().horizontal() != lod::HorizontalMap::kGeographic) {
+      throw make_error(ErrorCode::kUnsupported,
+                       "--tracks {}: the store's grid has no longitude/latitude axes",
+                       args.tracks_file);
+    }
+    session.tracks = std::make_shared<const geo::FlightTracks>(
+        geo::load_flight_tracks_csv(args.tracks_file));
+    spdlog::info("{}: {} flight tracks, {} position reports", args.tracks_file,
+                 session.tracks->tracks.size(), session.tracks->reports);
+  }
   spdlog::info("{}: {} x {} x {} grid, {} variables, {} time steps, {} octree nodes",
                session.dataset_name, manifest.x.size(), manifest.y.size(), manifest.z.size(),
                manifest.variables.size(), manifest.time.values.size(),
                session.link->octree().node_count());
   return session;
+}
+
+std::shared_ptr<const view::TrackLines> tracks_at(const ViewerSession& session,
+                                                  const ViewerArgs& args, std::uint32_t step,
+                                                  double seconds_after) {
+  if (!session.tracks) return nullptr;
+  const auto jd = view::step_julian_day(session.link->manifest(), step, seconds_after);
+  if (!jd) return nullptr;
+  const double now = (*jd - session.tracks->reference_julian_day) * 86400.0;
+  return std::make_shared<const view::TrackLines>(view::window_tracks(
+      *session.tracks, now, args.track_minutes * 60.0, session.link->placer().frame()));
 }
 
 }  // namespace strielad::view_cmd

@@ -7,9 +7,11 @@
 #include <string>
 #include <utility>
 
+#include "geo/flight_tracks.h"
 #include "scene/scene.h"
 #include "serve/server.h"
 #include "view/advection_worker.h"
+#include "view/track_window.h"
 #include "view/view_link.h"
 #include "viewer_args.h"
 
@@ -25,7 +27,14 @@ struct ViewerSession {
   // Wind advection: null when the store has no wind (advection_status says why).
   std::unique_ptr<view::AdvectionWorker> advection;
   std::string advection_status;
+  // Flight tracks (--tracks), null when none.
+  std::shared_ptr<const geo::FlightTracks> tracks;
 };
+
+// The tracks to draw at time step `step` plus `seconds_after` (null without --tracks).
+std::shared_ptr<const view::TrackLines> tracks_at(const ViewerSession& session,
+                                                  const ViewerArgs& args, std::uint32_t step,
+                                                  double seconds_after);
 
 // \error kNotFound / kInvalidInput naming the store, scene or shader file at fault;
 // kIo when the server cannot be reached; with --advect, the errors of

@@ -145,6 +145,9 @@ int run_window(const ViewerArgs& args) {
   ImGui_ImplGlfw_InitForOpenGL(window.get(), true);
   ImGui_ImplOpenGL3_Init("#version 450");
 
+  std::shared_ptr<const view::TrackLines> tracks;
+  std::uint32_t tracks_step = ~0u;
+  double tracks_seconds = -1;
   Mouse mouse;
   PanelInfo info;
   info.advect_status = session.advection_status;
@@ -288,8 +291,18 @@ int run_window(const ViewerArgs& args) {
       inputs.motions = playback->motions();
       inputs.time_seconds += playback->seconds();
     }
+    const double seconds_after = playback && state.advect ? playback->seconds() : 0.0;
+    if (session.tracks) {
+      // Windowed again only when the time moved.
+      if (controller.time_step() != tracks_step || seconds_after != tracks_seconds) {
+        tracks = tracks_at(session, args, controller.time_step(), seconds_after);
+        tracks_step = controller.time_step();
+        tracks_seconds = seconds_after;
+      }
+      inputs.tracks = tracks;
+    }
     if (args.sun == "time") {
-      const double after = playback && state.advect ? playback->seconds() : 0.0;
+      const double after = seconds_after;
       if (const auto sun = view::sun_at_step(controller.link().placer().frame(), manifest,
                                              controller.time_step(), after)) {
         inputs.sun_direction = sun->direction;

@@ -268,6 +268,10 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
   set_float(background_program_.get(), "u_height", height);
   glBindVertexArray(empty_vertex_array_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (inputs.tracks) {
+    track_drawing_.draw(*inputs.tracks, view_projection, inputs.vertical_exaggeration,
+                        inputs.track_color);
+  }
   glEndQuery(GL_TIME_ELAPSED);
 
   // 2. Geometry pass into the per-pixel lists: nearest node first; every fragment is

@@ -25,6 +25,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,7 @@
 #include "render/gl_handles.h"
 #include "render/gpu_meshes.h"
 #include "render/mesh_motion.h"
+#include "render/track_drawing.h"
 #include "render/shader_program.h"
 
 namespace strielad::render {
@@ -60,6 +62,10 @@ struct FrameInputs {
   // Meshes of a motion's step move with its displacement map (wind advection); meshes
   // of other steps are drawn where they are.
   std::vector<MeshMotion> motions;
+  // Flight tracks (view/track_window.h): opaque lines and points, drawn in the opaque
+  // pass so that sub-volumes in front of them cover them and those behind do not.
+  std::shared_ptr<const view::TrackLines> tracks;
+  std::array<float, 4> track_color{1.0f, 0.55f, 0.1f, 1.0f};
 };
 
 struct FrameStats {
@@ -145,6 +151,7 @@ class VolumeRenderer {
 
   GpuMeshes meshes_;
   MotionTextures motion_textures_;
+  TrackDrawing track_drawing_;
 };
 
 }  // namespace strielad::render

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 # strielad-view: bad flags and files give one line on stderr with the documented exit
 # status; --offscreen renders a store (one camera and a camera path) to PNG files, and
-# meshes moved with the wind (--advect-seconds); the
+# meshes moved with the wind (--advect-seconds) and flight tracks (--tracks); the
 # window runs a few frames under Xvfb and saves a screenshot (skipped without xvfb-run).
 # Usage: view_cli_test.sh STRIELAD_CONVERT WORK_DIR (strielad-view is found next to
 # strielad-convert in the build tree).
@@ -75,6 +75,29 @@ if "$view" "$work/store" --offscreen --size 160x90 --threads 2 --advect-seconds 
   echo "ok: --advect-seconds"
 else
   fail "--advect-seconds"; cat "$work/moved.err"
+fi
+
+# Flight tracks: drawn (the last 2 minutes before the step's time), bad files refused.
+cat > "$work/tracks.csv" <<'CSV'
+id,time,lon,lat,altitude
+A1,2013-04-26T11:58:00Z,5.0,48.0,10000
+A1,2013-04-26T11:59:00Z,6.0,49.0,10500
+A1,2013-04-26T12:01:00Z,8.0,51.0,11000
+B2,2013-04-26T11:59:30Z,14.0,54.0,9000
+B2,2013-04-26T12:00:30Z,12.0,53.0,9500
+C3,2013-04-26T13:00:00Z,9.0,50.0,9000
+C3,2013-04-26T13:01:00Z,9.5,50.5,9000
+CSV
+printf 'id,time,lon,lat\nA,2013-04-26T12:00:00Z,5,48\n' > "$work/bad-tracks.csv"
+expect 4 "bad-tracks.csv:1" -- "$work/store" --tracks "$work/bad-tracks.csv" --offscreen --out "$work/x.png"
+expect 3 "no-tracks.csv" -- "$work/store" --tracks "$work/no-tracks.csv" --offscreen --out "$work/x.png"
+if "$view" "$work/store" --offscreen --size 160x90 --threads 2 --tracks "$work/tracks.csv" \
+    --out "$work/tracks.png" --json >"$work/tracks.json" 2>"$work/tracks.err"; then
+  grep -q '"tracks_shown":2' "$work/tracks.json" || fail "tracks: $(cat "$work/tracks.json")"
+  ! cmp -s "$work/tracks.png" "$work/home.png" || fail "the tracks are not in the picture"
+  echo "ok: --tracks"
+else
+  fail "--tracks"; cat "$work/tracks.err"
 fi
 
 # Through a running strielad-serve (--connect, with a token).

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: Apache-2.0
+// What the viewer draws of flight tracks at a moment (issue 8, "Trajectories"): for
+// each track, the part flown during the last `window` seconds before `now` as line
+// segments, cut at both ends by linear interpolation between reports, and the
+// aircraft's position at `now` when the track spans it. A track that ended before the
+// window or starts after `now` shows nothing. World frame km at exaggeration 1 (z =
+// altitude in km), like the meshes.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "geo/flight_tracks.h"
+#include "lod/world_frame.h"
+
+namespace strielad::view {
+
+inline constexpr double kDefaultTrackWindowSeconds = 120;
+
+struct TrackLines {
+  std::vector<float> segments;  // pairs of points (x, y, z) for GL_LINES
+  std::vector<float> heads;     // one point (x, y, z) per aircraft in the air at `now`
+  std::size_t tracks_shown = 0;
+  std::size_t segment_count() const { return segments.size() / 6; }
+  std::size_t head_count() const { return heads.size() / 3; }
+};
+
+// `now` in seconds since tracks.reference_julian_day. Needs a geographic frame
+// (longitude/latitude axes); others get nothing. A window <= 0 shows only the heads.
+TrackLines window_tracks(const geo::FlightTracks& tracks, double now, double window,
+                         const lod::WorldFrame& frame);
+
+}  // namespace strielad::view
