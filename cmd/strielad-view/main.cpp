@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
                        "south-southeast, 54 degrees up, whatever the time)")
             ->check(CLI::IsMember({"time", "fixed"}));
         app.add_option("--tracks", args->tracks_file,
-                       "Flight tracks, CSV with columns id,time,lon,lat,altitude (README "
+                       "Flight tracks: CSV with columns id,time,lon,lat,altitude, or a CF trajectory NetCDF file (README "
                        "\"Flight tracks\")");
         app.add_option("--track-minutes", args->track_minutes,
                        "Draw the part of each track flown in the last N minutes (default 2)")

@@ -92,7 +92,7 @@ ViewerSession open_session(const ViewerArgs& args) {
                        args.tracks_file);
     }
     session.tracks = std::make_shared<const geo::FlightTracks>(
-        geo::load_flight_tracks_csv(args.tracks_file));
+        geo::load_flight_tracks(args.tracks_file));
     spdlog::info("{}: {} flight tracks, {} position reports", args.tracks_file,
                  session.tracks->tracks.size(), session.tracks->reports);
   }
