@@ -2,13 +2,12 @@
 // write_extract_level_plot (extract_suite.h): gnuplot script and data for the
 // error-against-run-time plot of the level measurements.
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include <cmath>
 #include <sstream>
 
 #include "bench/extract_suite.h"
-#include "bench/process_runner.h"
+#include "bench/gnuplot_run.h"
 
 namespace strielad::bench {
 
@@ -68,24 +67,7 @@ std::string write_extract_level_plot(const ExtractSuiteReport& r,
   s << "unset multiplot\n";
   write_text_file(gp, s.str());
 
-  const auto gnuplot = find_program("gnuplot");
-  if (!gnuplot) {
-    spdlog::warn("bench: gnuplot not found on PATH; wrote {} but no {}", gp.string(), png.string());
-    return "gnuplot not found: script written, no PNG";
-  }
-  // gnuplot resolves the file names relative to its working directory: run it there.
-  const auto dir = png.has_parent_path() ? png.parent_path() : std::filesystem::path(".");
-  const ProcessResult p = run_process(
-      {"sh", "-c", fmt::format("cd '{}' && gnuplot '{}'", dir.string(), gp.filename().string())},
-      with_ext(".gnuplot.log"));
-  if (p.exit_status != 0) {
-    spdlog::warn("bench: gnuplot failed (exit {}): {}", p.exit_status, p.output_tail);
-    return fmt::format("gnuplot failed (exit {})", p.exit_status);
-  }
-  std::error_code ec;
-  std::filesystem::remove(with_ext(".gnuplot.log"), ec);
-  spdlog::info("bench: wrote {}", png.string());
-  return "written";
+  return run_gnuplot(gp, png);
 }
 
 }  // namespace strielad::bench

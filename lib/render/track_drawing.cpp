@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "render/colored_vertices.h"
 #include "render/shader_program.h"
 #include "render/volume_shaders.h"
 
@@ -37,17 +38,8 @@ void TrackDrawing::draw(const view::TrackLines& tracks, const lod::Mat4& view_pr
   };
   append(tracks.segments, 0.8f);
   append(tracks.heads, 1.0f);
-  buffer_ = make_buffer();
-  glNamedBufferStorage(buffer_.get(), static_cast<GLsizeiptr>(data.size() * sizeof(float)),
-                       data.data(), 0);
   const GLuint vao = vertex_array_.get();
-  glVertexArrayVertexBuffer(vao, 0, buffer_.get(), 0, 7 * sizeof(float));
-  glEnableVertexArrayAttrib(vao, 0);
-  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(vao, 0, 0);
-  glEnableVertexArrayAttrib(vao, 1);
-  glVertexArrayAttribFormat(vao, 1, 4, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
-  glVertexArrayAttribBinding(vao, 1, 0);
+  upload_colored_vertices(vao, buffer_, data);
   glUseProgram(program_.get());
   glProgramUniformMatrix4fv(program_.get(), glGetUniformLocation(program_.get(), "u_view_projection"),
                             1, GL_FALSE, view_projection.data());

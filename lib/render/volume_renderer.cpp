@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "core/error.h"
+#include "render/colored_vertices.h"
 #include "render/volume_shaders.h"
 
 namespace strielad::render {
@@ -459,17 +460,8 @@ void VolumeRenderer::draw_outlines(const FrameInputs& inputs, const lod::Mat4& v
       }
     }
   }
-  line_buffer_ = make_buffer();
-  glNamedBufferStorage(line_buffer_.get(), static_cast<GLsizeiptr>(data.size() * sizeof(float)),
-                       data.data(), 0);
   const GLuint vao = line_vertex_array_.get();
-  glVertexArrayVertexBuffer(vao, 0, line_buffer_.get(), 0, 7 * sizeof(float));
-  glEnableVertexArrayAttrib(vao, 0);
-  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(vao, 0, 0);
-  glEnableVertexArrayAttrib(vao, 1);
-  glVertexArrayAttribFormat(vao, 1, 4, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
-  glVertexArrayAttribBinding(vao, 1, 0);
+  upload_colored_vertices(vao, line_buffer_, data);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glUseProgram(line_program_.get());
