@@ -14,5 +14,6 @@ void register_extract(CLI::App& app, cli::Action& action, std::string command_li
 void register_latency(CLI::App& app, cli::Action& action, std::string command_line);
 void register_view(CLI::App& app, cli::Action& action, std::string command_line);
 void register_advect(CLI::App& app, cli::Action& action, std::string command_line);
+void register_robustness(CLI::App& app, cli::Action& action, std::string command_line);
 
 }  // namespace strielad::bench_cmd

@@ -103,6 +103,18 @@ EncodedBrick encode_brick(const PlaneBlock<T>& planes, const IndexBox& box, cons
       stats.min = static_cast<double>(covered.min());
       stats.max = static_cast<double>(covered.max());
     }
+  } else {
+    // Above level 0 the range covers the brick's own samples too: one that stands in for
+    // fill is a mean of level-below samples that may lie just outside the node's box
+    // (formats/store.md, "Per-node statistics"), so culling by the range stays safe.
+    NodeStats own;
+    for (const T v : samples) {
+      if (v != v) continue;
+      const double d = static_cast<double>(v);
+      if (!(own.min <= d)) own.min = d;  // NaN at first
+      if (!(own.max >= d)) own.max = d;
+    }
+    stats.merge(own);
   }
 
   EncodedBrick out;

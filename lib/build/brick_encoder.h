@@ -29,8 +29,9 @@ struct NodeStats {
 
 // Encodes the brick `box` (inclusive, level-grid indices) held in `planes`. When
 // `owned` is given (level 0) the statistics are computed from the samples: min/max over
-// `box`, valid_count over `owned`; otherwise `stats` is used as given (coarse levels
-// take the merged statistics of their children).
+// `box`, valid_count over `owned`; otherwise (coarse levels) `stats`, the merged
+// statistics of the node's children, with min/max widened to the brick's own valid
+// samples.
 template <typename T>
 EncodedBrick encode_brick(const PlaneBlock<T>& planes, const IndexBox& box,
                           const IndexBox* owned, NodeStats stats, const format::CodecSpec& codec);

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <chrono>
 
+#include "build/conversion_limits.h"
 #include "build/step_converter.h"
 #include "core/checksum.h"
 #include "core/error.h"
@@ -174,6 +175,12 @@ format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOp
     m.sources.push_back(format::SourceRecord{f.path, f.size, f.header_checksum});
   }
   const OctreeLayout layout(m.dims(), m.brick);  // validates dims and brick
+  // Sizes before any data is read (the predictor trial below reads bricks).
+  for (const auto& v : catalog.variables) {
+    check_brick_fits_chunk(layout, v.store_type, v.name);
+    check_conversion_memory(layout, v.store_type, source_type_size(v.source_type),
+                            options.threads, options.memory_limit, v.name);
+  }
 
   // Each variable's codec, "auto" resolved from sample bricks of step 0. One variable at
   // a time: measured, running them in parallel made it 4x slower (HDF5 under the netCDF

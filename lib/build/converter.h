@@ -40,6 +40,9 @@ struct ConvertOptions {
   // --codec-for clw=zstd:5:byte:none.
   std::map<std::string, format::CodecSpec> codec_for;
   int threads = 0;  // 0 = all cores
+  // Refuse (kUnsupported, before reading any data) a grid whose conversion would need
+  // more memory than this (build/conversion_limits.h); 0 = the machine's memory.
+  std::uint64_t memory_limit = 0;
   // Convert only these steps of the store (inclusive), e.g. one Slurm array task.
   std::optional<std::uint32_t> only_first, only_last;
   bool finalize = true;  // finalize when every step is present afterwards
@@ -65,7 +68,10 @@ struct ConvertResult {
 // predictor "auto" per variable by choose_predictor (logged; the trials are appended to
 // `trials` when given). The store-wide codec takes the predictor most variables with the
 // store-wide Blosc settings use (ties: none); other variables carry their own codec.
-// Throws kInvalidArgument for a bad codec or a codec_for naming a variable not converted.
+// Throws kInvalidArgument for a bad codec, a codec_for naming a variable not converted, or
+// a brick larger than one chunk; kUnsupported when a variable's conversion would need more
+// memory than options.memory_limit (build/conversion_limits.h). Both are decided from the
+// grid's size before any data is read.
 format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOptions& options,
                             std::vector<PredictorTrial>* trials = nullptr);
 

@@ -33,19 +33,26 @@ void downsample_planes(const PlaneBlock<T>& fine, std::array<bool, 3> halved,
           lo[a] = (halved[a] && c[a] > 0) ? c[a] - 1 : c[a];
           hi[a] = (halved[a] && c[a] + 1 < fine_n[a]) ? c[a] + 1 : c[a];
         }
-        double sum = 0;
+        // `scale` 1 first; a sum beyond the double range (float64 data near its maximum)
+        // is taken again on values scaled by 2^-5, exactly, which 27 values cannot overflow.
+        double mean = 0;
         std::size_t count = 0;
-        for (std::size_t z = lo[2]; z <= hi[2]; ++z)
-          for (std::size_t y = lo[1]; y <= hi[1]; ++y)
-            for (std::size_t x = lo[0]; x <= hi[0]; ++x) {
-              const T v = fine.at(x, y, z);
-              if (!std::isnan(v)) {
-                sum += static_cast<double>(v);
-                ++count;
+        for (const double scale : {1.0, 1.0 / 32}) {
+          double sum = 0;
+          count = 0;
+          for (std::size_t z = lo[2]; z <= hi[2]; ++z)
+            for (std::size_t y = lo[1]; y <= hi[1]; ++y)
+              for (std::size_t x = lo[0]; x <= hi[0]; ++x) {
+                const T v = fine.at(x, y, z);
+                if (!std::isnan(v)) {
+                  sum += static_cast<double>(v) * scale;
+                  ++count;
+                }
               }
-            }
-        out[cx] = count ? static_cast<T>(sum / static_cast<double>(count))
-                        : std::numeric_limits<T>::quiet_NaN();
+          mean = count ? sum / static_cast<double>(count) / scale : 0.0;
+          if (std::isfinite(sum)) break;
+        }
+        out[cx] = count ? static_cast<T>(mean) : std::numeric_limits<T>::quiet_NaN();
       }
     }
   });

@@ -3,6 +3,10 @@
 // "Octree"): sample c of the coarse level is the fine sample at min(2c, n-1) along each
 // halved axis when that is valid, else the double-precision mean of the valid fine
 // samples at offsets -1, 0, +1 along the halved axes, else missing (NaN).
+// Accuracy of the mean of k <= 27 values v_i (docs/robustness.md, "Sums and means"): the
+// sum is accumulated in double, so before the final rounding to T the error is at most
+// (k + 1) * 2^-53 * sum|v_i| / k; it never overflows (float64 data near its maximum is
+// summed again scaled by 2^-5).
 #pragma once
 
 #include <array>

@@ -238,7 +238,10 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
     // Index range covered by [lo, hi] (a descending axis swaps the ends).
     const double i_first = fractional_index(coords, ascending ? lo : hi);
     const double i_last = fractional_index(coords, ascending ? hi : lo);
-    if (!(i_first < i_last)) {  // lo = hi: a box without volume, no region
+    // lo = hi, or a box that only touches the node's face: no volume in the node, no
+    // region (else the face would come out twice, as box face and node face).
+    const double last_sample = static_cast<double>(coords.size() - 1);
+    if (!(std::max(i_first, 0.0) < std::min(i_last, last_sample))) {
       empty = true;
       continue;
     }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <map>
 
 #include "core/error.h"
@@ -114,6 +115,16 @@ std::vector<SubVolumePlan> plan_subvolumes(const Store& store, const ResolvedSce
   return plans;
 }
 
+// A node with a single sample along some axis (a grid of one level, say) has no cells:
+// no region of it has volume, so every sub-volume that is not skipped is empty, as a
+// domain range with lo = hi is (formats/scene.md, "Semantics"). No brick is read.
+bool has_no_cells(const NodeGeometry& geometry) {
+  for (const auto& coords : geometry.coords) {
+    if (coords.size() < 2) return true;
+  }
+  return false;
+}
+
 void check_node(const Store& store, NodeId node) {
   if (!store.octree().contains(node)) {
     throw make_error(ErrorCode::kNotFound, "node {} is not in the octree of {} ({} nodes)", node,
@@ -139,7 +150,9 @@ class FieldBuffers {
   FieldBuffers(const FieldBuffers&) = delete;
   FieldBuffers& operator=(const FieldBuffers&) = delete;
 
-  // Appends the brick's samples as floats (missing = NaN), as Brick::to_vector<float>.
+  // Appends the brick's samples as floats (missing = NaN), as Brick::to_vector<float>,
+  // except that float64 values beyond the float range are clamped to +-FLT_MAX: a valid
+  // sample stays valid (an infinity would read as missing and poison attributes).
   void add(const Brick& brick) {
     std::vector<float> out;
     if (!pool().empty()) {
@@ -150,7 +163,10 @@ class FieldBuffers {
     if (brick.kind == format::BrickKind::kData && brick.dtype == DType::kFloat32) {
       std::memcpy(out.data(), brick.bytes.data(), brick.bytes.size());
     } else {
-      for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<float>(brick.sample(i));
+      constexpr double kMax = std::numeric_limits<float>::max();
+      for (std::size_t i = 0; i < out.size(); ++i) {
+        out[i] = static_cast<float>(std::clamp(brick.sample(i), -kMax, kMax));  // NaN stays NaN
+      }
     }
     ns_.fields.push_back(std::move(out));
   }
@@ -169,10 +185,11 @@ std::vector<std::uint32_t> node_brick_variables(const Store& store, const Resolv
                                                 std::uint32_t step, NodeId node) {
   check_node(store, node);
   std::vector<SubVolumeResult> results;
+  const NodeGeometry geometry = node_geometry(store, node);
   const std::vector<SubVolumePlan> plans =
-      plan_subvolumes(store, scene, step, node_geometry(store, node), node, results);
+      plan_subvolumes(store, scene, step, geometry, node, results);
   std::vector<std::uint32_t> variables;
-  if (plans.empty()) return variables;
+  if (plans.empty() || has_no_cells(geometry)) return variables;
   variables = scene.attributes;
   for (const SubVolumePlan& plan : plans) {
     for (const ResolvedLimit& limit : plan.limits) variables.push_back(limit.variable);
@@ -193,6 +210,10 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
   const std::vector<SubVolumePlan> plans =
       plan_subvolumes(store, scene, step, geometry, node, out.results);
   if (plans.empty()) return out;
+  if (has_no_cells(geometry)) {
+    for (const SubVolumePlan& plan : plans) out.results[plan.subvolume].outcome = NodeOutcome::kEmpty;
+    return out;
+  }
 
   // Fetch each needed brick once.
   std::map<std::uint32_t, std::uint32_t> field_of;  // variable -> NodeSamples field

@@ -46,6 +46,9 @@ struct NodeExtraction {
   std::uint32_t bricks_used = 0;         // bricks fetched (cache or disk) for this node
 };
 
+// Fields are evaluated in float32 (the kernel's precision): float64 variables are rounded
+// to float, and values beyond +-3.4e38 are clamped to the float range, so they stay valid
+// and finite (a limit bound beyond that range selects none of them).
 // Throws strielad::Error (naming the file, variable and node) when a needed brick is
 // damaged; other nodes are unaffected. `stop` is polled before every brick read and
 // every sub-volume: once stop is requested the call throws kCancelled.

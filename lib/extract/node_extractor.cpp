@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "extract/collapsed_triangles.h"
 #include "extract/conditions.h"
 #include "extract/mesh_builder.h"
 #include "extract/tet_clipper.h"
@@ -518,6 +519,7 @@ class Kernel {
 Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request,
                        ExtractStats* stats) {
   const auto dims = samples.dims();
+  const std::uint64_t corner_crossings_before = corner_crossings;
   thread_local Scratch scratch;
   ConditionSet& set = scratch.set;
   build_conditions(samples, request, set);
@@ -751,6 +753,9 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
   // axis coordinates.
   scratch.cells.resize(nv);
   mesh.positions.resize(nv);
+  // Whether a point strictly inside a cell rounded onto the cell's end: only then can two
+  // lattice-distinct vertices share an axis position (collapsed_triangles.h).
+  bool rounded_onto_sample = false;
   for (std::size_t v = 0; v < nv; ++v) {
     const Vec3& p = builder.points[v];
     CellPoint& cp = scratch.cells[v];
@@ -769,6 +774,7 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
       const auto& c = samples.coords[a];
       const double choice[3]{c[i] + f * (c[i + 1] - c[i]), c[i], c[i + 1]};
       position[a] = choice[static_cast<int>(f == 0.0) + 2 * static_cast<int>(f == 1.0)];
+      rounded_onto_sample |= (f != 0.0) & (f != 1.0) & ((choice[0] == c[i]) | (choice[0] == c[i + 1]));
     }
     cp.index = (cell[2] * dims[1] + cell[1]) * dims[0] + cell[0];
     cp.cell = {static_cast<std::uint32_t>(cell[0]), static_cast<std::uint32_t>(cell[1]),
@@ -841,6 +847,12 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
                          static_cast<float>(n[2] / len)};
     }
   }
+  // Vertices the lattice keeps apart but axis coordinates merge, and sheets without
+  // volume: where a limit has min = max, or surfaces pass through samples.
+  bool equal_bounds = false;
+  for (const ExtractLimit& limit : request.limits) equal_bounds = equal_bounds || limit.min == limit.max;
+  const bool sheets = equal_bounds || corner_crossings != corner_crossings_before;
+  if (sheets || rounded_onto_sample) remove_collapsed_triangles(mesh, sheets);
   if (stats) *stats = local;
   return mesh;
 }

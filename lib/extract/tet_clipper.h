@@ -48,6 +48,18 @@ inline Vec3 lattice_point(const std::array<Vec3, 4>& corners, const std::array<d
 // crossing is that corner exactly (t 0 or 1): a crossing is either a lattice corner or
 // a point of its edge and of no other lattice element, so equal points are the same
 // element. Every tetrahedron and every node sharing the edge computes the same bits.
+// A crossing within kCrossingSnap of a cell from a corner is that corner too: with
+// values of very different magnitude on one edge (1 next to 3e38: t = 3e-39) the point
+// would be distinct on the lattice but not in axis coordinates, and the general clipper's
+// points next to it would not meet the neighbouring tetrahedron's (a crack one 1e-39 of a
+// cell wide). The surface moves by less than 1e-9 of a cell.
+inline constexpr double kCrossingSnap = 0x1p-30;
+
+// Crossings this thread has put on a corner (a sample exactly on a bound, or snapped):
+// only then can surfaces coincide (sheets without volume, collapsed_triangles.h), so
+// the kernel looks for them only when this count moved.
+inline thread_local std::uint64_t corner_crossings = 0;
+
 struct EdgeCrossing {
   double t = 0;
   Vec3 p{};
@@ -56,8 +68,14 @@ struct EdgeCrossing {
 inline EdgeCrossing edge_crossing(const Vec3& P, const Vec3& Q, double sp, double sq) {
   const double t = sp / (sp - sq);
   const double wp = 1.0 - t, wq = t;
-  if (wq == 0.0) return {0.0, P};
-  if (wp == 0.0) return {1.0, Q};
+  if (wq <= kCrossingSnap) {
+    ++corner_crossings;
+    return {0.0, P};
+  }
+  if (wp <= kCrossingSnap) {
+    ++corner_crossings;
+    return {1.0, Q};
+  }
   bool at_p = false, at_q = false;
   // Per axis, in scalars (no partial writes to an array read back whole).
   auto coordinate = [&](double p, double q) {

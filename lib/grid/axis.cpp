@@ -49,6 +49,37 @@ void check_axis_values(const Axis& axis, std::string_view what) {
   }
 }
 
+namespace {
+
+bool strictly_monotonic(const std::vector<double>& v) {
+  if (v.size() < 2) return true;
+  const bool ascending = v[1] > v[0];
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    if (ascending ? !(v[i] > v[i - 1]) : !(v[i] < v[i - 1])) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool unwrap_longitudes(std::vector<double>& values) {
+  for (const double v : values) {
+    if (!std::isfinite(v)) return false;
+  }
+  if (strictly_monotonic(values)) return false;
+  std::vector<double> unwrapped(values);
+  double shift = 0;
+  for (std::size_t i = 1; i < values.size(); ++i) {
+    const double step = values[i] - values[i - 1];
+    if (step > 180) shift -= 360;
+    if (step < -180) shift += 360;
+    unwrapped[i] = values[i] + shift;
+  }
+  if (!strictly_monotonic(unwrapped)) return false;
+  values = std::move(unwrapped);
+  return true;
+}
+
 std::string_view dtype_name(DType type) noexcept {
   return type == DType::kFloat32 ? "float32" : "float64";
 }

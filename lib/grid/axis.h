@@ -42,6 +42,14 @@ struct Axis {
 // empty, contain NaN/Inf, or are not strictly monotonic.
 void check_axis_values(const Axis& axis, std::string_view what);
 
+// A longitude axis written wrapped at the antimeridian or at 0/360 (179.5, 180, -179.5 ...;
+// 359, 0, 1 ...): when the values are finite but not strictly monotonic, and become so
+// once every jump of more than 180 degrees is undone by adding or subtracting 360 to
+// everything after it (numpy.unwrap with period 360), replaces them and returns true.
+// They are the same longitudes (exact up to the rounding of adding 360), now continuous
+// (179.5, 180, 180.5 ...). Otherwise leaves them alone and returns false.
+bool unwrap_longitudes(std::vector<double>& values);
+
 struct TimeAxis {
   std::string name;
   std::string units;     // e.g. "hours since 2013-04-26 00:00:00"; may be empty

@@ -3,10 +3,12 @@
 
 #include <fmt/format.h>
 #include <netcdf.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <map>
 #include <mutex>
 #include <set>
@@ -117,6 +119,7 @@ class FileScanner {
   std::string file_;
   int ncid_;
   std::set<std::string> auxiliary_;
+  std::set<std::string> unwrapped_;  // longitude axes unwrapped (logged once each)
   std::map<std::pair<int, int>, Coordinate> coordinates_;
   std::map<int, std::vector<LonLatVariable>> lonlat_by_group_;
 };
@@ -369,6 +372,16 @@ ScannedVariable FileScanner::scan_variable(int grpid, int varid, const std::stri
     sv.z = make_axis(first_spatial, AxisKind::kOther);
     sv.y = make_axis(first_spatial + 1, AxisKind::kLatitude);
     sv.x = make_axis(first_spatial + 2, AxisKind::kLongitude);
+    // A longitude axis wrapped at the antimeridian (or 0/360) is made continuous.
+    const std::vector<double> stored = sv.x.values;
+    if (unwrap_longitudes(sv.x.values) && unwrapped_.insert(sv.x.name).second) {
+      std::size_t jump = 1;
+      while (jump + 1 < stored.size() && std::abs(stored[jump] - stored[jump - 1]) <= 180) ++jump;
+      spdlog::info("{}: longitude axis '{}' wraps around ({} then {} at index {}); unwrapped to "
+                   "{} .. {}",
+                   file_, sv.x.name, stored[jump - 1], stored[jump], jump, sv.x.values.front(),
+                   sv.x.values.back());
+    }
     for (const Axis* a : {&sv.x, &sv.y, &sv.z}) check_axis_values(*a, file_);
     if (roles.size() == 4) {
       const Coordinate& c = coordinate(*coords[0], false);

@@ -2,8 +2,9 @@
 // Raw netCDF samples to values, the CF way: a sample is missing (NaN) when it equals
 // _FillValue (or, without one, the netCDF default fill), any missing_value, or lies
 // outside valid_min/valid_max; all compared in the raw (packed) type before unpacking.
-// Then value * scale_factor + add_offset in double, stored in the output type. NaN/Inf
-// that is not declared missing is reported (or masked when nan_as_fill).
+// Then value * scale_factor + add_offset in double, stored in the output type (a value
+// beyond that type's range is reported). NaN/Inf that is not declared missing is
+// reported (or masked when nan_as_fill).
 #pragma once
 
 #include <cmath>
@@ -23,6 +24,11 @@ struct ConversionResult {
   // nan_as_fill is false; it is set to NaN in the output either way).
   std::optional<std::size_t> first_non_finite;
   double non_finite_value = 0;
+  // First sample whose unpacked value (raw * scale_factor + add_offset) lies beyond the
+  // output type's range: set to NaN in the output, and always an error for the caller
+  // (the store holds only finite values; --nan-as-fill does not apply).
+  std::optional<std::size_t> first_overflow;
+  double overflow_raw = 0, overflow_value = 0;
 };
 
 namespace detail {
@@ -132,7 +138,16 @@ ConversionResult convert_samples(std::span<const Raw> raw, const CfValueAttribut
       }
     }
     if (packed) {
-      out[i] = static_cast<Out>(static_cast<double>(r) * scale + offset);
+      const double unpacked = static_cast<double>(r) * scale + offset;
+      out[i] = static_cast<Out>(unpacked);
+      if (!std::isfinite(out[i])) {
+        out[i] = kNaN;
+        if (!result.first_overflow) {
+          result.first_overflow = i;
+          result.overflow_raw = static_cast<double>(r);
+          result.overflow_value = unpacked;
+        }
+      }
     } else {
       out[i] = static_cast<Out>(r);
     }

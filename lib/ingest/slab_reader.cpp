@@ -229,6 +229,17 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
                      context, i % dims.x, (i % plane) / dims.x, z0 + i / plane,
                      std::isnan(bad) ? "NaN" : (bad > 0 ? "+Inf" : "-Inf"));
   }
+  if (r.first_overflow) {
+    const std::size_t i = *r.first_overflow;
+    const std::size_t plane = dims.x * dims.y;
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: sample (lon {}, lat {}, level {}) unpacks to {} ({} x scale_factor {} + "
+                     "add_offset {}), beyond the range of {}; check the variable's scale_factor "
+                     "and add_offset",
+                     context, i % dims.x, (i % plane) / dims.x, z0 + i / plane, r.overflow_value,
+                     r.overflow_raw, attrs.scale_factor.value_or(1.0), attrs.add_offset.value_or(0.0),
+                     sizeof(Out) == 4 ? "float32" : "float64");
+  }
 }
 
 SlabReader::SlabReader(const InputCatalog& catalog, const ScanOptions& options)

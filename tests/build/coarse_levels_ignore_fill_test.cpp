@@ -61,6 +61,23 @@ TEST(CoarseLevelsIgnoreFillTest, MeanIsComputedInDoubleForExtremeValues) {
   EXPECT_EQ(c2[1], 3e38f);
 }
 
+TEST(CoarseLevelsIgnoreFillTest, MeanOfFloat64NearItsMaximumDoesNotOverflow) {
+  // 1.5e308 + 1.7e308 overflows a double: the mean used to be stored as Inf.
+  constexpr double kDNaN = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<double> fine = {1.5e308, 1.7e308, kDNaN, 1.6e308, 1.7e308};
+  std::vector<double> coarse(3);
+  downsample_planes(PlaneBlock<double>{fine.data(), {5, 1, 1}, 0, 1}, {true, false, false}, coarse,
+                    {3, 1, 1}, 0, 1);
+  EXPECT_EQ(coarse[0], 1.5e308);
+  EXPECT_DOUBLE_EQ(coarse[1], (1.7e308 / 2 + 1.6e308 / 2));
+  EXPECT_TRUE(std::isfinite(coarse[1]));
+  // Means that do not overflow are computed as before (bit for bit).
+  const std::vector<double> small = {1.0, 0.1, kDNaN, 0.2, 5.0};
+  downsample_planes(PlaneBlock<double>{small.data(), {5, 1, 1}, 0, 1}, {true, false, false}, coarse,
+                    {3, 1, 1}, 0, 1);
+  EXPECT_EQ(coarse[1], (0.1 + 0.2) / 2.0);
+}
+
 TEST(CoarseLevelsIgnoreFillTest, UnhalvedAxisIsCopied) {
   // 3 x 2 planes, only x halved: y is kept as is.
   const std::vector<float> fine = {1, 2, 3, 4, kNaN, 6};

@@ -55,5 +55,44 @@ TEST(NonMonotonicAxisTest, DescendingAxesAreFine) {
   EXPECT_EQ(c.y.values, g.lat);
 }
 
+// Longitudes wrapped at the antimeridian are made continuous (docs/robustness.md,
+// "lon-wrapped-at-180"); the data keeps its order.
+TEST(NonMonotonicAxisTest, LongitudesWrappedAt180AreUnwrapped) {
+  TempDir dir;
+  SimpleGrid g;
+  g.lon = {179.0, 179.5, 180.0, -179.5, -179.0};
+  NetcdfFixture().grid(g).variable("T", NC_FLOAT, g.dims(), ramp(g.samples())).write(dir / "w.nc");
+  const InputCatalog c = scan_inputs({dir / "w.nc"}, {});
+  EXPECT_EQ(c.x.values, (std::vector<double>{179.0, 179.5, 180.0, 180.5, 181.0}));
+  SlabReader reader(c, {});
+  std::vector<float> out(g.lev.size() * g.lat.size() * g.lon.size());
+  reader.read(0, 0, 0, g.lev.size(), out);
+  EXPECT_EQ(out[3], 3.0f);  // data order unchanged
+}
+
+TEST(NonMonotonicAxisTest, DescendingLongitudesWrappedAt0AreUnwrapped) {
+  TempDir dir;
+  SimpleGrid g;
+  g.lon = {2.0, 1.0, 0.0, 359.0, 358.0};
+  NetcdfFixture().grid(g).variable("T", NC_FLOAT, g.dims(), ramp(g.samples())).write(dir / "w.nc");
+  const InputCatalog c = scan_inputs({dir / "w.nc"}, {});
+  EXPECT_EQ(c.x.values, (std::vector<double>{2.0, 1.0, 0.0, -1.0, -2.0}));
+}
+
+TEST(NonMonotonicAxisTest, LongitudesThatDoNotUnwrapStayRejected) {
+  SimpleGrid g;
+  g.lon = {0, 90, 45, 180};  // going back without a wrap
+  const auto message = scan_with(g);
+  EXPECT_NE(message.find("axis 'lon' is not strictly monotonic"), std::string::npos) << message;
+}
+
+TEST(NonMonotonicAxisTest, OnlyLongitudesAreUnwrapped) {
+  SimpleGrid g;
+  g.lat = {-10, 0, 10};
+  g.lev = {100, 300, -50};  // unwrapping by 360 would make it monotonic: not for levels
+  const auto message = scan_with(g);
+  EXPECT_NE(message.find("axis 'lev' is not strictly monotonic"), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace strielad::ingest

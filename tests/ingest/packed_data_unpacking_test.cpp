@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "ingest/input_catalog.h"
+#include "support/expect_error.h"
 #include "support/netcdf_fixture.h"
 #include "support/temp_dir.h"
 
@@ -96,6 +97,33 @@ TEST(PackedDataUnpackingTest, FillIsComparedBeforeUnpacking) {
   EXPECT_TRUE(std::isnan(out[3]));
   EXPECT_EQ(out[4], -7.5f);
   EXPECT_EQ(out[0], 0.0f);
+}
+
+// A scale_factor that unpacks beyond float32 used to store +-Inf; now an error naming the
+// sample (docs/robustness.md, "packed-overflow"), with or without nan_as_fill.
+TEST(PackedDataUnpackingTest, UnpackingBeyondFloat32IsRefused) {
+  TempDir dir;
+  SimpleGrid g;
+  std::vector<double> raw(g.samples(), 1.0);
+  raw[0] = 0.0;
+  raw[6] = 400.0;  // 400 x 1e36 = 4e38 > 3.4e38: lon 2, lat 1, level 0
+  raw[7] = -32767;
+  NetcdfFixture()
+      .grid(g)
+      .variable("p", NC_SHORT, g.dims(), raw,
+                {NcAttr::number("scale_factor", NC_FLOAT, {1e36}),
+                 NcAttr::number("_FillValue", NC_SHORT, {-32767})})
+      .write(dir / "packed.nc");
+  for (const bool nan_as_fill : {false, true}) {
+    ScanOptions o;
+    o.nan_as_fill = nan_as_fill;
+    const InputCatalog c = scan_inputs({dir / "packed.nc"}, o);
+    SlabReader reader(c, o);
+    std::vector<float> out(g.samples());
+    expect_error([&] { reader.read(0, 0, 0, 2, out); }, ErrorCode::kInvalidInput,
+                 {"variable 'p' time step 0: sample (lon 2, lat 1, level 0) unpacks to",
+                  "beyond the range of float32"});
+  }
 }
 
 }  // namespace

@@ -1,0 +1,408 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "robust/extract_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <random>
+#include <set>
+
+#include "client/server_client.h"
+#include "core/error.h"
+#include "extract/level_extraction.h"
+#include "extract/mesh_metrics.h"
+#include "robust/case_reference.h"
+#include "robust/level_samples.h"
+#include "serve/server.h"
+
+namespace strielad::robust {
+namespace {
+
+constexpr std::uint32_t kDomainSubVolume = 100;
+constexpr double kFloatMax = std::numeric_limits<float>::max();
+
+// The value as extraction sees it: float32, clamped to the float range.
+double as_extracted(double v) {
+  if (std::isnan(v)) return v;
+  return static_cast<double>(static_cast<float>(std::clamp(v, -kFloatMax, kFloatMax)));
+}
+
+bool within(double v, const ResolvedLimit& limit) {
+  const double e = as_extracted(v);
+  return !std::isnan(e) && e >= limit.min && e <= limit.max;
+}
+
+std::array<double, 2> extent(const std::vector<double>& coords) {
+  const auto [lo, hi] = std::minmax_element(coords.begin(), coords.end());
+  return {*lo, *hi};
+}
+
+double box_volume(const NodeGeometry& g) {
+  double v = 1;
+  for (int a = 0; a < 3; ++a) {
+    const auto e = extent(g.coords[a]);
+    v *= e[1] - e[0];
+  }
+  return v;
+}
+
+// Volume bounds of a limit's region inside one node from the level's samples.
+struct VolumeBounds {
+  double lower = 0, upper = 0;
+};
+
+VolumeBounds limit_volume_bounds(const LevelSamples& level, const IndexBox& box,
+                                 const NodeGeometry& g, const ResolvedLimit& limit) {
+  VolumeBounds b;
+  const auto& d = level.dims;
+  const auto at = [&](std::size_t x, std::size_t y, std::size_t z) {
+    return level.values[(z * d[1] + y) * d[0] + x];
+  };
+  for (std::size_t z = box.lo[2]; z < box.hi[2]; ++z)
+    for (std::size_t y = box.lo[1]; y < box.hi[1]; ++y)
+      for (std::size_t x = box.lo[0]; x < box.hi[0]; ++x) {
+        int inside = 0;
+        for (int k = 0; k < 8; ++k) {
+          inside += within(at(x + (k & 1), y + ((k >> 1) & 1), z + ((k >> 2) & 1)), limit) ? 1 : 0;
+        }
+        if (inside == 0) continue;
+        const std::size_t i = x - box.lo[0], j = y - box.lo[1], l = z - box.lo[2];
+        const double volume = std::fabs((g.coords[0][i + 1] - g.coords[0][i]) *
+                                        (g.coords[1][j + 1] - g.coords[1][j]) *
+                                        (g.coords[2][l + 1] - g.coords[2][l]));
+        b.upper += volume;
+        if (inside == 8) b.lower += volume;
+      }
+  return b;
+}
+
+bool any_missing(const LevelSamples& level, const IndexBox& box) {
+  const auto& d = level.dims;
+  for (std::size_t z = box.lo[2]; z <= box.hi[2]; ++z)
+    for (std::size_t y = box.lo[1]; y <= box.hi[1]; ++y)
+      for (std::size_t x = box.lo[0]; x <= box.hi[0]; ++x) {
+        if (std::isnan(level.values[(z * d[1] + y) * d[0] + x])) return true;
+      }
+  return false;
+}
+
+// Edges (between distinct positions) not used equally often in both directions: 0 for
+// a closed, consistently oriented mesh, also where it touches itself along an edge
+// (an edge of four triangles, two each way: samples exactly at a bound).
+std::uint64_t unbalanced_edges(const Mesh& mesh) {
+  std::map<std::array<double, 3>, std::uint32_t> ids;
+  std::vector<std::uint32_t> id(mesh.positions.size());
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    id[v] = ids.try_emplace(mesh.positions[v], static_cast<std::uint32_t>(ids.size())).first->second;
+  }
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::int64_t> balance;
+  for (const auto& t : mesh.triangles) {
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = id[t[i]], b = id[t[(i + 1) % 3]];
+      if (a == b) continue;
+      balance[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
+    }
+  }
+  std::uint64_t unbalanced = 0;
+  for (const auto& [edge, count] : balance) unbalanced += count != 0 ? 1 : 0;
+  return unbalanced;
+}
+
+// Positions, attributes and (for meshes straight from the kernel) topology of one mesh.
+void check_mesh_content(const Mesh& mesh, const NodeGeometry& g, bool missing_in_node,
+                        double position_slack, bool topology, StageFindings& f,
+                        const std::string& where, std::uint64_t* pinch_edges) {
+  if (mesh.face_kinds.size() != mesh.triangles.size()) {
+    f.problem("{}: {} face kinds for {} triangles", where, mesh.face_kinds.size(),
+              mesh.triangles.size());
+  }
+  if (topology) {
+    const MeshCheck m = check_mesh(mesh);
+    const std::uint64_t unbalanced = unbalanced_edges(mesh);
+    if (unbalanced != 0 || m.open_edges != 0 || m.degenerate_triangles != 0 || m.bad_normals != 0 ||
+        m.bad_positions != 0) {
+      f.problem("{}: mesh not closed and clean: {} edges not used equally often in both "
+                "directions ({} open), {} zero-area triangles, {} bad normals, {} bad positions",
+                where, unbalanced, m.open_edges, m.degenerate_triangles, m.bad_normals,
+                m.bad_positions);
+    }
+    *pinch_edges += m.nonmanifold_edges;
+  } else {
+    for (std::size_t v = 0; v < mesh.normals.size(); ++v) {
+      const auto& n = mesh.normals[v];
+      const double len = std::sqrt(double{n[0]} * n[0] + double{n[1]} * n[1] + double{n[2]} * n[2]);
+      if (!std::isfinite(len) || std::fabs(len - 1.0) > 1e-3) {
+        f.problem("{}: normal {} is not unit length ({})", where, v, len);
+        break;
+      }
+    }
+  }
+  for (int a = 0; a < 3; ++a) {
+    const auto e = extent(g.coords[a]);
+    const double slack = position_slack * (e[1] - e[0]) + 1e-12 * std::fabs(e[1]);
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+      const double p = mesh.positions[v][a];
+      if (!std::isfinite(p) || p < e[0] - slack || p > e[1] + slack) {
+        f.problem("{}: vertex {} axis {} at {} outside the node's [{}, {}]", where, v, a, p, e[0],
+                  e[1]);
+        break;
+      }
+    }
+  }
+  if (mesh.attribute_names != std::vector<std::string>{"f"} || mesh.attributes.size() != 1) {
+    f.problem("{}: attributes {} instead of [f]", where, fmt::join(mesh.attribute_names, ", "));
+    return;
+  }
+  const auto& values = mesh.attributes[0];
+  if (values.size() != mesh.positions.size()) {
+    f.problem("{}: {} attribute values for {} vertices", where, values.size(), mesh.positions.size());
+  }
+  for (std::size_t v = 0; v < values.size(); ++v) {
+    if (std::isinf(values[v]) || (std::isnan(values[v]) && !missing_in_node)) {
+      f.problem("{}: attribute f at vertex {} is {} in a node without missing samples", where, v,
+                values[v]);
+      break;
+    }
+  }
+}
+
+// The level of extraction that the scene's check runs at: 0, 1 and the root's.
+std::vector<std::size_t> levels_to_check(const OctreeLayout& layout) {
+  std::set<std::size_t> levels{0, layout.level_count() - 1};
+  if (layout.level_count() > 1) levels.insert(1);
+  return {levels.begin(), levels.end()};
+}
+
+bool is_refusal(const Error& e) { return e.code() != ErrorCode::kInternal; }
+
+}  // namespace
+
+Scene case_scene(const ExtremeCase& c, const format::Manifest& manifest) {
+  Scene scene;
+  scene.time = 0;
+  std::uint32_t id = 1;
+  for (const auto& limit : c.limits) {
+    SubVolume sv;
+    sv.id = id++;
+    sv.name = fmt::format("f in [{}, {}]", limit.min ? fmt::format("{}", *limit.min) : "-inf",
+                          limit.max ? fmt::format("{}", *limit.max) : "inf");
+    sv.limits.push_back(Limit{"f", limit.min, limit.max});
+    scene.subvolumes.push_back(std::move(sv));
+  }
+  if (c.lon_domain) {
+    SubVolume sv;
+    sv.id = kDomainSubVolume;
+    sv.name = "longitude band";
+    sv.domain[manifest.x.name] = AxisRange{(*c.lon_domain)[0], (*c.lon_domain)[1]};
+    scene.subvolumes.push_back(std::move(sv));
+  }
+  scene.attributes = {"f"};
+  return scene;
+}
+
+StageFindings check_extraction(const ExtremeCase& c, const Store& store, int threads) {
+  StageFindings f;
+  const OctreeLayout& layout = store.octree();
+  const ResolvedScene scene = resolve_scene(case_scene(c, store.manifest()), store.manifest(), c.name);
+  const std::vector<std::vector<double>> level0 = reference_level0(c);
+  std::vector<NodeReference> ranges = reference_node_stats(layout, level0.at(0));
+  for (std::size_t level = 1; level < layout.level_count(); ++level) {
+    widen_to_level_samples(ranges, layout, level, read_level_samples(store, 0, 0, level).values);
+  }
+  std::uint64_t meshes = 0, empty = 0, skipped = 0, triangles = 0, pinches = 0;
+  std::vector<std::string> per_level;
+  for (const std::size_t level : levels_to_check(layout)) {
+    LevelExtractionOptions options;
+    options.level = static_cast<std::uint32_t>(level);
+    options.threads = threads;
+    options.cache_bytes = 16 << 20;
+    LevelExtraction result;
+    try {
+      result = extract_level(store, scene, options);
+    } catch (const Error& e) {
+      if (!is_refusal(e)) throw;
+      f.refusal = fmt::format("level {}: {}", level, e.what());
+      return f;
+    }
+    const LevelSamples samples = read_level_samples(store, 0, 0, level);
+    for (const NodeExtraction& node : result.nodes) {
+      const NodeKey key = layout.key(node.node);
+      const IndexBox box = layout.level_box(key);
+      const NodeGeometry g = node_geometry(store, node.node);
+      const bool missing = any_missing(samples, box);
+      const NodeReference& r = ranges[node.node];
+      for (std::size_t s = 0; s < node.results.size(); ++s) {
+        const SubVolumeResult& sv = node.results[s];
+        const ResolvedSubVolume& rsv = scene.subvolumes[s];
+        const std::string where =
+            fmt::format("level {} node {} sub-volume {}", level, node.node, sv.subvolume_id);
+        const bool skip = sv.outcome == NodeOutcome::kSkippedValueRange ||
+                          sv.outcome == NodeOutcome::kSkippedNoData ||
+                          sv.outcome == NodeOutcome::kSkippedDomain;
+        skipped += skip ? 1 : 0;
+        empty += sv.outcome == NodeOutcome::kEmpty ? 1 : 0;
+        if (!rsv.limits.empty()) {
+          const ResolvedLimit& limit = rsv.limits.front();
+          const NodeOutcome want = std::isnan(r.min) ? NodeOutcome::kSkippedNoData
+                                   : (r.max < limit.min || r.min > limit.max)
+                                       ? NodeOutcome::kSkippedValueRange
+                                       : NodeOutcome::kMesh;
+          if (want != NodeOutcome::kMesh && sv.outcome != want) {
+            f.problem("{}: {} but the input's range [{}, {}] calls for {}", where,
+                      node_outcome_name(sv.outcome), r.min, r.max, node_outcome_name(want));
+          } else if (want == NodeOutcome::kMesh && skip) {
+            f.problem("{}: {} ({}) but the input's range [{}, {}] meets [{}, {}]", where,
+                      node_outcome_name(sv.outcome), sv.reason, r.min, r.max, limit.min, limit.max);
+          }
+        }
+        if (sv.outcome != NodeOutcome::kMesh && !sv.mesh.empty()) {
+          f.problem("{}: outcome {} with triangles", where, node_outcome_name(sv.outcome));
+        }
+        if (skip) continue;
+        if (sv.outcome == NodeOutcome::kMesh) {
+          ++meshes;
+          triangles += sv.mesh.triangle_count();
+          check_mesh_content(sv.mesh, g, missing, 1e-12, true, f, where, &pinches);
+        }
+        // The region's volume inside the node.
+        const double volume = enclosed_volume(sv.mesh);
+        const double slack = 1e-9 * box_volume(g);
+        if (rsv.limits.empty()) {
+          const auto x = extent(g.coords[0]);
+          const double width = std::max(0.0, std::min(x[1], rsv.box[0].hi) - std::max(x[0], rsv.box[0].lo));
+          const double want = x[1] > x[0] ? box_volume(g) * width / (x[1] - x[0]) : 0.0;
+          if (std::fabs(volume - want) > slack + 1e-9 * want) {
+            f.problem("{}: encloses {} but the domain cuts {} out of the node", where, volume, want);
+          }
+        } else {
+          const VolumeBounds b = limit_volume_bounds(samples, box, g, rsv.limits.front());
+          if (volume < b.lower * (1 - 1e-9) - slack || volume > b.upper * (1 + 1e-9) + slack) {
+            f.problem("{}: encloses {}, outside [{}, {}] (cells wholly inside .. touching the limit)",
+                      where, volume, b.lower, b.upper);
+          }
+        }
+      }
+    }
+    per_level.push_back(fmt::format("level {}: {} nodes", level, result.nodes.size()));
+  }
+  f.summary = fmt::format("{}; {} meshes ({} triangles), {} empty, {} skipped, all checked{}",
+                          fmt::join(per_level, ", "), meshes, triangles, empty, skipped,
+                          pinches ? fmt::format("; {} edges where the region touches itself "
+                                                "(4 triangles each, balanced)", pinches)
+                                  : std::string());
+  return f;
+}
+
+StageFindings check_server(const ExtremeCase& c, const std::filesystem::path& root,
+                           const std::string& dataset, int threads,
+                           std::chrono::milliseconds timeout) {
+  StageFindings f;
+  serve::ServerConfig config;
+  config.root = root;
+  config.listen = net::Endpoint{"127.0.0.1", 0};
+  std::mt19937_64 random(std::random_device{}());
+  config.token = fmt::format("{:016x}", random());
+  config.threads = static_cast<unsigned>(std::max(threads, 1));
+  config.cache_bytes = 16 << 20;
+  config.max_clients = 2;
+  config.server_name = "strielad robustness check";
+  serve::Server server(config);
+  server.start();
+  client::ClientOptions options;
+  options.client_name = "strielad-bench robustness";
+  options.token = *config.token;
+  options.timeout = timeout;
+  auto client = client::ServerClient::connect(net::Endpoint{"127.0.0.1", server.port()}, options);
+  client->open_dataset(dataset);
+  const Scene scene = case_scene(c, client->manifest());
+  const auto started = client->set_scene(scene);
+  const OctreeLayout& layout = client->octree();
+
+  // The root and the coarse levels first, then level-0 nodes, at most 64 in all.
+  std::vector<protocol::NodePriority> cut;
+  for (NodeId n = static_cast<NodeId>(layout.node_count()); n-- > 0 && cut.size() < 64;) {
+    cut.push_back({n, static_cast<float>(cut.size())});
+  }
+  client->update_cut(cut, {}, {});
+
+  const auto store = Store::open(root / dataset);
+  const ResolvedScene resolved = resolve_scene(scene, store->manifest(), c.name);
+  std::map<NodeId, bool> answered;
+  std::uint64_t meshes = 0, failures = 0;
+  std::string first_failure;
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (answered.size() < cut.size()) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    auto message = left.count() > 0 ? client->wait(left) : std::nullopt;
+    if (!message) {
+      f.problem("{} of {} nodes answered within {} ms ({})", answered.size(), cut.size(),
+                timeout.count(), client->close_reason());
+      break;
+    }
+    if (auto* e = std::get_if<protocol::ErrorMessage>(&*message)) {
+      f.problem("server error: {}", e->message);
+      break;
+    }
+    if (auto* failed = std::get_if<protocol::NodeFailed>(&*message)) {
+      answered[failed->node] = true;
+      if (failures++ == 0) first_failure = failed->message;
+      if (failed->code == protocol::WireError::kInternal) {
+        f.problem("node {} failed with an internal error: {}", failed->node, failed->message);
+      }
+      continue;
+    }
+    auto* r = std::get_if<protocol::NodeResult>(&*message);
+    if (!r) continue;
+    if (r->generation != started.generation) {
+      f.problem("node {}: result of generation {}, expected {}", r->node, r->generation,
+                started.generation);
+    }
+    if (answered.count(r->node) != 0) f.problem("node {} answered twice", r->node);
+    answered[r->node] = true;
+    const NodeExtraction batch = extract_node(*store, nullptr, resolved, 0, r->node);
+    if (r->subvolumes.size() != batch.results.size()) {
+      f.problem("node {}: {} sub-volumes, batch extraction {}", r->node, r->subvolumes.size(),
+                batch.results.size());
+      continue;
+    }
+    const NodeGeometry g = node_geometry(*store, r->node);
+    for (std::size_t s = 0; s < batch.results.size(); ++s) {
+      const auto& got = r->subvolumes[s];
+      const auto& want = batch.results[s];
+      const std::string where = fmt::format("node {} sub-volume {}", r->node, want.subvolume_id);
+      if (got.outcome != want.outcome || got.reason != want.reason) {
+        f.problem("{}: {} ({}) over the wire, {} ({}) in batch", where,
+                  node_outcome_name(got.outcome), got.reason, node_outcome_name(want.outcome),
+                  want.reason);
+        continue;
+      }
+      if (got.mesh.triangles != want.mesh.triangles || got.mesh.face_kinds != want.mesh.face_kinds) {
+        f.problem("{}: {} triangles over the wire, {} in batch", where, got.mesh.triangle_count(),
+                  want.mesh.triangle_count());
+        continue;
+      }
+      if (got.outcome != NodeOutcome::kMesh) continue;
+      ++meshes;
+      bool missing = false;
+      for (float v : want.mesh.attributes.at(0)) missing = missing || std::isnan(v);
+      // Positions are quantized to 1/65535 of the mesh's box per axis.
+      check_mesh_content(got.mesh, g, missing, 1.0 / 65535.0, false, f, where, nullptr);
+    }
+  }
+  if (failures > 0 && f.ok()) {
+    if (failures == answered.size()) {
+      f.refusal = fmt::format("every node failed: {}", first_failure);
+    } else {
+      f.problem("{} of {} nodes failed, e.g.: {}", failures, answered.size(), first_failure);
+    }
+  }
+  f.summary = fmt::format("{} nodes answered, {} meshes, equal to batch extraction",
+                          answered.size(), meshes);
+  client.reset();
+  server.stop();
+  return f;
+}
+
+}  // namespace strielad::robust
