@@ -52,6 +52,17 @@ int main(int argc, char** argv) {
         app.add_option("--advect-seconds", args->advect_seconds,
                        "Offscreen: draw the step's meshes moved this many seconds towards the "
                        "next step (implies --advect)");
+        app.add_option("--integrator", args->integrator,
+                       "Advection integrator: rk4 (default, 60 s steps), euler, dopri5 "
+                       "(adaptive), rosenbrock (adaptive, for stiff flow)")
+            ->check(CLI::IsMember({"euler", "rk4", "dopri5", "rosenbrock"}));
+        app.add_option("--advect-step", args->advect_step_s,
+                       "Advection step in seconds (fixed-step integrators; the adaptive ones' "
+                       "first step), default 60")
+            ->check(CLI::PositiveNumber);
+        app.add_option("--advect-rtol", args->advect_rtol,
+                       "Relative tolerance of the adaptive integrators (default 1e-6)")
+            ->check(CLI::PositiveNumber);
         app.add_option("--sun", args->sun,
                        "Light: 'time' (default) the sun's true direction at the simulation "
                        "time over the domain centre (night is dark), or 'fixed' (from the "

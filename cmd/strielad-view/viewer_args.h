@@ -34,6 +34,9 @@ struct ViewerArgs {
   std::string wind_store;         // where to read the wind; default: STORE
   std::optional<std::uint32_t> wind_level;
   std::optional<double> advect_seconds;  // offscreen: seconds after the step
+  std::string integrator = "rk4";        // lib/advect method
+  double advect_step_s = 60;             // fixed step, or the adaptive methods' first
+  double advect_rtol = 1e-6;             // adaptive methods
   std::string sun = "time";
   std::string tracks_file;   // flight tracks CSV (geo/flight_tracks.h)
   double track_minutes = 2;  // drawn: the last minutes of each track  // "time": the true sun at the simulation time; "fixed"

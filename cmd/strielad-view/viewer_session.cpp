@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "advect/integrators.h"
 #include "core/error.h"
 #include "core/file_io.h"
 #include "net/socket.h"
@@ -33,6 +34,9 @@ void open_advection(const ViewerArgs& args, ViewerSession& session) {
   view::AdvectionSettings settings;
   settings.names = view::parse_wind_names(args.wind);
   settings.level = args.wind_level;
+  settings.displacement.integrator.method = advect::parse_method(args.integrator);
+  settings.displacement.integrator.step_s = args.advect_step_s;
+  settings.displacement.integrator.rtol = args.advect_rtol;
   try {
     session.advection = std::make_unique<view::AdvectionWorker>(Store::open(path), settings);
     session.advection_status =

@@ -240,6 +240,14 @@ std::string_view method_name(Method method) {
   return "unknown";
 }
 
+Method parse_method(std::string_view name) {
+  for (const Method m : {Method::kEuler, Method::kRk4, Method::kDopri5, Method::kRosenbrock}) {
+    if (method_name(m) == name) return m;
+  }
+  throw make_error(ErrorCode::kInvalidArgument,
+                   "integrator '{}': expected euler, rk4, dopri5 or rosenbrock", name);
+}
+
 std::string_view stop_name(Stop stop) {
   switch (stop) {
     case Stop::kReached: return "reached";

@@ -48,6 +48,8 @@ namespace strielad::advect {
 
 enum class Method { kEuler, kRk4, kDopri5, kRosenbrock };
 std::string_view method_name(Method method);
+// The method named by method_name. \error kInvalidArgument listing the names.
+Method parse_method(std::string_view name);
 
 enum class Stop { kReached, kLeftDomain, kMissingWind, kStepLimit, kStepTooSmall };
 std::string_view stop_name(Stop stop);

@@ -25,8 +25,13 @@ int run_tool(const ToolSpec& spec, int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);  // --help, --version
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // One line and the documented status for bad flags (README "Errors and exit
+    // status"), not CLI11's own exit codes.
+    std::cerr << spec.name << ": error: " << e.what() << " (--help lists the flags)\n";
+    return exit_status_for(ErrorCode::kInvalidArgument);
   }
 
   auto logger = spdlog::stderr_color_mt(spec.name);

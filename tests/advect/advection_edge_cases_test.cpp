@@ -139,3 +139,17 @@ TEST(AdvectionEdgeCasesTest, BadArgumentsAreRefused) {
 
 }  // namespace
 }  // namespace strielad::testing
+
+namespace strielad::advect {
+namespace {
+
+TEST(IntegratorNamesTest, EveryMethodByItsNameAndOthersRefused) {
+  for (const Method m : {Method::kEuler, Method::kRk4, Method::kDopri5, Method::kRosenbrock}) {
+    EXPECT_EQ(parse_method(method_name(m)), m);
+  }
+  EXPECT_THROW(parse_method("rk45"), Error);
+  EXPECT_THROW(parse_method(""), Error);
+}
+
+}  // namespace
+}  // namespace strielad::advect

@@ -28,6 +28,7 @@ printf 'float alpha(int id, float distance) { return 0.5; }\n' >> "$work/bad.gls
 echo '{"keyframes": [{"t": 0, "eye": [0, 0, 0], "target": [0, 0, 0]}]}' > "$work/bad-camera.json"
 
 expect 2 "exactly one of STORE or --connect" -- --offscreen --out "$work/x.png"
+expect 2 "--no-such-flag" -- "$work/store" --no-such-flag  # CLI11's errors: status 2 too
 expect 2 "--offscreen needs --out" -- "$work/store" --offscreen
 expect 3 "no such store directory" -- "$work/no-such-store" --offscreen --out "$work/x.png"
 expect 3 "nope" -- "$work/store" --scene "$work/unknown-var.json" --offscreen --out "$work/x.png"
@@ -67,8 +68,9 @@ expect 2 "--advect-seconds is for --offscreen" -- "$work/store" --advect-seconds
 expect 3 "omega" -- "$work/store" --wind ua,va,omega --advect-seconds 60 --offscreen --out "$work/x.png"
 expect 2 "no next step" -- "$work/store" --time 1 --advect-seconds 60 --offscreen --out "$work/x.png"
 expect 2 "U,V,W" -- "$work/store" --wind ua,va --advect-seconds 60 --offscreen --out "$work/x.png"
+expect 2 "integrator" -- "$work/store" --integrator rk45 --advect-seconds 60 --offscreen --out "$work/x.png"
 if "$view" "$work/store" --offscreen --size 160x90 --threads 2 --advect-seconds 300 \
-    --out "$work/moved.png" --json >"$work/moved.json" 2>"$work/moved.err"; then
+    --integrator rosenbrock --advect-rtol 1e-5 --out "$work/moved.png" --json >"$work/moved.json" 2>"$work/moved.err"; then
   is_png "$work/moved.png" || fail "moved.png is not a PNG image"
   grep -q '"nodes_moved":[1-9]' "$work/moved.json" || fail "nothing moved: $(cat "$work/moved.json")"
   ! cmp -s "$work/moved.png" "$work/home.png" || fail "the moved picture is the unmoved one"
