@@ -8,19 +8,12 @@
 #include <unordered_map>
 #include <vector>
 
+#include "extract/position_hash.h"
+
 namespace strielad {
 namespace {
 
 using Position = std::array<double, 3>;
-
-struct PositionHash {
-  std::size_t operator()(const Position& p) const noexcept {
-    std::uint64_t b[3];
-    std::memcpy(b, p.data(), sizeof b);
-    return static_cast<std::size_t>((b[0] * 0x9E3779B97F4A7C15ull) ^ (b[1] * 0xC2B2AE3D27D4EB4Full) ^
-                                    (b[2] * 0x165667B19E3779F9ull));
-  }
-};
 
 struct TripleHash {
   std::size_t operator()(const std::array<std::uint32_t, 3>& t) const noexcept {
@@ -77,7 +70,7 @@ std::size_t remove_collapsed_triangles(Mesh& mesh, bool look_for_sheets) {
   if (!any && !look_for_sheets) return 0;
   {
     // Opposite pairs over the same three positions.
-    std::unordered_map<Position, std::uint32_t, PositionHash> ids;
+    std::unordered_map<Position, std::uint32_t, PositionBitsHash> ids;
     ids.reserve(mesh.positions.size());
     std::vector<std::uint32_t> id(mesh.positions.size());
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {

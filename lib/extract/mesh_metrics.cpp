@@ -8,20 +8,13 @@
 #include <unordered_map>
 #include <vector>
 
+#include "extract/position_hash.h"
+
 namespace strielad {
 
 namespace {
 
 using P = std::array<double, 3>;
-
-struct PHash {
-  std::size_t operator()(const P& p) const noexcept {
-    std::uint64_t b[3];
-    std::memcpy(b, p.data(), sizeof b);
-    return static_cast<std::size_t>((b[0] * 0x9E3779B97F4A7C15ull) ^ (b[1] * 0xC2B2AE3D27D4EB4Full) ^
-                                    (b[2] * 0x165667B19E3779F9ull));
-  }
-};
 
 const P& d3(const P& p) { return p; }
 
@@ -29,7 +22,7 @@ const P& d3(const P& p) { return p; }
 
 MeshCheck check_mesh(const Mesh& mesh) {
   MeshCheck check;
-  std::unordered_map<P, std::uint32_t, PHash> ids;
+  std::unordered_map<P, std::uint32_t, PositionBitsHash> ids;
   std::vector<std::uint32_t> id_of(mesh.positions.size());
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     const P& p = mesh.positions[v];
