@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // strielad-convert sample -o DIR [--dims XxYxZ] [--steps N] [--seed S] [--vars a,b,...]
-//                         [--single-file] [--step-seconds S] [--deflate L] [--json]
+//                         [--single-file] [--step-seconds S] [--deflate L] [--tracks N]
+//                         [--json]
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -13,6 +16,7 @@
 #include "commands.h"
 #include "sample/sample_args.h"
 #include "sample/sample_dataset.h"
+#include "sample/sample_tracks.h"
 
 namespace strielad::convert_cmd {
 namespace {
@@ -26,6 +30,7 @@ struct SampleOptions {
   bool single_file = false;
   double step_seconds = 300;
   int deflate = 0;
+  std::size_t tracks = 0;  // flight tracks written to sample_tracks.csv (0: none)
   bool json = false;
 };
 
@@ -53,6 +58,17 @@ int run_sample(const SampleOptions& opt) {
                                           [&bar](std::uint64_t, std::uint64_t) { bar.advance(); });
     bar.finish();
   }
+  sample::SampleTracksResult tracks;
+  if (opt.tracks > 0) {
+    sample::SampleTrackSpec track_spec;
+    track_spec.tracks = opt.tracks;
+    track_spec.span_seconds = std::max(1.0, static_cast<double>(spec.steps) * spec.step_seconds);
+    track_spec.seed = spec.seed;
+    const auto track_path = std::filesystem::path(opt.output) / "sample_tracks.csv";
+    tracks = sample::write_sample_tracks(track_spec, track_path);
+    spdlog::info("sample: wrote {} flight tracks ({} reports) to {}", tracks.tracks,
+                 tracks.reports, track_path.string());
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double values = static_cast<double>(levels) * static_cast<double>(spec.dims.x) *
@@ -71,6 +87,7 @@ int run_sample(const SampleOptions& opt) {
         {"dims", {spec.dims.x, spec.dims.y, spec.dims.z}},
         {"steps", spec.steps},
         {"seconds", seconds},
+        {"tracks", tracks.tracks},
     };
     std::cout << out.dump() << std::endl;
   }
@@ -100,6 +117,10 @@ void register_sample(CLI::App& app, cli::Action& action) {
   sub->add_option("--step-seconds", opt->step_seconds, "Seconds between time steps")
       ->capture_default_str();
   sub->add_option("--deflate", opt->deflate, "Deflate level 0-9 (with shuffle; 0: none)")
+      ->capture_default_str();
+  sub->add_option("--tracks", opt->tracks,
+                  "Also write N synthetic flight tracks over the domain to sample_tracks.csv "
+                  "(strielad-view --tracks)")
       ->capture_default_str();
   sub->add_flag("--json", opt->json, "Print a JSON summary on stdout");
   sub->callback([&action, opt] { action = [opt] { return run_sample(*opt); }; });

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -118,7 +119,10 @@ int run_offscreen(const ViewerArgs& args) {
                             controller.time_step(), advect_s);
     if (!sun) spdlog::info("the store's time axis or grid gives no real date or place: fixed sun");
   }
+  const auto tracks_start = std::chrono::steady_clock::now();
   const auto tracks = tracks_at(session, args, controller.time_step(), advect_s);
+  const double track_window_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tracks_start).count();
   for (std::size_t i = 0; i < cameras.size(); ++i) {
     auto inputs = render::frame_inputs(controller, cameras[i]);
     if (sun) inputs.sun_direction = sun->direction;
@@ -143,6 +147,7 @@ int run_offscreen(const ViewerArgs& args) {
                           {"nodes_moved", s.nodes_moved},
                           {"tracks_shown", tracks ? tracks->tracks_shown : 0},
                           {"track_segments", tracks ? tracks->segment_count() : 0},
+                          {"track_window_ms", track_window_ms},
                           {"advect_trajectories", motions.empty() ? 0 : motions[0].map->points()},
                           {"advect_evaluations", motions.empty() ? 0 : motions[0].map->evaluations},
                           {"advect_map_ms", motions.empty() ? 0.0 : motions[0].map->compute_seconds * 1e3},
