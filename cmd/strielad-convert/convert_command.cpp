@@ -20,6 +20,7 @@ struct ConvertFlags {
   std::uint32_t brick = build::kDefaultBrick;
   std::string time, steps;
   int threads = 0;
+  double memory_limit_gib = 0;  // 0: the machine's (or cgroup's) memory
   format::CodecSpec codec{.predictor = std::string(build::kPredictorAuto)};
   std::vector<std::string> codec_for;  // VARIABLE=CODEC:LEVEL:SHUFFLE[:PREDICTOR]
   bool nan_as_fill = false, no_finalize = false, json = false;
@@ -76,6 +77,7 @@ int run(const ConvertFlags& f) {
     }
   }
   o.threads = f.threads;
+  o.memory_limit = static_cast<std::uint64_t>(f.memory_limit_gib * 1073741824.0);
   o.finalize = !f.no_finalize;
   std::unique_ptr<cli::ProgressBar> bar;
   std::uint64_t reported = 0;
@@ -108,6 +110,11 @@ void register_convert(CLI::App& app, cli::Action& action) {
                  "Convert only these steps of the store (inclusive A:B), e.g. one Slurm task");
   app.add_option("--threads", f->threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(0, 4096));
+  app.add_option("--memory-limit", f->memory_limit_gib,
+                 "Refuse, before reading anything, a conversion estimated to need more than "
+                 "this many GiB (default: the machine's or cgroup's memory; the estimate "
+                 "assumes incompressible data)")
+      ->check(CLI::Range(0.0, 1e9));
   app.add_option("--codec", f->codec.name, "Blosc codec: blosclz, lz4, lz4hc, zlib, zstd")
       ->capture_default_str();
   app.add_option("--level", f->codec.level, "Compression level 0-9")

@@ -20,6 +20,7 @@ expect 3 "no-such-file.nc" -- "$work/no-such-file.nc" -o "$work/s1"
 expect 3 "'nope'" -- "$work"/data/*.nc -o "$work/s2" --vars nope
 expect 2 "codec 'gzip'" -- "$work"/data/*.nc -o "$work/s3" --codec gzip
 expect 2 "--time" -- "$work"/data/*.nc -o "$work/s4" --time 3:1
+expect 5 "of memory to convert" -- "$work"/data/*.nc -o "$work/s5" --memory-limit 0.000001
 expect 2 "-o STORE is required" -- "$work"/data/*.nc
 expect 8 "different inputs or options" -- "$work"/data/*.nc -o "$work/store" --brick 8
 head -c 1000 "$work/data/sample_t000.nc" > "$work/truncated.nc"
