@@ -20,7 +20,10 @@ double largest_brick_samples(const Dims3& grid, double brick) {
          std::min(brick + 1, double(grid.z));
 }
 
-std::string gigabytes(double bytes) { return fmt::format("{:.1f} GB", bytes / 1e9); }
+std::string gigabytes(double bytes) {
+  return bytes >= 1e8 ? fmt::format("{:.1f} GB", bytes / 1e9)
+                      : fmt::format("{:.1f} MB", bytes / 1e6);
+}
 
 }  // namespace
 
@@ -87,7 +90,8 @@ void check_conversion_memory(const OctreeLayout& layout, DType dtype, std::size_
       ErrorCode::kUnsupported,
       "grid {}x{}x{}: variable '{}' ({}) needs about {} of memory to convert ({} slabs in "
       "flight of {} each: {} plane{} of {}x{} samples; coarse levels {}), more than the {} "
-      "{}; convert with fewer --threads (at least 2 slabs stay in flight), or split the "
+      "{}; convert with fewer --threads (at least 2 slabs stay in flight), raise "
+      "--memory-limit (the estimate assumes data that does not compress), or split the "
       "input into lon/lat tiles (e.g. ncks -d lon,0,{})",
       g.x, g.y, g.z, variable, dtype_name(dtype), gigabytes(m.total_bytes), m.slabs,
       gigabytes(m.slab_bytes), std::min<std::size_t>(g.z, layout.brick() + 3),
