@@ -87,13 +87,8 @@ TEST(IntegratorAccuracyTest, BackwardIntegrationReturnsToTheStart) {
 }
 
 TEST(IntegratorAccuracyTest, WindLinearInTimeIsIntegratedExactlyByRk4) {
-  advect::WindGrid g;
-  g.horizontal = advect::Horizontal::kMetres;
-  g.axes = {linspace(0, 1e6, 3), linspace(0, 1e6, 3), linspace(0, 1000, 2)};
   // u grows from 0 to 10 m/s over the 3600 s between the steps: x(T) = 5 T^2 / 3600.
-  const auto field = sample_wind(std::move(g), 0, 3600, [](double, double, double, double t) {
-    return Vec3{10 * t / 3600, 0, 0};
-  });
+  const auto field = testing::wind_growing_in_time();
   advect::AdvectOptions o;
   o.method = Method::kRk4;
   o.step_s = 600;

@@ -92,14 +92,9 @@ TEST(RosenbrockAccuracyTest, BackwardIntegrationReturnsToTheStart) {
 }
 
 TEST(RosenbrockAccuracyTest, WindChangingInTimeIsFollowed) {
-  advect::WindGrid g;
-  g.horizontal = advect::Horizontal::kMetres;
-  g.axes = {linspace(0, 1e6, 3), linspace(0, 1e6, 3), linspace(0, 1000, 2)};
   // u grows from 0 to 10 m/s over the hour between the steps: x(T) = 5 T^2 / 3600. Only
   // the d rate / dt term carries this: the Jacobian is zero.
-  const auto field = sample_wind(std::move(g), 0, 3600, [](double, double, double, double t) {
-    return Vec3{10 * t / 3600, 0, 0};
-  });
+  const auto field = testing::wind_growing_in_time();
   auto o = rosenbrock(1, 1e9);  // every step accepted: 600 s, then growing
   o.step_s = 600;
   const auto r = advect::advect(field, {1000, 500000, 500}, 0, 3600, o);
