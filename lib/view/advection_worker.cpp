@@ -6,40 +6,15 @@
 #include <algorithm>
 
 #include "core/error.h"
-#include "view/default_scene.h"
 
 namespace strielad::view {
-namespace {
-
-void check_wind(const Store& store, const AdvectionSettings& settings) {
-  const auto& manifest = store.manifest();
-  for (const std::string* name : {&settings.names.u, &settings.names.v, &settings.names.w}) {
-    try {
-      manifest.variable_index(*name);
-    } catch (const Error& e) {
-      throw make_error(ErrorCode::kNotFound, "{}: wind component: {}", store.path().string(),
-                       e.what());
-    }
-  }
-  if (!time_unit_seconds(manifest)) {
-    throw make_error(ErrorCode::kUnsupported,
-                     "{}: time axis '{}' has units '{}': advection needs '<seconds|minutes|"
-                     "hours|days> since <date>'",
-                     store.path().string(), manifest.time.name, manifest.time.units);
-  }
-  if (settings.level && *settings.level >= store.octree().level_count()) {
-    throw make_error(ErrorCode::kInvalidArgument, "{}: wind level {}: the octree has {} levels",
-                     store.path().string(), *settings.level, store.octree().level_count());
-  }
-}
-
-}  // namespace
 
 AdvectionWorker::AdvectionWorker(std::shared_ptr<const Store> store, AdvectionSettings settings)
-    : store_((check_wind(*store, settings), std::move(store))),
+    : store_(std::move(store)),
       settings_(std::move(settings)),
       level_(settings_.level.value_or(choose_wind_level(store_->octree()))),
       frame_(store_->manifest(), lod::WorldFrameOptions{.vertical_exaggeration = 1.0}) {
+  wind_variables(*store_, settings_.names, level_);  // refuse a store without wind up front
   thread_ = std::thread([this] { run(); });
 }
 

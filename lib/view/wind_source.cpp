@@ -84,32 +84,18 @@ std::uint32_t choose_wind_level(const OctreeLayout& layout, std::size_t max_samp
   return static_cast<std::uint32_t>(layout.level_count() - 1);
 }
 
-WindStep load_wind_step(const Store& store, std::uint32_t step, const WindNames& names,
-                        std::uint32_t level) {
+std::array<std::uint32_t, 3> wind_variables(const Store& store, const WindNames& names,
+                                            std::uint32_t level) {
   const auto& manifest = store.manifest();
-  const auto& layout = store.octree();
-  if (level >= layout.level_count()) {
+  if (level >= store.octree().level_count()) {
     throw make_error(ErrorCode::kInvalidArgument, "{}: wind level {}: the octree has {} levels",
-                     store.path().string(), level, layout.level_count());
+                     store.path().string(), level, store.octree().level_count());
   }
-  if (step + 1 >= store.step_count()) {
-    throw make_error(ErrorCode::kInvalidArgument,
-                     "{}: time step {}: no later step to advect towards (the store has {})",
-                     store.path().string(), step, store.step_count());
-  }
-  const auto unit_seconds = time_unit_seconds(manifest);
-  if (!unit_seconds) {
+  if (!time_unit_seconds(manifest)) {
     throw make_error(ErrorCode::kUnsupported,
                      "{}: time axis '{}' has units '{}': advection needs '<seconds|minutes|"
                      "hours|days> since <date>'",
                      store.path().string(), manifest.time.name, manifest.time.units);
-  }
-  const double seconds = (manifest.time.values[step + 1] - manifest.time.values[step]) *
-                         *unit_seconds;
-  if (!(seconds > 0) || !std::isfinite(seconds)) {
-    throw make_error(ErrorCode::kInvalidArgument,
-                     "{}: time steps {} and {} are not in increasing time ({} s apart)",
-                     store.path().string(), step, step + 1, seconds);
   }
   std::array<std::uint32_t, 3> variables{};
   const std::array<const std::string*, 3> wanted{&names.u, &names.v, &names.w};
@@ -120,6 +106,26 @@ WindStep load_wind_step(const Store& store, std::uint32_t step, const WindNames&
       throw make_error(ErrorCode::kNotFound, "{}: wind component: {}", store.path().string(),
                        e.what());
     }
+  }
+  return variables;
+}
+
+WindStep load_wind_step(const Store& store, std::uint32_t step, const WindNames& names,
+                        std::uint32_t level) {
+  const auto& manifest = store.manifest();
+  const auto& layout = store.octree();
+  const std::array<std::uint32_t, 3> variables = wind_variables(store, names, level);
+  if (step + 1 >= store.step_count()) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "{}: time step {}: no later step to advect towards (the store has {})",
+                     store.path().string(), step, store.step_count());
+  }
+  const double seconds = (manifest.time.values[step + 1] - manifest.time.values[step]) *
+                         *time_unit_seconds(manifest);
+  if (!(seconds > 0) || !std::isfinite(seconds)) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "{}: time steps {} and {} are not in increasing time ({} s apart)",
+                     store.path().string(), step, step + 1, seconds);
   }
 
   const lod::WorldFrame frame(manifest, lod::WorldFrameOptions{.vertical_exaggeration = 1.0});

@@ -53,6 +53,13 @@ WindUnits wind_units(const lod::WorldFrame& frame);
 std::uint32_t choose_wind_level(const OctreeLayout& layout,
                                 std::size_t max_samples = kDefaultWindSamples);
 
+// The store's indices of the wind components, once it is clear the store can be
+// advected at `level`. \error kNotFound naming the store and component when a wind
+// variable is missing; kUnsupported for time units advection cannot convert to seconds;
+// kInvalidArgument when `level` is not in the octree.
+std::array<std::uint32_t, 3> wind_variables(const Store& store, const WindNames& names,
+                                            std::uint32_t level);
+
 struct WindStep {
   advect::WindField field;
   WindUnits units;
@@ -64,10 +71,9 @@ struct WindStep {
 
 // The wind between `step` and `step + 1` at `level`, every brick of the level read
 // (in parallel). Missing samples (fill) stay NaN: trajectories stop there, flagged.
-// \error kNotFound naming the store and variable when a wind component is missing;
-// kInvalidArgument when `step` is the last step (no next one to advect towards), when
-// the two steps are not in increasing time, or `level` is not in the octree; the
-// store's read errors (kCorrupt naming file, variable and node).
+// \error as wind_variables; kInvalidArgument when `step` is the last step (no next one
+// to advect towards) or the two steps are not in increasing time; the store's read
+// errors (kCorrupt naming file, variable and node).
 WindStep load_wind_step(const Store& store, std::uint32_t step, const WindNames& names,
                         std::uint32_t level);
 
