@@ -32,8 +32,8 @@ std::unique_ptr<ServerClient> ServerClient::connect(const net::Endpoint& endpoin
   net::Socket socket = net::connect_tcp(endpoint);
   std::unique_ptr<ServerClient> client(new ServerClient(std::move(socket), std::move(options)));
   net::write_message(client->socket_,
-                     protocol::Hello{protocol::kProtocolVersion, client->options_.client_name,
-                                     client->options_.token});
+                     protocol::Hello{client->options_.protocol_version,
+                                     client->options_.client_name, client->options_.token});
   client->socket_.set_receive_timeout(client->options_.timeout);
   const net::ReceivedMessage reply =
       net::read_message(client->socket_, protocol::kMaxServerPayloadBytes);
@@ -51,6 +51,11 @@ std::unique_ptr<ServerClient> ServerClient::connect(const net::Endpoint& endpoin
   if (!welcome) {
     throw make_error(ErrorCode::kCorrupt, "{}: expected Welcome, got {}", endpoint.to_string(),
                      protocol::message_type_name(protocol::message_type(reply.message)));
+  }
+  if (welcome->version > client->options_.protocol_version) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: Welcome: version {} is above the {} this client offered",
+                     endpoint.to_string(), welcome->version, client->options_.protocol_version);
   }
   client->welcome_ = *welcome;
   client->reader_ = std::thread([c = client.get()] { c->reader_loop(); });
@@ -88,14 +93,28 @@ void ServerClient::reader_loop() {
       bytes_received_ += in.frame_bytes;
       if (const auto* g = std::get_if<protocol::GenerationStarted>(&in.message)) {
         accepted_generation_ = g->generation;
-        attribute_names_ = parse_scene(g->scene_json, "GenerationStarted").attributes;
+        Scene scene = parse_scene(g->scene_json, "GenerationStarted");
+        attribute_names_ = std::move(scene.attributes);
+        slice_variables_.clear();
+        for (const Slice& s : scene.slices) slice_variables_.emplace_back(s.id, s.var);
       } else if (const auto gen = result_generation(in.message)) {
         if (*gen < accepted_generation_) {
           ++stale_results_;
           continue;
         }
         if (auto* r = std::get_if<protocol::NodeResult>(&in.message)) {
+          if (!r->slices.empty() && welcome_.version < protocol::kProtocolVersionSlices) {
+            reason = fmt::format("malformed message from the server: NodeResult with slices on a "
+                                 "protocol version {} connection",
+                                 welcome_.version);
+            break;
+          }
           for (auto& sv : r->subvolumes) sv.mesh.attribute_names = attribute_names_;
+          for (auto& slice : r->slices) {
+            for (const auto& [id, var] : slice_variables_) {
+              if (id == slice.slice_id) slice.mesh.attribute_names = {var};
+            }
+          }
         }
       } else if (const auto* e = std::get_if<protocol::ErrorMessage>(&in.message); e && e->fatal) {
         reason = fmt::format("server closed the connection: {}: {}",

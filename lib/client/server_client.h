@@ -25,6 +25,9 @@ namespace strielad::client {
 struct ClientOptions {
   std::string client_name = "strielad-client";
   std::string token;  // empty: none
+  // The highest protocol version to offer in Hello (formats/protocol.md): 2 receives
+  // slice results; 1 behaves as a version-1 client (a scene with slices is refused).
+  std::uint16_t protocol_version = protocol::kProtocolVersion;
   // How long the synchronous calls (connect, open_dataset, set_scene, set_time) wait.
   std::chrono::milliseconds timeout{30000};
 };
@@ -40,6 +43,8 @@ class ServerClient {
   ~ServerClient();  // says Goodbye and closes
 
   const protocol::Welcome& welcome() const { return welcome_; }
+  // The version both speak (Welcome's).
+  std::uint16_t protocol_version() const { return welcome_.version; }
 
   // Opens a dataset by name under the server's root and waits for its manifest.
   // \error the server's error (kNotFound, kInvalidArgument for a name outside the root).
@@ -95,6 +100,7 @@ class ServerClient {
   std::uint32_t generation_ = 0;
   std::uint32_t accepted_generation_ = 0;  // last GenerationStarted received
   std::vector<std::string> attribute_names_;
+  std::vector<std::pair<std::uint32_t, std::string>> slice_variables_;  // id, colouring variable
   bool open_ = true;
   std::string close_reason_;
   std::uint64_t stale_results_ = 0;

@@ -18,6 +18,9 @@ enum class FaceKind : std::uint8_t {
   kNodeBoundary = 1,
   kDomainBox = 2,
   kGridBoundary = 3,
+  // A slice's triangle (formats/scene.md, "Slices"): slice meshes carry only this kind
+  // and are not closed.
+  kSlice = 4,
 };
 
 struct Mesh {

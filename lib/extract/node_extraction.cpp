@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "extract/node_extractor.h"
+#include "extract/slice_extraction.h"
 #include "store/brick_cache.h"
 #include "store/store.h"
 
@@ -189,10 +190,16 @@ std::vector<std::uint32_t> node_brick_variables(const Store& store, const Resolv
   const std::vector<SubVolumePlan> plans =
       plan_subvolumes(store, scene, step, geometry, node, results);
   std::vector<std::uint32_t> variables;
-  if (plans.empty() || has_no_cells(geometry)) return variables;
-  variables = scene.attributes;
+  if (has_no_cells(geometry)) return variables;
+  if (!plans.empty()) variables = scene.attributes;
   for (const SubVolumePlan& plan : plans) {
     for (const ResolvedLimit& limit : plan.limits) variables.push_back(limit.variable);
+  }
+  for (const ResolvedSlice& slice : scene.slices) {
+    SliceResult skipped;
+    if (skip_slice(store, slice, step, geometry, node, skipped)) continue;
+    if (slice.is_level()) variables.push_back(slice.level_variable);
+    variables.push_back(slice.variable);
   }
   std::sort(variables.begin(), variables.end());
   variables.erase(std::unique(variables.begin(), variables.end()), variables.end());
@@ -209,10 +216,18 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
   const NodeGeometry geometry = node_geometry(store, node);
   const std::vector<SubVolumePlan> plans =
       plan_subvolumes(store, scene, step, geometry, node, out.results);
-  if (plans.empty()) return out;
+  // Slices to extract (the others are decided here, without reading bricks).
+  std::vector<std::size_t> slice_plans;
+  out.slices.resize(scene.slices.size());
+  for (std::size_t i = 0; i < scene.slices.size(); ++i) {
+    if (!skip_slice(store, scene.slices[i], step, geometry, node, out.slices[i])) {
+      slice_plans.push_back(i);
+    }
+  }
+  if (plans.empty() && slice_plans.empty()) return out;
   if (has_no_cells(geometry)) {
     for (const SubVolumePlan& plan : plans) out.results[plan.subvolume].outcome = NodeOutcome::kEmpty;
-    return out;
+    return out;  // slices not skipped stay kEmpty
   }
 
   // Fetch each needed brick once.
@@ -240,7 +255,8 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
   };
   std::vector<std::uint32_t> attribute_fields;
   std::vector<std::string> attribute_names;
-  for (std::uint32_t v : scene.attributes) {
+  // The scene's attributes are per-vertex values of sub-volume meshes only.
+  for (std::uint32_t v : plans.empty() ? std::vector<std::uint32_t>{} : scene.attributes) {
     attribute_fields.push_back(field(v));
     attribute_names.push_back(m.variables[v].name);
   }
@@ -257,6 +273,20 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
     request.attribute_names = attribute_names;
     SubVolumeResult& r = out.results[plan.subvolume];
     r.mesh = extract_node_mesh(ns, request, &r.stats);
+    r.outcome = r.mesh.empty() ? NodeOutcome::kEmpty : NodeOutcome::kMesh;
+  }
+  for (const std::size_t i : slice_plans) {
+    throw_if_stopped(stop, store, node);
+    const ResolvedSlice& slice = scene.slices[i];
+    SliceRequest request;
+    request.slice_id = slice.id;
+    request.axis = slice.axis;
+    request.value = slice.value;
+    if (slice.is_level()) request.level_field = field(slice.level_variable);
+    request.colour_field = field(slice.variable);
+    request.colour_name = m.variables[slice.variable].name;
+    SliceResult& r = out.slices[i];
+    r.mesh = extract_slice_mesh(ns, request);
     r.outcome = r.mesh.empty() ? NodeOutcome::kEmpty : NodeOutcome::kMesh;
   }
   return out;

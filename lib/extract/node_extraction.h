@@ -40,9 +40,22 @@ struct SubVolumeResult {
   ExtractStats stats;
 };
 
+// One slice's outcome in a node (formats/scene.md, "Slices"): kMesh with a mesh of face
+// kind kSlice and one attribute (the colouring variable), kEmpty, or a skip decided
+// from the node's box and index alone: kSkippedDomain (the plane misses the node, or
+// lies on its upper face that the neighbouring node draws), kSkippedValueRange (the
+// level's value is outside the node's range of its variable), kSkippedNoData.
+struct SliceResult {
+  std::uint32_t slice_id = 0;
+  NodeOutcome outcome = NodeOutcome::kEmpty;
+  std::string reason;
+  Mesh mesh;
+};
+
 struct NodeExtraction {
   NodeId node = 0;
   std::vector<SubVolumeResult> results;  // one per scene sub-volume, in scene order
+  std::vector<SliceResult> slices;       // one per scene slice, in scene order
   std::uint32_t bricks_used = 0;         // bricks fetched (cache or disk) for this node
 };
 
@@ -51,7 +64,9 @@ struct NodeExtraction {
 // and finite (a limit bound beyond that range selects none of them).
 // Throws strielad::Error (naming the file, variable and node) when a needed brick is
 // damaged; other nodes are unaffected. `stop` is polled before every brick read and
-// every sub-volume: once stop is requested the call throws kCancelled.
+// every sub-volume and slice: once stop is requested the call throws kCancelled. Slices
+// (lib/extract/slice_extraction.h) share the node's bricks with the sub-volumes: each
+// needed brick is fetched once.
 NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
                             std::uint32_t step, NodeId node, std::stop_token stop = {});
 

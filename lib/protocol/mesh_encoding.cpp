@@ -37,7 +37,13 @@ Box bounding_box(const Mesh& mesh) {
 }
 
 // Everything encode_mesh promises to reject, before a byte is written.
-void check_encodable(const Mesh& mesh, std::string_view what) {
+// The face kinds a mesh of `role` may carry: "0..3" or "4".
+bool face_kind_allowed(std::uint8_t kind, MeshRole role) {
+  return role == MeshRole::kSlice ? kind == static_cast<std::uint8_t>(FaceKind::kSlice) : kind <= 3;
+}
+std::string_view face_kinds_of(MeshRole role) { return role == MeshRole::kSlice ? "4 for a slice" : "0..3"; }
+
+void check_encodable(const Mesh& mesh, std::string_view what, MeshRole role) {
   const auto fail = [&](std::string_view field, const std::string& problem) {
     return make_error(ErrorCode::kInvalidArgument, "{}: {}: {}", what, field, problem);
   };
@@ -53,6 +59,10 @@ void check_encodable(const Mesh& mesh, std::string_view what) {
   if (mesh.face_kinds.size() != t) {
     throw fail("face_kinds",
                fmt::format("{} face kinds for {} triangles", mesh.face_kinds.size(), t));
+  }
+  if (role == MeshRole::kSlice && mesh.attributes.size() != 1) {
+    throw fail("attributes", fmt::format("{} attributes, a slice mesh has exactly 1",
+                                         mesh.attributes.size()));
   }
   if (mesh.attributes.size() > kMaxSceneAttributes) {
     throw fail("attributes", fmt::format("{} attributes, over the limit of {}",
@@ -82,10 +92,10 @@ void check_encodable(const Mesh& mesh, std::string_view what) {
                    fmt::format("index {} >= vertex count {}", mesh.triangles[i][c], v));
       }
     }
-    if (static_cast<std::uint8_t>(mesh.face_kinds[i]) > 3) {
+    if (!face_kind_allowed(static_cast<std::uint8_t>(mesh.face_kinds[i]), role)) {
       throw fail(fmt::format("face_kinds[{}]", i),
-                 fmt::format("{} is not a face kind (0..3)",
-                             static_cast<unsigned>(mesh.face_kinds[i])));
+                 fmt::format("{} is not a face kind ({})",
+                             static_cast<unsigned>(mesh.face_kinds[i]), face_kinds_of(role)));
     }
   }
   for (std::size_t a = 0; a < mesh.attributes.size(); ++a) {
@@ -191,8 +201,8 @@ std::size_t encoded_mesh_bytes(const Mesh& mesh) {
          a * (8 + 2 * v);
 }
 
-void encode_mesh(const Mesh& mesh, ByteWriter& out, std::string_view what) {
-  check_encodable(mesh, what);
+void encode_mesh(const Mesh& mesh, ByteWriter& out, std::string_view what, MeshRole role) {
+  check_encodable(mesh, what, role);
   const auto v = static_cast<std::uint32_t>(mesh.positions.size());
   const std::uint8_t width = index_bytes_for(v);
   SizedWriter w(encoded_mesh_bytes(mesh));
@@ -235,7 +245,7 @@ void encode_mesh(const Mesh& mesh, ByteWriter& out, std::string_view what) {
   out.bytes(w.bytes());
 }
 
-Mesh decode_mesh(ByteReader& in, std::string_view what) {
+Mesh decode_mesh(ByteReader& in, std::string_view what, MeshRole role) {
   if (in.remaining() < kMeshHeaderBytes) {
     throw make_error(ErrorCode::kTruncated, "{}: the mesh header needs {} bytes, only {} remain",
                      what, kMeshHeaderBytes, in.remaining());
@@ -252,6 +262,9 @@ Mesh decode_mesh(ByteReader& in, std::string_view what) {
     for (double& c : corner) c = in.f64("box");
   }
   if (t == 0) throw invalid("triangle_count", "0 (a mesh has at least one triangle)");
+  if (role == MeshRole::kSlice && attribute_count != 1) {
+    throw invalid("attribute_count", fmt::format("{} (a slice mesh has exactly 1)", attribute_count));
+  }
   if (attribute_count > kMaxSceneAttributes) {
     throw invalid("attribute_count", fmt::format("{} is over the limit of {}", attribute_count,
                                                  kMaxSceneAttributes));
@@ -311,9 +324,9 @@ Mesh decode_mesh(ByteReader& in, std::string_view what) {
   p = in.bytes(t, "face_kinds").data();
   for (std::size_t i = 0; i < t; ++i) {
     const auto kind = static_cast<std::uint8_t>(p[i]);
-    if (kind > 3) {
+    if (!face_kind_allowed(kind, role)) {
       throw invalid(fmt::format("face_kinds[{}]", i),
-                    fmt::format("{} is not a face kind (0..3)", kind));
+                    fmt::format("{} is not a face kind ({})", kind, face_kinds_of(role)));
     }
     mesh.face_kinds[i] = static_cast<FaceKind>(kind);
   }

@@ -203,6 +203,30 @@ void validate(const NodeResult& m, const Rules& r) {
                    node_outcome_name(s.outcome));
     }
   }
+  if (m.slices.size() > kMaxSliceResults) {
+    throw r.fail("slices", "{} entries, over the limit of {}", m.slices.size(), kMaxSliceResults);
+  }
+  for (std::size_t i = 0; i < m.slices.size(); ++i) {
+    const SliceResultWire& s = m.slices[i];
+    const std::string field = fmt::format("slices[{}]", i);
+    if (s.slice_id == 0 || s.slice_id > kMaxSliceId) {
+      throw r.fail(field + ".slice_id", "{} is outside 1 ..= {}", s.slice_id, kMaxSliceId);
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (m.slices[j].slice_id == s.slice_id) {
+        throw r.fail(field + ".slice_id", "{} is also at slices[{}]", s.slice_id, j);
+      }
+    }
+    if (s.outcome > kLastOutcome) {
+      throw r.fail(field + ".outcome", "{} is not an outcome (0..4)",
+                   static_cast<unsigned>(s.outcome));
+    }
+    r.text(field + ".reason", s.reason, kMaxMessageTextBytes);
+    if (s.outcome != NodeOutcome::kMesh && !s.mesh.triangles.empty()) {
+      throw r.fail(field + ".mesh", "{} triangles with outcome {}", s.mesh.triangles.size(),
+                   node_outcome_name(s.outcome));
+    }
+  }
 }
 
 void validate(const NodeFailed& m, const Rules& r) {
@@ -301,6 +325,17 @@ void write(const NodeResult& m, ByteWriter& w, const Rules& r) {
     put_str16(w, s.reason);
     if (s.outcome == NodeOutcome::kMesh) {
       encode_mesh(s.mesh, w, fmt::format("{}: subvolumes[{}].mesh", r.what, i));
+    }
+  }
+  if (m.slices.empty()) return;  // no slice list, no flag: a version-1 payload
+  w.u32(static_cast<std::uint32_t>(m.slices.size()));
+  for (std::size_t i = 0; i < m.slices.size(); ++i) {
+    const SliceResultWire& s = m.slices[i];
+    w.u32(s.slice_id);
+    w.u8(static_cast<std::uint8_t>(s.outcome));
+    put_str16(w, s.reason);
+    if (s.outcome == NodeOutcome::kMesh) {
+      encode_mesh(s.mesh, w, fmt::format("{}: slices[{}].mesh", r.what, i), MeshRole::kSlice);
     }
   }
 }
@@ -450,7 +485,7 @@ GenerationStarted read_generation_started(PayloadReader& p) {
   return m;
 }
 
-NodeResult read_node_result(PayloadReader& p) {
+NodeResult read_node_result(PayloadReader& p, std::uint16_t flags) {
   NodeResult m;
   m.generation = p.in().u32("generation");
   m.node = p.in().u32("node");
@@ -468,6 +503,28 @@ NodeResult read_node_result(PayloadReader& p) {
     if (s.outcome == NodeOutcome::kMesh) {
       s.mesh = decode_mesh(p.in(), fmt::format("{}: {}.mesh", p.rules().what, field));
       s.mesh.subvolume_id = s.subvolume_id;
+    }
+  }
+  if ((flags & kFrameFlagSlices) == 0) return m;
+  const std::uint32_t slices = p.count("slices", kMaxSliceResults, kMinSubVolumeBytes);
+  if (slices == 0) {
+    throw p.rules().fail("slices", "0 entries with the slices flag set (at least 1)");
+  }
+  m.slices.resize(slices);
+  for (std::size_t i = 0; i < m.slices.size(); ++i) {
+    SliceResultWire& s = m.slices[i];
+    const std::string field = fmt::format("slices[{}]", i);
+    s.slice_id = p.in().u32(field + ".slice_id");
+    const std::uint8_t outcome = p.in().u8(field + ".outcome");
+    if (outcome > static_cast<std::uint8_t>(kLastOutcome)) {
+      throw p.rules().fail(field + ".outcome", "{} is not an outcome (0..4)", outcome);
+    }
+    s.outcome = static_cast<NodeOutcome>(outcome);
+    s.reason = p.str16(field + ".reason", kMaxMessageTextBytes);
+    if (s.outcome == NodeOutcome::kMesh) {
+      s.mesh = decode_mesh(p.in(), fmt::format("{}: {}.mesh", p.rules().what, field),
+                           MeshRole::kSlice);
+      s.mesh.subvolume_id = s.slice_id;
     }
   }
   return m;
@@ -494,7 +551,7 @@ ErrorMessage read_error(PayloadReader& p) {
 
 Stats read_stats(PayloadReader& p) { return {p.str32("json", kMaxServerPayloadBytes)}; }
 
-Message read_payload(PayloadReader& p, MessageType type) {
+Message read_payload(PayloadReader& p, MessageType type, std::uint16_t flags) {
   switch (type) {
     case MessageType::kHello: return read_hello(p);
     case MessageType::kOpenDataset: return read_open_dataset(p);
@@ -506,7 +563,7 @@ Message read_payload(PayloadReader& p, MessageType type) {
     case MessageType::kWelcome: return read_welcome(p);
     case MessageType::kDatasetOpened: return read_dataset_opened(p);
     case MessageType::kGenerationStarted: return read_generation_started(p);
-    case MessageType::kNodeResult: return read_node_result(p);
+    case MessageType::kNodeResult: return read_node_result(p, flags);
     case MessageType::kNodeFailed: return read_node_failed(p);
     case MessageType::kError: return read_error(p);
     case MessageType::kStats: return read_stats(p);
@@ -548,7 +605,8 @@ std::vector<std::byte> encode_frame(const Message& message) {
   ByteWriter header;
   header.u32(static_cast<std::uint32_t>(payload));
   header.u16(static_cast<std::uint16_t>(type));
-  header.u16(0);
+  const auto* result = std::get_if<NodeResult>(&message);
+  header.u16(result != nullptr && !result->slices.empty() ? kFrameFlagSlices : 0);
   std::memcpy(frame.data(), header.data().data(), kFrameHeaderBytes);
   return frame;
 }
@@ -574,10 +632,13 @@ FrameHeader decode_frame_header(std::span<const std::byte> header,
     throw make_error(ErrorCode::kInvalidInput, "frame header: type: {} is not a message type",
                      type);
   }
-  if (flags != 0) {
-    throw make_error(ErrorCode::kInvalidInput, "frame header: flags: {:#06x} (must be 0)", flags);
+  const auto message_type = static_cast<MessageType>(type);
+  const std::uint16_t allowed = message_type == MessageType::kNodeResult ? kFrameFlagSlices : 0;
+  if ((flags & ~allowed) != 0) {
+    throw make_error(ErrorCode::kInvalidInput, "frame header: flags: {:#06x} (must be {})", flags,
+                     allowed == 0 ? "0" : "0 or 0x0001 on a NodeResult");
   }
-  return FrameHeader{length, static_cast<MessageType>(type)};
+  return FrameHeader{length, message_type, flags};
 }
 
 Message decode_payload(const FrameHeader& header, std::span<const std::byte> payload) {
@@ -595,8 +656,13 @@ Message decode_payload(const FrameHeader& header, std::span<const std::byte> pay
                      "{}: decode_payload got {} bytes for a payload of {}", name, payload.size(),
                      header.payload_bytes);
   }
+  const std::uint16_t allowed = header.type == MessageType::kNodeResult ? kFrameFlagSlices : 0;
+  if ((header.flags & ~allowed) != 0) {
+    throw make_error(ErrorCode::kInvalidInput, "frame header: flags: {:#06x} are not allowed on {}",
+                     header.flags, name);
+  }
   PayloadReader reader(payload, header.type);
-  Message message = read_payload(reader, header.type);
+  Message message = read_payload(reader, header.type, header.flags);
   reader.finish();
   std::visit([&](const auto& m) { validate(m, reader.rules()); }, message);
   return message;

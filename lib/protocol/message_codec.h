@@ -33,6 +33,7 @@ namespace strielad::protocol {
 struct FrameHeader {
   std::uint32_t payload_bytes = 0;
   MessageType type = MessageType::kHello;
+  std::uint16_t flags = 0;  // 0, or kFrameFlagSlices on a NodeResult
   friend bool operator==(const FrameHeader&, const FrameHeader&) = default;
 };
 
@@ -41,7 +42,8 @@ struct FrameHeader {
 // its limit, invalid UTF-8, a non-finite priority, a node listed twice in one
 // CutUpdate, an unknown WireError or NodeOutcome, an unencodable mesh
 // (protocol/mesh_encoding.h) or a kMesh result without triangles, triangles for
-// another outcome, a payload over kMaxClientPayloadBytes (client messages) or
+// another outcome, a NodeResult slice list over kMaxSliceResults or with a slice
+// mesh that is not MeshRole::kSlice, a payload over kMaxClientPayloadBytes (client messages) or
 // kMaxServerPayloadBytes (server messages), and so on.
 std::vector<std::byte> encode_frame(const Message& message);
 
@@ -52,7 +54,8 @@ std::uint32_t peek_payload_length(std::span<const std::byte> header);
 
 // Reads and checks the first kFrameHeaderBytes bytes of `header`. Throws kTruncated
 // when there are fewer, kInvalidInput for a payload length above `max_payload_bytes`,
-// an unknown message type or non-zero flags. Does not look at the payload.
+// an unknown message type or flags other than 0 (kFrameFlagSlices on a NodeResult
+// excepted). Does not look at the payload.
 FrameHeader decode_frame_header(std::span<const std::byte> header,
                                 std::uint32_t max_payload_bytes);
 

@@ -19,13 +19,19 @@
 
 namespace strielad::protocol {
 
-// Version of formats/protocol.md this library speaks.
-inline constexpr std::uint16_t kProtocolVersion = 1;
+// Highest version of formats/protocol.md this library speaks (it speaks 1 ..= this).
+inline constexpr std::uint16_t kProtocolVersion = 2;
+// The first version whose NodeResult may carry slice results.
+inline constexpr std::uint16_t kProtocolVersionSlices = 2;
 // Every Hello starts with these 8 bytes.
 inline constexpr std::array<char, 8> kHelloMagic{'S', 'T', 'R', 'I', 'E', 'L', 'A', 'D'};
 
-// Frame header: u32 payload length, u16 message type, u16 flags (0). 8 bytes.
+// Frame header: u32 payload length, u16 message type, u16 flags. 8 bytes.
 inline constexpr std::size_t kFrameHeaderBytes = 8;
+// Frame flag (version 2): on a NodeResult, a list of slice results follows the
+// sub-volume results. The only flag; every other bit, and this one on any other
+// message type, must be 0.
+inline constexpr std::uint16_t kFrameFlagSlices = 0x0001;
 
 // Fixed protocol limits (formats/protocol.md, "Limits"). A server may announce lower
 // values in Welcome; a peer rejects anything above these whatever was announced.
@@ -35,6 +41,7 @@ inline constexpr std::uint32_t kMaxNodesPerUpdate = 1u << 18;  // entries of one
 inline constexpr std::size_t kMaxNameBytes = 1024;             // dataset names, server names
 inline constexpr std::size_t kMaxTokenBytes = 4096;
 inline constexpr std::size_t kMaxMessageTextBytes = 4096;      // error messages and reasons
+inline constexpr std::uint32_t kMaxSliceResults = 16;          // a scene's slices
 
 enum class MessageType : std::uint16_t {
   // client -> server
@@ -175,10 +182,24 @@ struct SubVolumeResultWire {
   friend bool operator==(const SubVolumeResultWire&, const SubVolumeResultWire&) = default;
 };
 
+// One slice's outcome in a node (version 2). `mesh` is set only for kMesh: face kind 4
+// (FaceKind::kSlice) on every triangle and one attribute, the slice's colouring
+// variable (named by the scene, not on the wire); mesh.subvolume_id is the slice id.
+struct SliceResultWire {
+  std::uint32_t slice_id = 0;
+  NodeOutcome outcome = NodeOutcome::kEmpty;
+  std::string reason;  // for skips
+  Mesh mesh;
+  friend bool operator==(const SliceResultWire&, const SliceResultWire&) = default;
+};
+
 struct NodeResult {
   std::uint32_t generation = 0;
   NodeId node = 0;
   std::vector<SubVolumeResultWire> subvolumes;  // in scene order
+  // In the scene's slice order; only on a connection of version 2 or later (the frame
+  // then has kFrameFlagSlices). Empty: no slice list on the wire.
+  std::vector<SliceResultWire> slices{};
   friend bool operator==(const NodeResult&, const NodeResult&) = default;
 };
 

@@ -9,7 +9,14 @@ namespace strielad::render {
 namespace {
 
 std::size_t geometry_bytes(const view::NodeGeometry& g) {
-  return g.vertices.size() * sizeof(float) + g.indices.size() * sizeof(std::uint32_t);
+  return (g.vertices.size() + g.slice_vertices.size()) * sizeof(float) +
+         (g.indices.size() + g.slice_indices.size()) * sizeof(std::uint32_t);
+}
+
+// glNamedBufferStorage refuses size 0: a node with only slices gets 4-byte buffers.
+void storage(const GlBuffer& buffer, std::size_t bytes, const void* data) {
+  glNamedBufferStorage(buffer.get(), static_cast<GLsizeiptr>(std::max<std::size_t>(bytes, 4)),
+                       bytes == 0 ? nullptr : data, 0);
 }
 
 std::size_t gpu_bytes(const GpuMesh& m) { return m.source ? geometry_bytes(*m.source) : 0; }
@@ -24,6 +31,7 @@ std::size_t GpuMeshes::sync(const view::ProgressiveMeshes& meshes, std::size_t m
     if (entry == meshes.entries().end() || !entry->second.mesh) {
       bytes_ -= gpu_bytes(it->second);
       triangles_ -= static_cast<std::size_t>(it->second.index_count) / 3;
+      slice_triangles_ -= static_cast<std::size_t>(it->second.slice_index_count) / 3;
       it = meshes_.erase(it);
     } else {
       ++it;
@@ -52,11 +60,8 @@ void GpuMeshes::upload(NodeId node, std::shared_ptr<const view::NodeGeometry> ge
   mesh.vertices = make_buffer();
   mesh.indices = make_buffer();
   const auto& g = *geometry;
-  glNamedBufferStorage(mesh.vertices.get(), static_cast<GLsizeiptr>(g.vertices.size() * sizeof(float)),
-                       g.vertices.data(), 0);
-  glNamedBufferStorage(mesh.indices.get(),
-                       static_cast<GLsizeiptr>(g.indices.size() * sizeof(std::uint32_t)),
-                       g.indices.data(), 0);
+  storage(mesh.vertices, g.vertices.size() * sizeof(float), g.vertices.data());
+  storage(mesh.indices, g.indices.size() * sizeof(std::uint32_t), g.indices.data());
   const GLuint vao = mesh.vertex_array.get();
   glVertexArrayVertexBuffer(vao, 0, mesh.vertices.get(), 0,
                             static_cast<GLsizei>(view::kVertexFloats * sizeof(float)));
@@ -82,13 +87,44 @@ void GpuMeshes::upload(NodeId node, std::shared_ptr<const view::NodeGeometry> ge
       hi[a] = std::max(hi[a], g.vertices[v * view::kVertexFloats + a]);
     }
   }
+  for (std::size_t v = 0; v < g.slice_vertex_count(); ++v) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], g.slice_vertices[v * view::kSliceVertexFloats + a]);
+      hi[a] = std::max(hi[a], g.slice_vertices[v * view::kSliceVertexFloats + a]);
+    }
+  }
   for (int a = 0; a < 3; ++a) mesh.center[a] = 0.5f * (lo[a] + hi[a]);
+  if (!g.slice_indices.empty()) {
+    mesh.slice_vertex_array = make_vertex_array();
+    mesh.slice_vertices = make_buffer();
+    mesh.slice_indices = make_buffer();
+    storage(mesh.slice_vertices, g.slice_vertices.size() * sizeof(float), g.slice_vertices.data());
+    storage(mesh.slice_indices, g.slice_indices.size() * sizeof(std::uint32_t),
+            g.slice_indices.data());
+    const GLuint svao = mesh.slice_vertex_array.get();
+    glVertexArrayVertexBuffer(svao, 0, mesh.slice_vertices.get(), 0,
+                              static_cast<GLsizei>(view::kSliceVertexFloats * sizeof(float)));
+    glVertexArrayElementBuffer(svao, mesh.slice_indices.get());
+    const auto slice_attribute = [&](GLuint location, GLint size, std::size_t offset) {
+      glEnableVertexArrayAttrib(svao, location);
+      glVertexArrayAttribFormat(svao, location, size, GL_FLOAT, GL_FALSE,
+                                static_cast<GLuint>(offset * sizeof(float)));
+      glVertexArrayAttribBinding(svao, location, 0);
+    };
+    slice_attribute(0, 3, view::kSliceVertexPosition);
+    slice_attribute(1, 3, view::kSliceVertexNormal);
+    slice_attribute(2, 1, view::kSliceVertexValue);
+    slice_attribute(3, 1, view::kSliceVertexSlot);
+    mesh.slice_index_count = static_cast<GLsizei>(g.slice_indices.size());
+  }
   mesh.source = std::move(geometry);
   auto& slot = meshes_[node];
   bytes_ -= gpu_bytes(slot);
   triangles_ -= static_cast<std::size_t>(slot.index_count) / 3;
+  slice_triangles_ -= static_cast<std::size_t>(slot.slice_index_count) / 3;
   bytes_ += gpu_bytes(mesh);
   triangles_ += static_cast<std::size_t>(mesh.index_count) / 3;
+  slice_triangles_ += static_cast<std::size_t>(mesh.slice_index_count) / 3;
   slot = std::move(mesh);
 }
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The GPU copies of the meshes a view shows: one vertex array, vertex buffer and index
-// buffer per node, kept in step with view::ProgressiveMeshes (uploaded when a node's
+// buffer per node (and a second set for the node's slices, when it has any), kept in step with view::ProgressiveMeshes (uploaded when a node's
 // mesh changed, freed when the node left the cut or shows nothing).
 #pragma once
 
@@ -21,6 +21,12 @@ struct GpuMesh {
   GlBuffer indices;
   GLsizei index_count = 0;
   std::array<float, 3> center{};  // of the vertices' bounding box (world km, exaggeration 1)
+  // Slices (view::kSliceVertexFloats per vertex; attribute locations 0 position,
+  // 1 normal, 2 value, 3 slot); slice_index_count 0 and no objects when none.
+  GlVertexArray slice_vertex_array;
+  GlBuffer slice_vertices;
+  GlBuffer slice_indices;
+  GLsizei slice_index_count = 0;
 };
 
 class GpuMeshes {
@@ -35,6 +41,7 @@ class GpuMeshes {
   const std::unordered_map<NodeId, GpuMesh>& meshes() const { return meshes_; }
   std::size_t bytes() const { return bytes_; }
   std::size_t triangles() const { return triangles_; }
+  std::size_t slice_triangles() const { return slice_triangles_; }
   // Meshes whose upload was deferred by the byte budget in the last sync.
   std::size_t deferred() const { return deferred_; }
 
@@ -45,6 +52,7 @@ class GpuMeshes {
   std::uint64_t synced_version_ = ~0ull;
   std::size_t bytes_ = 0;
   std::size_t triangles_ = 0;
+  std::size_t slice_triangles_ = 0;
   std::size_t deferred_ = 0;
 };
 

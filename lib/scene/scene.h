@@ -22,7 +22,10 @@ struct Manifest;
 }
 
 // Version of formats/scene.md this library reads and writes, and its size limits.
-inline constexpr std::uint32_t kSceneFormatVersion = 1;
+inline constexpr std::uint32_t kSceneFormatVersion = 2;
+// The first version with slices, terrain, sun and trajectories (formats/scene.md,
+// "Version history"); a scene using one of them must declare at least this version.
+inline constexpr std::uint32_t kSceneVersionGeography = 2;
 inline constexpr std::size_t kMaxSceneBytes = 1u << 20;
 inline constexpr std::size_t kMaxSceneNesting = 32;
 inline constexpr std::size_t kMaxSubVolumes = 64;
@@ -30,6 +33,13 @@ inline constexpr std::size_t kMaxLimitsPerSubVolume = 16;
 inline constexpr std::size_t kMaxSceneAttributes = 64;
 inline constexpr std::uint32_t kMaxSubVolumeId = 65535;
 inline constexpr std::size_t kMaxSubVolumeNameBytes = 256;
+inline constexpr std::size_t kMaxSlices = 16;
+inline constexpr std::uint32_t kMaxSliceId = 65535;
+
+// The colour maps a slice may name (formats/scene.md, "Colour maps"), in documentation
+// order; the first is the default.
+inline constexpr std::array<std::string_view, 5> kSliceColormaps = {"viridis", "magma", "coolwarm",
+                                                                    "greys", "turbo"};
 
 // One scalar limit: min <= var <= max, inclusive; an absent bound is open.
 struct Limit {
@@ -52,10 +62,59 @@ struct SubVolume {
   friend bool operator==(const SubVolume&, const SubVolume&) = default;
 };
 
+// A slice (format version 2): either the plane `axis` = value (an axis-aligned plane in
+// the axis's units) or the iso-level where the field of `level_var` equals value;
+// exactly one of `axis` and `level_var` is non-empty. Coloured by the field of `var`.
+struct Slice {
+  std::uint32_t id = 0;   // 1..65535, unique among the scene's slices
+  std::string name{};       // label, at most 256 bytes
+  std::string axis{};       // axis name of the store, or "" for a level slice
+  std::string level_var{};  // variable of a level slice, or "" for an axis plane
+  double value = 0;         // the plane's coordinate, or the level's value
+  std::string var{};        // the variable that colours the slice
+  std::string colormap = std::string(kSliceColormaps[0]);
+  std::optional<AxisRange> range{};  // colour map [lo, hi], lo < hi; absent: the viewer's
+  bool is_level() const { return !level_var.empty(); }
+  friend bool operator==(const Slice&, const Slice&) = default;
+};
+
+// Terrain (format version 2): paths relative to the scene file, as written. Empty var /
+// image: absent. The viewer uses it; a server keeps it in the canonical form only.
+struct Terrain {
+  std::string dem;
+  std::string var;
+  std::string image;
+  friend bool operator==(const Terrain&, const Terrain&) = default;
+};
+
+// The sun (format version 2): the true sun at the simulation time, or a fixed direction.
+struct Sun {
+  bool from_time = true;     // {"mode": "time"}
+  double elevation_deg = 0;  // fixed: -90..90 above the horizon
+  double azimuth_deg = 0;    // fixed: 0..360, clockwise from north
+  friend bool operator==(const Sun&, const Sun&) = default;
+};
+
+// Flight tracks (format version 2): a track file relative to the scene file and the
+// window drawn before the current time.
+struct Trajectories {
+  std::string file;
+  double minutes = 2;  // > 0
+  friend bool operator==(const Trajectories&, const Trajectories&) = default;
+};
+
 struct Scene {
   std::uint32_t time = 0;  // index of the store's time step
   std::vector<SubVolume> subvolumes;
   std::vector<std::string> attributes;  // variables carried per vertex, in this order
+  std::vector<Slice> slices;            // version 2: 0..16, in this order
+  std::optional<Terrain> terrain;       // version 2
+  std::optional<Sun> sun;               // version 2
+  std::optional<Trajectories> trajectories;  // version 2
+  // The format version the canonical form declares: 1 unless a version-2 key is used.
+  std::uint32_t required_format_version() const {
+    return slices.empty() && !terrain && !sun && !trajectories ? 1 : kSceneVersionGeography;
+  }
   friend bool operator==(const Scene&, const Scene&) = default;
 };
 
@@ -100,11 +159,29 @@ struct ResolvedSubVolume {
   friend bool operator==(const ResolvedSubVolume&, const ResolvedSubVolume&) = default;
 };
 
+// A slice with names turned into indices (formats/scene.md, "Resolution against a
+// store").
+struct ResolvedSlice {
+  std::uint32_t id = 0;
+  std::string name;
+  int axis = -1;                    // 0 x, 1 y, 2 z for an axis plane; -1 for a level slice
+  std::uint32_t level_variable = 0; // level slices: the variable whose iso-level it is
+  double value = 0;                 // the plane's coordinate, or the level's value
+  std::uint32_t variable = 0;       // the colouring variable
+  std::string colormap;
+  std::optional<AxisRange> range;
+  bool is_level() const { return axis < 0; }
+  friend bool operator==(const ResolvedSlice&, const ResolvedSlice&) = default;
+};
+
 struct ResolvedScene {
   std::uint32_t time = 0;
   std::vector<ResolvedSubVolume> subvolumes;    // in scene order
+  std::vector<ResolvedSlice> slices;            // in scene order
   std::vector<std::uint32_t> attributes;        // variable indices, in scene order
-  std::vector<std::uint32_t> needed_variables;  // sorted, distinct: limit vars and attributes
+  // Sorted, distinct: limit variables, attributes, and the slices' level and colouring
+  // variables.
+  std::vector<std::uint32_t> needed_variables;
   friend bool operator==(const ResolvedScene&, const ResolvedScene&) = default;
 };
 
@@ -112,7 +189,8 @@ struct ResolvedScene {
 // indices (formats/scene.md, "Resolution against a store").
 // \error kNotFound for a time step, variable or axis the store does not have (the
 // message lists what it has); kInvalidInput for a domain range outside its axis's
-// extent, and for whatever validate_scene rejects.
+// extent, a slice plane outside its axis's extent, and for whatever validate_scene
+// rejects.
 ResolvedScene resolve_scene(const Scene& scene, const format::Manifest& manifest,
                             std::string_view what);
 

@@ -106,6 +106,32 @@ ResolvedScene resolve_scene(const Scene& scene, const format::Manifest& manifest
     out.attributes.push_back(names.variable(scene.attributes[k], index_path("attributes", k)));
     out.needed_variables.push_back(out.attributes.back());
   }
+  for (std::size_t i = 0; i < scene.slices.size(); ++i) {
+    const Slice& slice = scene.slices[i];
+    const std::string path = index_path("slices", i);
+    ResolvedSlice r;
+    r.id = slice.id;
+    r.name = slice.name;
+    r.value = slice.value;
+    r.colormap = slice.colormap;
+    r.range = slice.range;
+    if (slice.is_level()) {
+      r.level_variable = names.variable(slice.level_var, key_path(key_path(path, "level"), "var"));
+      out.needed_variables.push_back(r.level_variable);
+    } else {
+      const std::size_t a = names.axis(slice.axis, key_path(path, "axis"));
+      const AxisRange e = extent(*axes[a]);
+      if (slice.value < e.lo || slice.value > e.hi) {
+        fail(ErrorCode::kInvalidInput, what, key_path(path, "value"),
+             "{} lies outside the store's {} axis [{}, {}]", slice.value,
+             scene_detail::shown(slice.axis), e.lo, e.hi);
+      }
+      r.axis = static_cast<int>(a);
+    }
+    r.variable = names.variable(slice.var, key_path(path, "var"));
+    out.needed_variables.push_back(r.variable);
+    out.slices.push_back(std::move(r));
+  }
   std::sort(out.needed_variables.begin(), out.needed_variables.end());
   out.needed_variables.erase(std::unique(out.needed_variables.begin(), out.needed_variables.end()),
                              out.needed_variables.end());

@@ -112,6 +112,100 @@ void check_subvolume(std::string_view what, const std::string& path, const SubVo
   }
 }
 
+void check_slice(std::string_view what, const std::string& path, const Slice& slice) {
+  if (slice.id < 1 || slice.id > kMaxSliceId) {
+    fail(ErrorCode::kInvalidInput, what, key_path(path, "id"), "must be an integer in 1..{}, got {}",
+         kMaxSliceId, slice.id);
+  }
+  if (slice.name.size() > kMaxSubVolumeNameBytes) {
+    fail(ErrorCode::kInvalidInput, what, key_path(path, "name"),
+         "has {} bytes, more than the limit of {}", slice.name.size(), kMaxSubVolumeNameBytes);
+  }
+  if (!valid_utf8(slice.name)) {
+    fail(ErrorCode::kInvalidInput, what, key_path(path, "name"), "is not valid UTF-8");
+  }
+  if (slice.axis.empty() == slice.level_var.empty()) {
+    fail(ErrorCode::kInvalidInput, what, path,
+         "a slice needs exactly one of 'axis' (a plane) and 'level' (an iso-level)");
+  }
+  if (slice.is_level()) {
+    check_name(what, key_path(key_path(path, "level"), "var"), slice.level_var, "a variable");
+    check_finite(what, key_path(key_path(path, "level"), "value"), slice.value);
+  } else {
+    check_name(what, key_path(path, "axis"), slice.axis, "an axis");
+    check_finite(what, key_path(path, "value"), slice.value);
+  }
+  check_name(what, key_path(path, "var"), slice.var, "a variable");
+  bool known = false;
+  std::string names;
+  for (std::string_view c : kSliceColormaps) {
+    known = known || c == slice.colormap;
+    names += names.empty() ? std::string(c) : fmt::format(", {}", c);
+  }
+  if (!known) {
+    fail(ErrorCode::kInvalidInput, what, key_path(path, "colormap"),
+         "'{}' is not a colour map (known: {})", scene_detail::shown(slice.colormap), names);
+  }
+  if (slice.range) {
+    const std::string p = key_path(path, "range");
+    check_finite(what, index_path(p, 0), slice.range->lo);
+    check_finite(what, index_path(p, 1), slice.range->hi);
+    if (!(slice.range->lo < slice.range->hi)) {
+      fail(ErrorCode::kInvalidInput, what, p, "lo {} must be less than hi {}", slice.range->lo,
+           slice.range->hi);
+    }
+  }
+}
+
+void check_path(std::string_view what, const std::string& path, const std::string& file) {
+  check_name(what, path, file, "a file");
+}
+
+void check_geography(std::string_view what, const Scene& scene) {
+  if (scene.slices.size() > kMaxSlices) {
+    fail(ErrorCode::kInvalidInput, what, "slices", "has {} slices, more than the limit of {}",
+         scene.slices.size(), kMaxSlices);
+  }
+  std::map<std::uint32_t, std::size_t> first_with_id;
+  for (std::size_t i = 0; i < scene.slices.size(); ++i) {
+    const std::string path = index_path("slices", i);
+    check_slice(what, path, scene.slices[i]);
+    if (const auto [it, fresh] = first_with_id.emplace(scene.slices[i].id, i); !fresh) {
+      fail(ErrorCode::kInvalidInput, what, key_path(path, "id"),
+           "id {} is already used by slices[{}]", scene.slices[i].id, it->second);
+    }
+  }
+  if (scene.terrain) {
+    check_path(what, "terrain.dem", scene.terrain->dem);
+    if (!valid_utf8(scene.terrain->var)) {
+      fail(ErrorCode::kInvalidInput, what, "terrain.var", "is not valid UTF-8");
+    }
+    if (!valid_utf8(scene.terrain->image)) {
+      fail(ErrorCode::kInvalidInput, what, "terrain.image", "is not valid UTF-8");
+    }
+  }
+  if (scene.sun && !scene.sun->from_time) {
+    check_finite(what, "sun.elevation", scene.sun->elevation_deg);
+    check_finite(what, "sun.azimuth", scene.sun->azimuth_deg);
+    if (scene.sun->elevation_deg < -90 || scene.sun->elevation_deg > 90) {
+      fail(ErrorCode::kInvalidInput, what, "sun.elevation", "must be in [-90, 90] degrees, got {}",
+           scene.sun->elevation_deg);
+    }
+    if (scene.sun->azimuth_deg < 0 || scene.sun->azimuth_deg > 360) {
+      fail(ErrorCode::kInvalidInput, what, "sun.azimuth", "must be in [0, 360] degrees, got {}",
+           scene.sun->azimuth_deg);
+    }
+  }
+  if (scene.trajectories) {
+    check_path(what, "trajectories.file", scene.trajectories->file);
+    check_finite(what, "trajectories.minutes", scene.trajectories->minutes);
+    if (!(scene.trajectories->minutes > 0)) {
+      fail(ErrorCode::kInvalidInput, what, "trajectories.minutes", "must be greater than 0, got {}",
+           scene.trajectories->minutes);
+    }
+  }
+}
+
 }  // namespace
 
 void validate_scene(const Scene& scene, std::string_view what) {
@@ -145,6 +239,7 @@ void validate_scene(const Scene& scene, std::string_view what) {
            scene_detail::shown(scene.attributes[k]), it->second);
     }
   }
+  check_geography(what, scene);
 }
 
 }  // namespace strielad

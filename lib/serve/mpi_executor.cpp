@@ -289,6 +289,8 @@ void MpiMaster::handle(MpiChannel::Message message) {
   p->output.kind = reply.kind;
   p->output.frame = std::move(reply.frame);
   p->output.bricks = reply.bricks;
+  p->output.slice_meshes = reply.slice_meshes;
+  p->output.slice_triangles = reply.slice_triangles;
   p->loaded = static_cast<std::size_t>(reply.loaded);
   p->done = true;
   p->cv.notify_all();

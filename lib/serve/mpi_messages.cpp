@@ -96,6 +96,8 @@ std::vector<std::byte> encode(const TaskReply& m) {
                           m.cache.budget, m.cache.entries}) {
     w.u64(v);
   }
+  w.u32(m.slice_meshes);
+  w.u64(m.slice_triangles);
   w.u64(m.frame.size());
   w.bytes(m.frame);
   return w.take();
@@ -118,6 +120,8 @@ TaskReply decode_reply(std::span<const std::byte> bytes) {
   m.cache.bytes = r.u64("cache.bytes");
   m.cache.budget = r.u64("cache.budget");
   m.cache.entries = r.u64("cache.entries");
+  m.slice_meshes = r.u32("slice_meshes");
+  m.slice_triangles = r.u64("slice_triangles");
   const std::uint64_t n = r.u64("frame size");
   if (n != r.remaining()) {
     throw make_error(ErrorCode::kCorrupt, "MPI message Reply: frame of {} bytes, {} bytes follow", n,

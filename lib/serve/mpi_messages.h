@@ -61,6 +61,8 @@ struct TaskReply {
   std::uint32_t bricks = 0;  // extract: bricks used
   std::uint64_t loaded = 0;  // prefetch: bricks loaded into the worker's cache
   BrickCacheStats cache;     // the worker's cache after the task
+  std::uint32_t slice_meshes = 0;     // extract: as NodeOutput
+  std::uint64_t slice_triangles = 0;
   std::vector<std::byte> frame;  // encoded NodeResult or NodeFailed (extract only)
 };
 

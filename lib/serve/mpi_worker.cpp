@@ -277,6 +277,8 @@ mpi::TaskReply Worker::run_job(const Job& job) {
     NodeOutput out = run_node_task(task, cache_);
     reply.kind = out.kind;
     reply.bricks = out.bricks;
+    reply.slice_meshes = out.slice_meshes;
+    reply.slice_triangles = out.slice_triangles;
     reply.frame = std::move(out.frame);
   } else {
     reply.kind = NodeOutputKind::kEmpty;

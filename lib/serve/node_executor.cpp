@@ -48,7 +48,24 @@ NodeOutput run_node_task(const NodeTask& task, BrickCache& cache) {
       result.subvolumes.push_back(
           {r.subvolume_id, r.outcome, clipped(std::move(r.reason)), std::move(r.mesh)});
     }
+    // Slices after the sub-volumes (protocol version 2: the session accepts a scene with
+    // slices only on such a connection).
+    std::uint32_t slice_meshes = 0;
+    std::uint64_t slice_triangles = 0;
+    for (SliceResult& s : extraction.slices) {
+      any_mesh |= s.outcome == NodeOutcome::kMesh;
+      all_skipped &= s.outcome != NodeOutcome::kMesh && s.outcome != NodeOutcome::kEmpty;
+      if (s.outcome == NodeOutcome::kMesh) {
+        ++slice_meshes;
+        slice_triangles += s.mesh.triangle_count();
+      }
+      s.mesh.attribute_names.clear();
+      result.slices.push_back(
+          {s.slice_id, s.outcome, clipped(std::move(s.reason)), std::move(s.mesh)});
+    }
     NodeOutput out;
+    out.slice_meshes = slice_meshes;
+    out.slice_triangles = slice_triangles;
     out.kind = any_mesh ? NodeOutputKind::kMesh
                         : (all_skipped ? NodeOutputKind::kSkipped : NodeOutputKind::kEmpty);
     out.bricks = extraction.bricks_used;

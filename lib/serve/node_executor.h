@@ -34,9 +34,9 @@ struct NodeTask {
 };
 
 enum class NodeOutputKind : std::uint8_t {
-  kMesh,       // at least one sub-volume has triangles
+  kMesh,       // at least one sub-volume or slice has triangles
   kEmpty,      // extracted, nothing inside
-  kSkipped,    // every sub-volume skipped from the index alone (no brick read)
+  kSkipped,    // every sub-volume and slice skipped from the index alone (no brick read)
   kFailed,     // frame is a NodeFailed
   kCancelled,  // stop was requested; frame is empty
 };
@@ -45,6 +45,8 @@ struct NodeOutput {
   NodeOutputKind kind = NodeOutputKind::kCancelled;
   std::vector<std::byte> frame;  // encoded NodeResult or NodeFailed
   std::uint32_t bricks = 0;      // bricks used (cache or disk)
+  std::uint32_t slice_meshes = 0;      // slice results with a mesh (outcome kMesh)
+  std::uint64_t slice_triangles = 0;   // their triangles
 };
 
 // `should_yield` is polled between bricks; returns the bricks loaded into the cache.

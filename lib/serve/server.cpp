@@ -140,6 +140,8 @@ std::string Server::stats_json(std::uint32_t generation) const {
       {"nodes_failed", counters_.nodes_failed.load()},
       {"nodes_cancelled", counters_.nodes_cancelled.load()},
       {"bytes_sent", counters_.bytes_sent.load()},
+      {"slice_meshes", counters_.slice_meshes.load()},
+      {"slice_triangles", counters_.slice_triangles.load()},
       {"connections_rejected", counters_.connections_rejected.load()},
       {"cache",
        {{"hits", cache.hits},

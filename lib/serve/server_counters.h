@@ -16,6 +16,8 @@ struct ServerCounters {
   std::atomic<std::uint64_t> nodes_failed{0};     // NodeFailed sent
   std::atomic<std::uint64_t> nodes_cancelled{0};  // dropped: obsolete, removed or aborted
   std::atomic<std::uint64_t> bytes_sent{0};
+  std::atomic<std::uint64_t> slice_meshes{0};     // slice meshes in results sent
+  std::atomic<std::uint64_t> slice_triangles{0};  // their triangles
   std::atomic<std::uint64_t> prefetch_nodes{0};
   std::atomic<std::uint64_t> prefetch_bricks{0};
   std::atomic<std::uint64_t> connections_rejected{0};  // busy, bad token, bad handshake

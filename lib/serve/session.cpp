@@ -78,9 +78,9 @@ bool Session::handshake() {
     return refuse(protocol::WireError::kUnauthorized, "wrong or missing token");
   }
   spdlog::info("client {} ({}) connected: '{}'", id_, peer(), hello->client_name);
-  net::write_message(socket_,
-                     protocol::Welcome{std::min(hello->version, protocol::kProtocolVersion),
-                                       context_.config.server_name, context_.config.limits});
+  version_ = std::min(hello->version, protocol::kProtocolVersion);
+  net::write_message(socket_, protocol::Welcome{version_, context_.config.server_name,
+                                                context_.config.limits});
   return true;
 }
 
@@ -225,6 +225,14 @@ void Session::set_scene(const protocol::SetScene& m) {
                              scene.subvolumes[i].limits.size(), limits.max_limits_per_subvolume));
       return;
     }
+  }
+  if (!scene.slices.empty() && version_ < protocol::kProtocolVersionSlices) {
+    send_error(protocol::WireError::kUnsupported,
+               fmt::format("scene: {} slices, but slice results need protocol version {} and this "
+                           "connection speaks version {} (the client's Hello); remove 'slices' "
+                           "or use a newer client",
+                           scene.slices.size(), protocol::kProtocolVersionSlices, version_));
+    return;
   }
   std::shared_ptr<const Store> store;
   {
@@ -391,6 +399,8 @@ void Session::complete(const NodeTask& task, NodeOutput output) {
     case NodeOutputKind::kFailed: ++context_.counters.nodes_failed; break;
     default: ++context_.counters.nodes_done; break;
   }
+  context_.counters.slice_meshes += output.slice_meshes;
+  context_.counters.slice_triangles += output.slice_triangles;
   outbound_.push(std::move(output.frame));
 }
 

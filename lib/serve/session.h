@@ -82,6 +82,9 @@ class Session {
 
   const std::uint64_t id_;
   net::Socket socket_;
+  // The protocol version agreed in Welcome (set by the handshake, before the reader
+  // loop; read-only afterwards).
+  std::uint16_t version_ = 1;
   SessionContext context_;
   SendQueue outbound_;
 

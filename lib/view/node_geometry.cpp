@@ -30,6 +30,54 @@ GeometryPlacer::GeometryPlacer(const format::Manifest& manifest)
   mirrored_ = (negative % 2) == 1;
 }
 
+void GeometryPlacer::append_slice(const Mesh& mesh, std::uint32_t slot, NodeGeometry& out) const {
+  const std::size_t first = out.slice_vertex_count();
+  const std::size_t n = mesh.vertex_count();
+  if (first + n > std::numeric_limits<std::uint32_t>::max()) {
+    throw make_error(ErrorCode::kInvalidInput, "node {}: more than 2^32 slice vertices", out.node);
+  }
+  if (mesh.attributes.size() != 1 || mesh.attributes[0].size() != n || mesh.normals.size() != n) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "node {}: slice {}: {} attributes and {} normals for {} vertices (one "
+                     "colouring value and one normal per vertex expected)",
+                     out.node, mesh.subvolume_id, mesh.attributes.size(), mesh.normals.size(), n);
+  }
+  out.slice_vertices.resize((first + n) * kSliceVertexFloats);
+  for (std::size_t v = 0; v < n; ++v) {
+    float* dst = out.slice_vertices.data() + (first + v) * kSliceVertexFloats;
+    const auto& p = mesh.positions[v];
+    lod::Vec3 normal{0, 0, 0};
+    for (int axis = 0; axis < 3; ++axis) {
+      const double world = frame_.axis_to_world(axis, p[axis]);
+      if (!std::isfinite(world)) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "node {}: slice {}: vertex {} has no world position", out.node,
+                         mesh.subvolume_id, v);
+      }
+      dst[kSliceVertexPosition + axis] = static_cast<float>(world);
+      normal[axis] = mesh.normals[v][axis] / axis_slope(frame_, axis, p[axis]);
+    }
+    const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] +
+                                    normal[2] * normal[2]);
+    for (int axis = 0; axis < 3; ++axis) {
+      dst[kSliceVertexNormal + axis] = length > 0 ? static_cast<float>(normal[axis] / length)
+                                                  : (axis == 2 ? 1.0f : 0.0f);
+    }
+    dst[kSliceVertexValue] = mesh.attributes[0][v];
+    dst[kSliceVertexSlot] = static_cast<float>(slot);
+  }
+  out.slice_indices.reserve(out.slice_indices.size() + mesh.triangle_count() * 3);
+  for (const auto& t : mesh.triangles) {
+    for (const auto index : t) {
+      if (index >= n) {
+        throw make_error(ErrorCode::kInvalidInput, "node {}: slice {}: index {} >= vertex count {}",
+                         out.node, mesh.subvolume_id, index, n);
+      }
+      out.slice_indices.push_back(static_cast<std::uint32_t>(first + index));
+    }
+  }
+}
+
 void GeometryPlacer::append_mesh(const Mesh& mesh, std::uint32_t slot, NodeGeometry& out) const {
   const std::size_t first = out.vertex_count();
   const std::size_t n = mesh.vertex_count();

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The meshes of one octree node as the viewer draws them: every sub-volume's mesh of a
 // NodeResult placed in the world frame (lod/world_frame.h, kilometres) and packed into
-// one interleaved vertex array and one index array, ready to upload as they are.
+// one interleaved vertex array and one index array, ready to upload as they are; the
+// node's slice meshes (protocol version 2) likewise into their own two arrays, drawn
+// opaque by render/slice_drawing.h.
 //
 // Positions are world kilometres at vertical exaggeration 1 (z is the true height in
 // km); the renderer applies the exaggeration as a scale of z, so changing it needs no
@@ -33,15 +35,29 @@ inline constexpr std::size_t kVertexSlot = 6;       // 1 float: the sub-volume's
 inline constexpr std::size_t kVertexAttributes = 7; // kViewAttributeSlots floats, NaN = missing
 inline constexpr std::size_t kVertexFloats = kVertexAttributes + kViewAttributeSlots;
 
+// Slices the viewer tells apart (formats/scene.md allows 16 per scene).
+inline constexpr std::size_t kMaxViewSlices = 16;
+// Interleaved float layout of one slice vertex.
+inline constexpr std::size_t kSliceVertexPosition = 0;  // 3 floats, world km (exaggeration 1)
+inline constexpr std::size_t kSliceVertexNormal = 3;    // 3 floats, unit, world frame
+inline constexpr std::size_t kSliceVertexValue = 6;     // 1 float: colouring variable, NaN = missing
+inline constexpr std::size_t kSliceVertexSlot = 7;      // 1 float: the slice's position in the scene
+inline constexpr std::size_t kSliceVertexFloats = 8;
+
 struct NodeGeometry {
   NodeId node = 0;
   std::uint32_t step = 0;               // the time step the meshes show
   std::vector<float> vertices;          // kVertexFloats per vertex
   std::vector<std::uint32_t> indices;   // triangles, counter-clockwise seen from outside
                                         // in axis coordinates (see mirrored)
+  std::vector<float> slice_vertices;          // kSliceVertexFloats per vertex
+  std::vector<std::uint32_t> slice_indices;   // slice triangles (drawn two-sided)
   std::size_t vertex_count() const { return vertices.size() / kVertexFloats; }
   std::size_t triangle_count() const { return indices.size() / 3; }
-  bool empty() const { return indices.empty(); }
+  std::size_t slice_vertex_count() const { return slice_vertices.size() / kSliceVertexFloats; }
+  std::size_t slice_triangle_count() const { return slice_indices.size() / 3; }
+  // Nothing to draw: no sub-volume and no slice triangle.
+  bool empty() const { return indices.empty() && slice_indices.empty(); }
 };
 
 // Maps axis coordinates of a store to the viewer's world frame at exaggeration 1.
@@ -52,6 +68,8 @@ class GeometryPlacer {
 
   // The node's meshes of time step `step` packed. `slot_of_id(id)` gives the slot of a sub-volume id (the
   // position of the sub-volume in the scene); a mesh whose id has no slot is left out.
+  // Slice meshes are packed with their position in result.slices (the scene's slice
+  // order) as their slot; those beyond kMaxViewSlices are left out.
   // \error kInvalidInput naming the node when a mesh has a non-finite position or an
   // index out of range (the decoder checks both; this guards the upload).
   template <typename SlotOf>
@@ -67,6 +85,7 @@ class GeometryPlacer {
 
  private:
   void append_mesh(const Mesh& mesh, std::uint32_t slot, NodeGeometry& out) const;
+  void append_slice(const Mesh& mesh, std::uint32_t slot, NodeGeometry& out) const;
 
   lod::WorldFrame frame_;
   bool mirrored_ = false;
@@ -84,6 +103,11 @@ std::shared_ptr<const NodeGeometry> GeometryPlacer::place(const protocol::NodeRe
     const int slot = slot_of_id(sub.subvolume_id);
     if (slot < 0) continue;
     append_mesh(sub.mesh, static_cast<std::uint32_t>(slot), *geometry);
+  }
+  for (std::size_t i = 0; i < result.slices.size() && i < kMaxViewSlices; ++i) {
+    const auto& slice = result.slices[i];
+    if (slice.outcome != NodeOutcome::kMesh || slice.mesh.empty()) continue;
+    append_slice(slice.mesh, static_cast<std::uint32_t>(i), *geometry);
   }
   return geometry;
 }

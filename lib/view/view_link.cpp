@@ -203,6 +203,7 @@ void ViewLink::receive(protocol::Message& message) {
       if (event.kind == LinkEvent::Kind::kResult) {
         ++counters_.results;
         counters_.triangles += event.geometry->triangle_count();
+        counters_.slice_triangles += event.geometry->slice_triangle_count();
       } else {
         ++counters_.failed;
       }

@@ -51,7 +51,8 @@ struct LinkEvent {
 struct LinkCounters {
   std::uint64_t results = 0;       // NodeResults received and placed
   std::uint64_t failed = 0;        // NodeFailed received
-  std::uint64_t triangles = 0;     // triangles received
+  std::uint64_t triangles = 0;     // triangles received (sub-volumes)
+  std::uint64_t slice_triangles = 0;  // slice triangles received
   std::uint64_t bytes_received = 0;
   std::uint64_t stale_results = 0; // of older generations (the server must send none)
 };

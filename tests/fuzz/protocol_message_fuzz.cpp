@@ -26,6 +26,9 @@ bool has_mesh(const Message& m) {
   for (const auto& s : result->subvolumes) {
     if (s.outcome == NodeOutcome::kMesh) return true;
   }
+  for (const auto& s : result->slices) {
+    if (s.outcome == NodeOutcome::kMesh) return true;
+  }
   return false;
 }
 
@@ -35,7 +38,7 @@ bool equivalent(const Message& original, const Message& decoded) {
   const auto& a = std::get<NodeResult>(original);
   const auto* b = std::get_if<NodeResult>(&decoded);
   if (b == nullptr || a.generation != b->generation || a.node != b->node ||
-      a.subvolumes.size() != b->subvolumes.size()) {
+      a.subvolumes.size() != b->subvolumes.size() || a.slices.size() != b->slices.size()) {
     return false;
   }
   for (std::size_t i = 0; i < a.subvolumes.size(); ++i) {
@@ -49,14 +52,42 @@ bool equivalent(const Message& original, const Message& decoded) {
       return false;
     }
   }
+  for (std::size_t i = 0; i < a.slices.size(); ++i) {  // version 2: slice results
+    const auto& s = a.slices[i];
+    const auto& t = b->slices[i];
+    if (s.slice_id != t.slice_id || s.outcome != t.outcome || s.reason != t.reason) return false;
+    if (s.outcome == NodeOutcome::kMesh ? !samples::mesh_within_bounds(s.mesh, t.mesh)
+                                        : !(s.mesh == t.mesh)) {
+      return false;
+    }
+  }
   return true;
+}
+
+// A version-2 NodeResult with a slice mesh and a skipped slice.
+NodeResult slice_result_seed() {
+  Mesh m;
+  m.positions = {{5.0, 50.0, 500.0}, {6.0, 50.0, 500.0}, {6.0, 51.0, 500.0}};
+  m.normals.assign(3, {0, 0, 1});
+  m.triangles = {{0, 1, 2}};
+  m.face_kinds = {FaceKind::kSlice};
+  m.attributes = {{250.0f, 260.0f, 270.0f}};
+  NodeResult r;
+  r.generation = 2;
+  r.node = 9;
+  r.subvolumes.push_back({1, NodeOutcome::kEmpty, "", {}});
+  r.slices.push_back({3, NodeOutcome::kMesh, "", m});
+  r.slices.push_back({4, NodeOutcome::kSkippedDomain, "misses", {}});
+  return r;
 }
 
 }  // namespace
 
 std::vector<std::vector<std::uint8_t>> strielad_fuzz_seeds() {
   std::vector<std::vector<std::uint8_t>> seeds;
-  for (const Message& m : samples::sample_messages()) {
+  std::vector<Message> messages = samples::sample_messages();
+  messages.emplace_back(slice_result_seed());
+  for (const Message& m : messages) {
     const auto frame = encode_frame(m);
     const auto* p = reinterpret_cast<const std::uint8_t*>(frame.data());
     seeds.emplace_back(p, p + frame.size());

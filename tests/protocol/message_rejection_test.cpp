@@ -191,7 +191,7 @@ TEST(MessageRejectionTest, WelcomeWithAVersionOrLimitOutOfRangeIsRejected) {
     return frame_of(MessageType::kWelcome, w);
   };
   expect_invalid(welcome(0, {}), {"Welcome: version: 0"});
-  expect_invalid(welcome(2, {}), {"Welcome: version: 2"});
+  expect_invalid(welcome(3, {}), {"Welcome: version: 3"});
   expect_invalid(welcome(1, {0, 1, 1, 1}), {"Welcome: limits.max_payload_bytes: 0"});
   expect_invalid(welcome(1, {kMaxClientPayloadBytes + 1, 1, 1, 1}),
                  {"limits.max_payload_bytes: 2097153 is outside 1 ..= 2097152"});
@@ -199,7 +199,7 @@ TEST(MessageRejectionTest, WelcomeWithAVersionOrLimitOutOfRangeIsRejected) {
   expect_invalid(welcome(1, {1, 1, 65, 1}), {"limits.max_subvolumes: 65"});
   expect_invalid(welcome(1, {1, 1, 1, 0}), {"limits.max_limits_per_subvolume: 0"});
   expect_invalid(welcome(1, {1, 1, 1, 17}), {"limits.max_limits_per_subvolume: 17"});
-  expect_unencodable(Welcome{2, "", {}}, {"encode Welcome: version: 2"});
+  expect_unencodable(Welcome{3, "", {}}, {"encode Welcome: version: 3"});
   expect_unencodable(Welcome{1, "", {1, 0, 1, 1}}, {"encode Welcome: limits.max_nodes_per_update"});
 }
 
