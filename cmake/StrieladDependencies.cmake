@@ -20,6 +20,9 @@ find_package(spdlog REQUIRED CONFIG)
 find_package(fmt REQUIRED CONFIG)
 find_package(CLI11 REQUIRED CONFIG)
 find_package(nlohmann_json REQUIRED CONFIG)
+# GDAL 3.6 (libgdal-dev): terrain from GeoTIFF and any other raster format, drape images
+# (lib/geo/gdal_raster.cpp). Only its C API is used.
+find_package(GDAL CONFIG REQUIRED)
 
 # Open MPI 4.1 (libopenmpi-dev): strielad-serve's MPI mode only (lib/serve/mpi_*.cpp, in
 # the strielad_mpi library; README "Running strielad-serve under MPI and Slurm"). Only

@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   g++ cmake ninja-build pkg-config
-  libhdf5-dev libnetcdf-dev netcdf-bin libblosc-dev libzstd-dev libxxhash-dev
+  libhdf5-dev libnetcdf-dev netcdf-bin libgdal-dev libblosc-dev libzstd-dev libxxhash-dev
   libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libtbb-dev
   libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev libvtk9-dev
   libgtest-dev libgmock-dev
@@ -14,7 +14,7 @@ packages=(
   libglfw3-dev libepoxy-dev libimgui-dev libstb-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
 )
 if [[ "${1:-}" == "--tests" ]]; then
-  packages+=(libncarg-data slurm-wlm munge xvfb xauth)
+  packages+=(libncarg-data slurm-wlm munge xvfb xauth gnuplot-nox)
 fi
 
 missing=()

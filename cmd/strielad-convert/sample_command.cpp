@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // strielad-convert sample -o DIR [--dims XxYxZ] [--steps N] [--seed S] [--vars a,b,...]
 //                         [--single-file] [--step-seconds S] [--deflate L] [--tracks N]
+//                         [--terrain N]
 //                         [--json]
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
@@ -16,6 +17,7 @@
 #include "commands.h"
 #include "sample/sample_args.h"
 #include "sample/sample_dataset.h"
+#include "sample/sample_terrain.h"
 #include "sample/sample_tracks.h"
 
 namespace strielad::convert_cmd {
@@ -31,6 +33,7 @@ struct SampleOptions {
   double step_seconds = 300;
   int deflate = 0;
   std::size_t tracks = 0;  // flight tracks written to sample_tracks.csv (0: none)
+  std::size_t terrain = 0;  // samples per axis of sample_terrain.nc (0: none)
   bool json = false;
 };
 
@@ -69,6 +72,13 @@ int run_sample(const SampleOptions& opt) {
     spdlog::info("sample: wrote {} flight tracks ({} reports) to {}", tracks.tracks,
                  tracks.reports, track_path.string());
   }
+  sample::SampleTerrainResult terrain;
+  if (opt.terrain > 0) {
+    const auto terrain_path = std::filesystem::path(opt.output) / "sample_terrain.nc";
+    terrain = sample::write_sample_terrain({.samples = opt.terrain, .seed = spec.seed}, terrain_path);
+    spdlog::info("sample: wrote a {} x {} rotated-pole DEM (up to {:.0f} m) to {}", terrain.width,
+                 terrain.height, terrain.max_height_m, terrain_path.string());
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double values = static_cast<double>(levels) * static_cast<double>(spec.dims.x) *
@@ -88,6 +98,7 @@ int run_sample(const SampleOptions& opt) {
         {"steps", spec.steps},
         {"seconds", seconds},
         {"tracks", tracks.tracks},
+        {"terrain_samples", terrain.width * terrain.height},
     };
     std::cout << out.dump() << std::endl;
   }
@@ -121,6 +132,10 @@ void register_sample(CLI::App& app, cli::Action& action) {
   sub->add_option("--tracks", opt->tracks,
                   "Also write N synthetic flight tracks over the domain to sample_tracks.csv "
                   "(strielad-view --tracks)")
+      ->capture_default_str();
+  sub->add_option("--terrain", opt->terrain,
+                  "Also write an N x N rotated-pole DEM under the domain to sample_terrain.nc "
+                  "(strielad-view --terrain; 0: none)")
       ->capture_default_str();
   sub->add_flag("--json", opt->json, "Print a JSON summary on stdout");
   sub->callback([&action, opt] { action = [opt] { return run_sample(*opt); }; });

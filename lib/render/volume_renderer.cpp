@@ -250,7 +250,7 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
   const lod::Mat4 view_projection = lod::multiply(projection, view);
   glViewport(0, 0, width, height);
 
-  // 1. Opaque pass: the background.
+  // 1. Opaque pass: the background, the terrain, the slices, the flight tracks.
   glBeginQuery(GL_TIME_ELAPSED, timers_[0].get());
   glBindFramebuffer(GL_FRAMEBUFFER, opaque_framebuffer_.get());
   glDisable(GL_BLEND);
@@ -269,6 +269,16 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
   set_float(background_program_.get(), "u_height", height);
   glBindVertexArray(empty_vertex_array_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (inputs.terrain) {
+    const auto drawn = terrain_drawing_.draw(*inputs.terrain, view_projection,
+                                             inputs.vertical_exaggeration, inputs.sun_direction);
+    stats.terrain_tiles = drawn.tiles;
+    stats.terrain_triangles = drawn.triangles;
+  }
+  if (!inputs.slice_styles.empty()) {
+    slice_drawing_.draw(meshes_, view_projection, inputs.vertical_exaggeration,
+                        inputs.slice_styles, inputs.sun_direction);
+  }
   if (inputs.tracks) {
     track_drawing_.draw(*inputs.tracks, view_projection, inputs.vertical_exaggeration,
                         inputs.track_color);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The pseudo-volumetric renderer of strielad-view (the paper's A-buffer, issue 5):
-// 1. opaque pass: the background (later terrain) into a colour and a depth texture;
+// 1. opaque pass: the background, terrain and flight tracks into a colour and a depth
+//    texture;
 // 2. geometry pass: every node's closed meshes, nearest node first, depth-tested
 //    against the opaque depth but not writing it; each fragment runs the user's
 //    color() and is appended to its pixel's list (an r32ui head image, a fragment pool
@@ -34,6 +35,8 @@
 #include "render/gl_handles.h"
 #include "render/gpu_meshes.h"
 #include "render/mesh_motion.h"
+#include "render/slice_drawing.h"
+#include "render/terrain_drawing.h"
 #include "render/track_drawing.h"
 #include "render/shader_program.h"
 
@@ -66,6 +69,11 @@ struct FrameInputs {
   // pass so that sub-volumes in front of them cover them and those behind do not.
   std::shared_ptr<const view::TrackLines> tracks;
   std::array<float, 4> track_color{1.0f, 0.55f, 0.1f, 1.0f};
+  // Terrain tiles (view/terrain_tiles.h) to draw in the opaque pass; null: none.
+  std::shared_ptr<const view::TerrainFrame> terrain;
+  // The scene's slices (drawn from meshes(), opaque): colour map and range per slice slot
+  // (render/slice_drawing.h, slice_styles); empty: no slices drawn.
+  std::vector<SliceStyle> slice_styles;
 };
 
 struct FrameStats {
@@ -78,6 +86,8 @@ struct FrameStats {
   std::size_t nodes_drawn = 0;
   std::size_t nodes_moved = 0;  // drawn with a displacement map
   std::size_t triangles_drawn = 0;
+  std::size_t terrain_tiles = 0;      // terrain tiles drawn
+  std::size_t terrain_triangles = 0;  // their triangles, skirts included
   double opaque_ms = 0, geometry_ms = 0, resolve_ms = 0;  // GPU time (timer queries)
   int geometry_passes = 1;    // 2 when the pool overflowed (grown, or a depth limit set)
   float depth_limit_km = 0;   // fragments beyond this eye depth were dropped (max: none)
@@ -152,6 +162,8 @@ class VolumeRenderer {
   GpuMeshes meshes_;
   MotionTextures motion_textures_;
   TrackDrawing track_drawing_;
+  TerrainDrawing terrain_drawing_;
+  SliceDrawing slice_drawing_;
 };
 
 }  // namespace strielad::render

@@ -1,0 +1,489 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "view/terrain_tiles.h"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+#include "lod/frustum.h"
+
+namespace strielad::view {
+namespace {
+
+// Heights of the DEM at every (col, row) of two index lists, each a lattice of constant
+// step except maybe its first and last entries: read as up to nine strided windows.
+std::vector<float> read_grid(const geo::DemSource& dem, const std::vector<std::size_t>& cols,
+                             const std::vector<std::size_t>& rows) {
+  // Split an index list into runs of constant step.
+  const auto runs = [](const std::vector<std::size_t>& v) {
+    std::vector<std::pair<std::size_t, std::size_t>> out;  // first index in v, count
+    std::size_t i = 0;
+    while (i < v.size()) {
+      std::size_t j = i + 1;
+      if (j < v.size() && v[j] > v[i]) {
+        const std::size_t step = v[j] - v[i];
+        while (j + 1 < v.size() && v[j + 1] - v[j] == step) ++j;
+        ++j;
+      }
+      out.emplace_back(i, j - i);
+      i = j;
+    }
+    return out;
+  };
+  std::vector<float> out(cols.size() * rows.size(), NAN);
+  for (const auto& [ci, cn] : runs(cols)) {
+    for (const auto& [ri, rn] : runs(rows)) {
+      const std::size_t cstep = cn > 1 ? cols[ci + 1] - cols[ci] : 1;
+      const std::size_t rstep = rn > 1 ? rows[ri + 1] - rows[ri] : 1;
+      // One stride for both axes per read: equal steps read together, else row by row.
+      if (cstep == rstep || rn == 1 || cn == 1) {
+        const std::size_t s = cn > 1 ? cstep : rstep;
+        const auto v = dem.read({cols[ci], rows[ri], cn, rn, std::max<std::size_t>(s, 1)});
+        for (std::size_t r = 0; r < rn; ++r) {
+          for (std::size_t c = 0; c < cn; ++c) out[(ri + r) * cols.size() + ci + c] = v[r * cn + c];
+        }
+      } else {
+        for (std::size_t r = 0; r < rn; ++r) {
+          const auto v = dem.read({cols[ci], rows[ri + r], cn, 1, cstep});
+          for (std::size_t c = 0; c < cn; ++c) out[(ri + r) * cols.size() + ci + c] = v[c];
+        }
+      }
+    }
+  }
+  return out;
+}
+
+double box_distance(const lod::WorldBox& box, const lod::Vec3& p) {
+  double d2 = 0;
+  for (int a = 0; a < 3; ++a) {
+    const double d = std::max({box.lo[a] - p[a], 0.0, p[a] - box.hi[a]});
+    d2 += d * d;
+  }
+  return std::sqrt(d2);
+}
+
+lod::WorldBox exaggerated(lod::WorldBox box, double e) {
+  box.lo[2] *= e;
+  box.hi[2] *= e;
+  return box;
+}
+
+}  // namespace
+
+TerrainTiles::TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod::WorldFrame& frame,
+                           TerrainOptions options, std::shared_ptr<const geo::DrapeImage> drape)
+    : dem_(std::move(dem)), drape_(std::move(drape)), frame_(frame), options_(options) {
+  if (frame.horizontal() != lod::HorizontalMap::kGeographic) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "{}: terrain needs a store with longitude/latitude axes", dem_->describe());
+  }
+  if (!(options_.error_pixels > 0)) {
+    throw make_error(ErrorCode::kInvalidArgument, "terrain error {} pixels: must be > 0",
+                     options_.error_pixels);
+  }
+  const auto& d = frame.domain();
+  clip_ = d;
+  const double lon_lo = frame.world_to_axis(0, d.lo[0]), lon_hi = frame.world_to_axis(0, d.hi[0]);
+  const double lat_lo = frame.world_to_axis(1, d.lo[1]), lat_hi = frame.world_to_axis(1, d.hi[1]);
+  const double lon_min = std::min(lon_lo, lon_hi), lon_max = std::max(lon_lo, lon_hi);
+  const double lat_min = std::min(lat_lo, lat_hi), lat_max = std::max(lat_lo, lat_hi);
+  // The DEM's samples inside the store's lon/lat box, found on a lattice of at most
+  // 512 x 512 samples (then widened by one lattice step).
+  const std::size_t w = dem_->width(), h = dem_->height();
+  const std::size_t step = std::max<std::size_t>(1, (std::max(w, h) + 511) / 512);
+  std::vector<double> cs, rs;
+  for (std::size_t r = 0; r < h; r += step) {
+    for (std::size_t c = 0; c < w; c += step) {
+      cs.push_back(double(c));
+      rs.push_back(double(r));
+    }
+  }
+  std::vector<geo::LonLat> ll(cs.size());
+  dem_->georeference(cs, rs, ll);
+  std::size_t c0 = w, c1 = 0, r0 = h, r1 = 0;
+  double dem_lon_min = INFINITY, dem_lon_max = -INFINITY, dem_lat_min = INFINITY, dem_lat_max = -INFINITY;
+  for (std::size_t i = 0; i < ll.size(); ++i) {
+    double lon = ll[i].lon;
+    const double o = frame.origin(0);
+    while (lon < o - 180) lon += 360;
+    while (lon > o + 180) lon -= 360;
+    dem_lon_min = std::min(dem_lon_min, lon);
+    dem_lon_max = std::max(dem_lon_max, lon);
+    dem_lat_min = std::min(dem_lat_min, ll[i].lat);
+    dem_lat_max = std::max(dem_lat_max, ll[i].lat);
+    if (lon >= lon_min && lon <= lon_max && ll[i].lat >= lat_min && ll[i].lat <= lat_max) {
+      const auto c = static_cast<std::size_t>(cs[i]), r = static_cast<std::size_t>(rs[i]);
+      c0 = std::min(c0, c);
+      c1 = std::max(c1, c);
+      r0 = std::min(r0, r);
+      r1 = std::max(r1, r);
+    }
+  }
+  if (c0 > c1 || r0 > r1) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: the DEM (lon {:.2f} to {:.2f}, lat {:.2f} to {:.2f}) does not overlap "
+                     "the store (lon {:.2f} to {:.2f}, lat {:.2f} to {:.2f})",
+                     dem_->describe(), dem_lon_min, dem_lon_max, dem_lat_min, dem_lat_max, lon_min,
+                     lon_max, lat_min, lat_max);
+  }
+  col0_ = c0 >= step ? c0 - step : 0;
+  row0_ = r0 >= step ? r0 - step : 0;
+  col1_ = std::min(w - 1, c1 + step);
+  row1_ = std::min(h - 1, r1 + step);
+  const std::size_t cells = std::max(col1_ - col0_, row1_ - row0_);
+  while ((std::size_t{kTerrainTileCells} << finest_level_) < cells) ++finest_level_;
+  spdlog::info("terrain {}: {} x {} samples ({}), {} x {} over the store, {} levels of {}-cell tiles",
+               dem_->describe(), w, h, dem_->georeferencing(), col1_ - col0_ + 1,
+               row1_ - row0_ + 1, finest_level_ + 1, kTerrainTileCells);
+  worker_ = std::jthread([this](std::stop_token stop) { worker_loop(stop); });
+}
+
+TerrainTiles::~TerrainTiles() {
+  worker_.request_stop();
+  wake_.notify_all();
+}
+
+bool TerrainTiles::exists(const TerrainTileKey& k) const {
+  if (k.level < 0 || k.level > finest_level_ || k.x < 0 || k.y < 0) return false;
+  const std::size_t span = std::size_t{kTerrainTileCells} * stride(k.level);
+  return col0_ + std::size_t(k.x) * span < col1_ && row0_ + std::size_t(k.y) * span < row1_;
+}
+
+std::vector<TerrainTileKey> TerrainTiles::children(const TerrainTileKey& k) const {
+  std::vector<TerrainTileKey> out;
+  if (k.level >= finest_level_) return out;
+  for (int dy = 0; dy < 2; ++dy) {
+    for (int dx = 0; dx < 2; ++dx) {
+      const TerrainTileKey c{k.level + 1, 2 * k.x + dx, 2 * k.y + dy};
+      if (exists(c)) out.push_back(c);
+    }
+  }
+  return out;
+}
+
+TerrainTileSamples TerrainTiles::samples(const TerrainTileKey& k) const {
+  TerrainTileSamples s;
+  const std::size_t st = stride(k.level), span = std::size_t{kTerrainTileCells} * st;
+  const auto axis = [&](std::size_t first, std::size_t last_of_extent, int index) {
+    std::vector<std::size_t> v;
+    const std::size_t begin = first + std::size_t(index) * span;
+    const std::size_t end = std::min(begin + span, last_of_extent);
+    for (std::size_t i = begin; i < end; i += st) v.push_back(i);
+    v.push_back(end);
+    return v;
+  };
+  s.cols = axis(col0_, col1_, k.x);
+  s.rows = axis(row0_, row1_, k.y);
+  return s;
+}
+
+lod::Vec3 TerrainTiles::place(const geo::LonLat& ll) const {
+  double lon = ll.lon;
+  const double o = frame_.origin(0);
+  while (lon < o - 180) lon += 360;
+  while (lon > o + 180) lon -= 360;
+  return {frame_.axis_to_world(0, lon), frame_.axis_to_world(1, ll.lat), 0.0};
+}
+
+std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTileKey& key) const {
+  const auto start = std::chrono::steady_clock::now();
+  const auto s = samples(key);
+  const std::size_t nc = s.cols.size(), nr = s.rows.size();
+  // A ring of one sample (at the tile's stride) around it for the gradients.
+  const std::size_t st = stride(key.level);
+  std::vector<std::size_t> cols{s.cols.front() >= st ? s.cols.front() - st : s.cols.front()};
+  cols.insert(cols.end(), s.cols.begin(), s.cols.end());
+  cols.push_back(std::min(s.cols.back() + st, dem_->width() - 1));
+  std::vector<std::size_t> rows{s.rows.front() >= st ? s.rows.front() - st : s.rows.front()};
+  rows.insert(rows.end(), s.rows.begin(), s.rows.end());
+  rows.push_back(std::min(s.rows.back() + st, dem_->height() - 1));
+  const std::size_t wc = cols.size(), wr = rows.size();
+  const auto heights = read_grid(*dem_, cols, rows);
+  std::vector<double> cd(wc * wr), rd(wc * wr);
+  for (std::size_t r = 0; r < wr; ++r) {
+    for (std::size_t c = 0; c < wc; ++c) {
+      cd[r * wc + c] = double(cols[c]);
+      rd[r * wc + c] = double(rows[r]);
+    }
+  }
+  std::vector<geo::LonLat> ll(wc * wr);
+  dem_->georeference(cd, rd, ll);
+  std::vector<lod::Vec3> p(wc * wr);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p[i] = place(ll[i]);
+    p[i][2] = std::isnan(heights[i]) ? 0.0 : heights[i] * 1e-3;
+  }
+  auto mesh = std::make_shared<TerrainTileMesh>();
+  mesh->key = key;
+  mesh->serial = ++serial_;
+  // Drape: texture coordinates for the tile's own vertices.
+  std::vector<geo::LonLat> inner;
+  inner.reserve(nc * nr);
+  for (std::size_t r = 0; r < nr; ++r) {
+    for (std::size_t c = 0; c < nc; ++c) inner.push_back(ll[(r + 1) * wc + c + 1]);
+  }
+  std::vector<float> u(nc * nr, -1.0f), v(nc * nr, -1.0f);
+  if (drape_) mesh->drape = drape_->read(inner, u, v);
+  double hmin = INFINITY, hmax = -INFINITY;
+  lod::WorldBox box{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+  mesh->vertices.reserve((nc * nr + 2 * (nc + nr)) * kTerrainVertexFloats);
+  for (std::size_t r = 0; r < nr; ++r) {
+    for (std::size_t c = 0; c < nc; ++c) {
+      const std::size_t i = (r + 1) * wc + (c + 1);
+      // Gradient by central differences in the world frame (the plane through the
+      // neighbours in both directions; one-sided where the ring was clamped).
+      const auto& pl = p[i - 1];
+      const auto& pr = p[i + 1];
+      const auto& pd = p[i - wc];
+      const auto& pu = p[i + wc];
+      const lod::Vec3 a = lod::sub(pr, pl), b = lod::sub(pu, pd);
+      const lod::Vec3 n = lod::cross(a, b);
+      double gx = 0, gy = 0;
+      if (std::fabs(n[2]) > 1e-12) {
+        gx = -n[0] / n[2];
+        gy = -n[1] / n[2];
+      }
+      const bool missing = std::isnan(heights[i]);
+      const float x = float(p[i][0]), y = float(p[i][1]), z = float(p[i][2]);
+      mesh->vertices.insert(mesh->vertices.end(),
+                            {x, y, z, float(gx), float(gy), u[r * nc + c], v[r * nc + c],
+                             missing ? 1.0f : 0.0f});
+      hmin = std::min(hmin, p[i][2]);
+      hmax = std::max(hmax, p[i][2]);
+      for (int a2 = 0; a2 < 3; ++a2) {
+        box.lo[a2] = std::min(box.lo[a2], p[i][a2]);
+        box.hi[a2] = std::max(box.hi[a2], p[i][a2]);
+      }
+    }
+  }
+  mesh->box = box;
+  const auto index = [nc](std::size_t c, std::size_t r) { return std::uint32_t(r * nc + c); };
+  for (std::size_t r = 0; r + 1 < nr; ++r) {
+    for (std::size_t c = 0; c + 1 < nc; ++c) {
+      const auto a = index(c, r), b = index(c + 1, r), cc = index(c + 1, r + 1), d = index(c, r + 1);
+      mesh->indices.insert(mesh->indices.end(), {a, b, cc, a, cc, d});
+    }
+  }
+  mesh->surface_triangles = mesh->indices.size() / 3;
+  // Skirts: each edge's vertices copied down by the tile's height range (at least 50 m).
+  const float drop = float(std::max(hmax - hmin, 0.05));
+  const auto skirt = [&](std::vector<std::uint32_t> edge) {
+    const auto first = std::uint32_t(mesh->vertices.size() / kTerrainVertexFloats);
+    for (const auto e : edge) {
+      const auto* src = &mesh->vertices[std::size_t(e) * kTerrainVertexFloats];
+      std::vector<float> copy(src, src + kTerrainVertexFloats);
+      copy[2] -= drop;
+      mesh->vertices.insert(mesh->vertices.end(), copy.begin(), copy.end());
+    }
+    for (std::uint32_t k = 0; k + 1 < edge.size(); ++k) {
+      mesh->indices.insert(mesh->indices.end(),
+                           {edge[k], edge[k + 1], first + k + 1, edge[k], first + k + 1, first + k});
+    }
+  };
+  std::vector<std::uint32_t> bottom, top, left, right;
+  for (std::size_t c = 0; c < nc; ++c) {
+    bottom.push_back(index(c, 0));
+    top.push_back(index(c, nr - 1));
+  }
+  for (std::size_t r = 0; r < nr; ++r) {
+    left.push_back(index(0, r));
+    right.push_back(index(nc - 1, r));
+  }
+  for (auto* e : {&bottom, &top, &left, &right}) skirt(*e);
+  mesh->load_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return mesh;
+}
+
+lod::WorldBox TerrainTiles::estimated_box(const TerrainTileKey& key, const lod::WorldBox* parent) const {
+  lod::WorldBox box;
+  {
+    std::lock_guard lock(mutex_);
+    if (const auto it = cache_.find(key); it != cache_.end()) return it->second.mesh->box;
+    if (const auto it = box_memo_.find(key); it != box_memo_.end()) box = it->second;
+  }
+  if (box.lo == box.hi) {
+    // The horizontal box from eight samples along each edge.
+    const auto s = samples(key);
+    std::vector<double> cs, rs;
+    for (int i = 0; i <= 8; ++i) {
+      const double c = double(s.cols.front()) + (double(s.cols.back()) - double(s.cols.front())) * i / 8.0;
+      const double r = double(s.rows.front()) + (double(s.rows.back()) - double(s.rows.front())) * i / 8.0;
+      for (const auto& [x, y] : {std::pair{c, double(s.rows.front())}, std::pair{c, double(s.rows.back())},
+                                 std::pair{double(s.cols.front()), r}, std::pair{double(s.cols.back()), r}}) {
+        cs.push_back(x);
+        rs.push_back(y);
+      }
+    }
+    std::vector<geo::LonLat> ll(cs.size());
+    dem_->georeference(cs, rs, ll);
+    box = {{INFINITY, INFINITY, 0}, {-INFINITY, -INFINITY, 0}};
+    for (const auto& l : ll) {
+      const auto p = place(l);
+      for (int a = 0; a < 2; ++a) {
+        box.lo[a] = std::min(box.lo[a], p[a]);
+        box.hi[a] = std::max(box.hi[a], p[a]);
+      }
+    }
+    std::lock_guard lock(mutex_);
+    box_memo_[key] = box;
+  }
+  // Heights: the parent's range (or 0-5 km before anything is known).
+  box.lo[2] = parent ? parent->lo[2] : 0.0;
+  box.hi[2] = parent ? parent->hi[2] : 5.0;
+  return box;
+}
+
+std::shared_ptr<const TerrainFrame> TerrainTiles::update(const lod::Camera& camera,
+                                                         double exaggeration, int viewport_height) {
+  auto frame = std::make_shared<TerrainFrame>();
+  frame->clip = clip_;
+  const lod::Frustum frustum = lod::view_frustum(camera);
+  const double pixels_per_radian =
+      double(std::max(viewport_height, 1)) / (2.0 * std::tan(camera.fov_y_deg * std::numbers::pi / 360.0));
+  std::vector<std::pair<double, TerrainTileKey>> wanted;  // (priority, key)
+  bool complete = true;
+  std::lock_guard lock(mutex_);
+  const std::uint64_t now = ++frame_counter_;
+  const auto loaded = [&](const TerrainTileKey& k) -> const Entry* {
+    const auto it = cache_.find(k);
+    return it == cache_.end() ? nullptr : &it->second;
+  };
+  std::vector<TerrainTileKey> stack{TerrainTileKey{}};
+  while (!stack.empty()) {
+    const TerrainTileKey key = stack.back();
+    stack.pop_back();
+    Entry* entry = const_cast<Entry*>(loaded(key));
+    if (!entry) {
+      if (!failed_.contains(key)) {
+        wanted.emplace_back(-1e30, key);
+        complete = false;
+      }
+      continue;
+    }
+    entry->last_used = now;
+    const lod::WorldBox box = exaggerated(entry->mesh->box, exaggeration);
+    if (options_.cull && !frustum.may_intersect(box)) continue;
+    const double distance = std::max(box_distance(box, camera.eye), camera.near_km);
+    const auto s = samples(key);
+    const double cells = double(std::max<std::size_t>(1, std::max(s.cols.size(), s.rows.size()) - 1));
+    const double spacing = std::max(entry->mesh->box.hi[0] - entry->mesh->box.lo[0],
+                                    entry->mesh->box.hi[1] - entry->mesh->box.lo[1]) / cells;
+    const double error_px = 0.5 * spacing / distance * pixels_per_radian;
+    const auto kids = children(key);
+    bool split = !kids.empty() && error_px > options_.error_pixels;
+    if (split) {
+      bool all = true;
+      for (const auto& c : kids) {
+        if (!loaded(c) && !failed_.contains(c)) {
+          all = false;
+          wanted.emplace_back(double(c.level) * 1e7 + distance, c);
+        }
+        if (failed_.contains(c)) split = false;
+      }
+      if (!all) {
+        complete = false;
+        split = false;
+      }
+    }
+    if (split) {
+      for (const auto& c : kids) stack.push_back(c);
+    } else {
+      frame->tiles.push_back(entry->mesh);
+    }
+  }
+  std::sort(wanted.begin(), wanted.end());
+  queue_.clear();
+  for (const auto& [priority, key] : wanted) {
+    if (!in_flight_.contains(key)) queue_.push_back(key);
+  }
+  if (!queue_.empty()) wake_.notify_all();
+  complete_ = complete && in_flight_.empty() && queue_.empty();
+  selected_ = frame->tiles.size();
+  triangles_ = frame->triangles();
+  evict();
+  return frame;
+}
+
+void TerrainTiles::evict() {
+  if (cache_bytes_ <= options_.cache_bytes) return;
+  std::vector<std::pair<std::uint64_t, TerrainTileKey>> order;
+  for (const auto& [k, e] : cache_) {
+    if (k.level > 0 && e.last_used < frame_counter_) order.emplace_back(e.last_used, k);
+  }
+  std::sort(order.begin(), order.end());
+  for (const auto& [used, k] : order) {
+    if (cache_bytes_ <= options_.cache_bytes) break;
+    const auto it = cache_.find(k);
+    cache_bytes_ -= it->second.mesh->bytes();
+    cache_.erase(it);
+  }
+}
+
+void TerrainTiles::worker_loop(std::stop_token stop) {
+  while (!stop.stop_requested()) {
+    TerrainTileKey key;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, stop, [&] { return !queue_.empty(); });
+      if (stop.stop_requested()) return;
+      key = queue_.front();
+      queue_.pop_front();
+      if (cache_.contains(key)) continue;
+      in_flight_.insert(key);
+    }
+    std::shared_ptr<const TerrainTileMesh> mesh;
+    std::string error;
+    try {
+      mesh = load_tile(key);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    std::lock_guard lock(mutex_);
+    in_flight_.erase(key);
+    if (mesh) {
+      cache_bytes_ += mesh->bytes();
+      cache_[key] = Entry{mesh, frame_counter_};
+      ++loads_;
+      load_ms_ += mesh->load_ms;
+    } else {
+      failed_.insert(key);
+      error_ = error;
+      spdlog::warn("terrain tile {}/{}/{}: {}", key.level, key.x, key.y, error);
+    }
+  }
+}
+
+bool TerrainTiles::complete() const {
+  std::lock_guard lock(mutex_);
+  return complete_;
+}
+
+TerrainStatus TerrainTiles::status() const {
+  std::lock_guard lock(mutex_);
+  TerrainStatus s;
+  s.selected = selected_;
+  s.triangles = triangles_;
+  s.cached = cache_.size();
+  s.cache_bytes = cache_bytes_;
+  s.loads = loads_;
+  s.load_ms = load_ms_;
+  s.pending = queue_.size() + in_flight_.size();
+  s.complete = complete_;
+  s.error = error_;
+  return s;
+}
+
+void TerrainTiles::set_error_pixels(double pixels) {
+  if (pixels > 0) {
+    std::lock_guard lock(mutex_);
+    options_.error_pixels = pixels;
+  }
+}
+
+}  // namespace strielad::view

@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: Apache-2.0
+// The terrain's level-of-detail height field (issue 8, "Terrain"): a quadtree of tiles
+// over the part of a DEM (geo/dem_source.h) that overlaps the store's longitude/latitude
+// extent, each tile kTerrainTileCells x kTerrainTileCells cells of the DEM sampled at its
+// level's stride (the finest level takes every sample), placed in the store's world
+// frame (lod/world_frame.h) through the DEM's own georeferencing, heights in km so that
+// the renderer's vertical exaggeration lifts terrain and clouds alike.
+//
+// - Selection (every frame, TerrainTiles::update): from the root, a tile in the view
+//   frustum is split while its screen-space error, error_km * viewport height /
+//   (2 distance tan(fov / 2)), exceeds error_pixels; a tile's error is half its sample
+//   spacing in km (the geometric error of a height field sampled at that spacing, taken
+//   as proportional to it). A tile is replaced by its children only when all four are
+//   loaded: until then the coarser parent is drawn, so a frame never waits and never
+//   has holes. Each point of the extent is covered by exactly one selected tile.
+// - Loading: missing tiles are requested (coarsest, then nearest first) from one
+//   background thread that reads their DEM windows (strided reads) and builds their
+//   meshes; requests not wanted any more are dropped. Loaded tiles stay in a cache
+//   bounded in bytes (least recently selected out first; the root stays).
+// - Cracks between tiles of different levels are hidden by skirts: every tile edge
+//   hangs a strip down by the tile's height range.
+// - Fill rule: samples without a value (fill, nodata, sea without data) are drawn at
+//   height 0 (sea level) and flagged, so the drawing colours them as water; no triangle
+//   is dropped, so the surface stays closed.
+// - Normals come from per-vertex height gradients (central differences over the tile's
+//   samples plus a ring of neighbours, so shading is continuous across tile edges); the
+//   renderer turns them into normals at the current exaggeration.
+#pragma once
+
+#include <atomic>
+#include <compare>
+#include <condition_variable>
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "geo/dem_source.h"
+#include "geo/drape_image.h"
+#include "lod/camera.h"
+#include "lod/world_frame.h"
+
+namespace strielad::view {
+
+inline constexpr int kTerrainTileCells = 64;  // 65 x 65 vertices per tile
+inline constexpr double kDefaultTerrainErrorPixels = 2.0;
+inline constexpr std::size_t kDefaultTerrainCacheBytes = 256ull << 20;
+// Per vertex: x, y (world km), height (km, 0 where missing), dh/dx, dh/dy (km per km),
+// u, v (drape texture; < 0 off the image), missing (1 or 0).
+inline constexpr int kTerrainVertexFloats = 8;
+
+struct TerrainTileKey {
+  int level = 0, x = 0, y = 0;
+  friend auto operator<=>(const TerrainTileKey&, const TerrainTileKey&) = default;
+};
+
+// DEM samples of a tile: columns and rows (indices into the DEM), the last one of each
+// clamped to the extent's edge.
+struct TerrainTileSamples {
+  std::vector<std::size_t> cols, rows;
+};
+
+struct TerrainTileMesh {
+  TerrainTileKey key;
+  std::uint64_t serial = 0;           // unique per load (GPU caches key on it)
+  std::vector<float> vertices;        // kTerrainVertexFloats per vertex
+  std::vector<std::uint32_t> indices; // triangles, skirts included
+  std::size_t surface_triangles = 0;  // without the skirts
+  lod::WorldBox box;                  // world km, z = height km (exaggeration 1)
+  geo::DrapePatch drape;              // empty without a drape image
+  double load_ms = 0;
+  std::size_t bytes() const {
+    return vertices.size() * sizeof(float) + indices.size() * sizeof(std::uint32_t) +
+           drape.rgba.size() + sizeof(*this);
+  }
+  std::size_t triangles() const { return indices.size() / 3; }
+};
+
+// What the renderer draws of the terrain in one frame.
+struct TerrainFrame {
+  std::vector<std::shared_ptr<const TerrainTileMesh>> tiles;
+  lod::WorldBox clip;  // world x/y box the terrain is cut to (the store's domain)
+  std::size_t triangles() const {
+    std::size_t n = 0;
+    for (const auto& t : tiles) n += t->triangles();
+    return n;
+  }
+};
+
+struct TerrainOptions {
+  double error_pixels = kDefaultTerrainErrorPixels;  // > 0
+  std::size_t cache_bytes = kDefaultTerrainCacheBytes;
+  bool cull = true;  // frustum culling (tests turn it off to see the whole cover)
+};
+
+struct TerrainStatus {
+  std::size_t selected = 0;         // tiles of the last selection
+  std::size_t triangles = 0;
+  std::size_t cached = 0;           // tiles loaded and kept
+  std::size_t cache_bytes = 0;
+  std::size_t loads = 0;            // tiles loaded so far
+  double load_ms = 0;               // their total load time (background thread)
+  std::size_t pending = 0;          // requested, not yet loaded
+  bool complete = false;            // the last selection needed nothing missing
+  std::string error;                // the last load error (the tile is left out)
+};
+
+class TerrainTiles {
+ public:
+  // \error kUnsupported when the frame is not geographic (no longitude/latitude axes);
+  // kInvalidInput when the DEM does not overlap the store's extent (naming both extents).
+  TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod::WorldFrame& frame,
+               TerrainOptions options = {}, std::shared_ptr<const geo::DrapeImage> drape = nullptr);
+  ~TerrainTiles();
+  TerrainTiles(const TerrainTiles&) = delete;
+  TerrainTiles& operator=(const TerrainTiles&) = delete;
+
+  // Selects the tiles for `camera` (world frame at `exaggeration`) on a viewport
+  // `viewport_height` pixels high, requests the missing ones, never waits.
+  std::shared_ptr<const TerrainFrame> update(const lod::Camera& camera, double exaggeration,
+                                             int viewport_height);
+  // Whether the last update's selection is final (every tile it wants is loaded).
+  bool complete() const;
+  TerrainStatus status() const;
+  void set_error_pixels(double pixels);
+
+  // The quadtree (for tests and the panel).
+  int finest_level() const { return finest_level_; }
+  // DEM sample extent covered: first and last column and row (inclusive).
+  std::array<std::size_t, 4> extent() const { return {col0_, row0_, col1_, row1_}; }
+  bool exists(const TerrainTileKey& key) const;
+  std::vector<TerrainTileKey> children(const TerrainTileKey& key) const;
+  TerrainTileSamples samples(const TerrainTileKey& key) const;
+  // Builds a tile's mesh now, on the calling thread.
+  std::shared_ptr<const TerrainTileMesh> load_tile(const TerrainTileKey& key) const;
+
+ private:
+  struct Entry {
+    std::shared_ptr<const TerrainTileMesh> mesh;
+    std::uint64_t last_used = 0;
+  };
+  std::size_t stride(int level) const { return std::size_t{1} << (finest_level_ - level); }
+  lod::WorldBox estimated_box(const TerrainTileKey& key, const lod::WorldBox* parent) const;
+  lod::Vec3 place(const geo::LonLat& ll) const;
+  void worker_loop(std::stop_token stop);
+  void evict();
+
+  std::shared_ptr<const geo::DemSource> dem_;
+  std::shared_ptr<const geo::DrapeImage> drape_;
+  lod::WorldFrame frame_;  // a copy: x/y do not depend on the exaggeration
+  TerrainOptions options_;
+  std::size_t col0_ = 0, row0_ = 0, col1_ = 0, row1_ = 0;
+  int finest_level_ = 0;
+  lod::WorldBox clip_;
+
+  mutable std::mutex mutex_;
+  std::condition_variable_any wake_;
+  std::map<TerrainTileKey, Entry> cache_;
+  std::size_t cache_bytes_ = 0;
+  std::deque<TerrainTileKey> queue_;         // wanted, in order
+  std::set<TerrainTileKey> in_flight_;
+  std::uint64_t frame_counter_ = 0;
+  bool complete_ = false;
+  std::size_t loads_ = 0;
+  double load_ms_ = 0;
+  std::size_t selected_ = 0, triangles_ = 0;
+  std::string error_;
+  std::set<TerrainTileKey> failed_;
+  mutable std::map<TerrainTileKey, lod::WorldBox> box_memo_;
+  mutable std::atomic<std::uint64_t> serial_{0};
+  std::jthread worker_;
+};
+
+}  // namespace strielad::view

@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: Apache-2.0
+// The terrain quadtree (view/terrain_tiles.h): the extent is clipped to the store, the
+// selected tiles cover it without overlap, a closer camera selects finer tiles, parents
+// are drawn until all children arrive, the cache stays within its byte bound, and NaN
+// samples are drawn at height 0 and flagged.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <thread>
+
+#include "lod/lod_test_grids.h"
+#include "support/expect_error.h"
+#include "support/function_dem.h"
+#include "view/terrain_tiles.h"
+
+namespace strielad {
+namespace {
+
+using testing::FunctionDem;
+
+// The test grids' store: lon 4.5..14.5, lat 47.5..54.5.
+lod::WorldFrame store_frame() {
+  return lod::WorldFrame(lod::testing::geographic_manifest(11, 8, {0.0, 12000.0}),
+                         lod::WorldFrameOptions{.vertical_exaggeration = 10.0});
+}
+
+// A DEM larger than the store (lon 2..17, lat 46..56) at 0.005 degrees.
+std::shared_ptr<FunctionDem> big_dem() {
+  return std::make_shared<FunctionDem>(3001, 2001, 2.0, 17.0, 46.0, 56.0, [](double lon, double lat) {
+    return float(500 + 400 * std::sin(lon * 3) * std::cos(lat * 2));
+  });
+}
+
+std::shared_ptr<const view::TerrainFrame> settle(view::TerrainTiles& t, const lod::Camera& cam) {
+  std::shared_ptr<const view::TerrainFrame> frame;
+  for (int i = 0; i < 20000; ++i) {
+    frame = t.update(cam, 10.0, 720);
+    if (t.complete()) return frame;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ADD_FAILURE() << "terrain never complete";
+  return frame;
+}
+
+lod::Camera camera_at(const lod::WorldFrame& f, lod::Vec3 eye, lod::Vec3 target) {
+  return lod::look_at(eye, target, 45.0, 16.0 / 9.0, f.domain());
+}
+
+TEST(TerrainTilesTest, ExtentIsClippedToTheStore) {
+  const auto frame = store_frame();
+  view::TerrainTiles tiles(big_dem(), frame);
+  const auto e = tiles.extent();
+  // Store lon 4.5..14.5 is DEM columns 500..2500, lat 54.5..47.5 rows 300..1700, plus
+  // the 512-lattice's step (6 samples) of margin.
+  EXPECT_LE(e[0], 500u);
+  EXPECT_GE(e[0], 490u);
+  EXPECT_GE(e[2], 2500u);
+  EXPECT_LE(e[2], 2510u);
+  EXPECT_LE(e[1], 300u);
+  EXPECT_GE(e[3], 1700u);
+  EXPECT_EQ(tiles.finest_level(), 5);  // 2012 cells: 64 << 5 = 2048
+}
+
+TEST(TerrainTilesTest, SelectionCoversTheExtentWithoutOverlap) {
+  const auto frame = store_frame();
+  view::TerrainTiles tiles(big_dem(), frame, {.error_pixels = 2.0, .cull = false});
+  const auto cam = camera_at(frame, {0, -300, 150}, {0, 0, 0});
+  const auto selected = settle(tiles, cam);
+  const auto e = tiles.extent();
+  // Count how many selected tiles cover each DEM cell (on a lattice of cells).
+  std::map<std::pair<std::size_t, std::size_t>, int> cover;
+  for (const auto& t : selected->tiles) {
+    const auto s = tiles.samples(t->key);
+    for (std::size_t r = s.rows.front(); r < s.rows.back(); r += 4) {
+      for (std::size_t c = s.cols.front(); c < s.cols.back(); c += 4) ++cover[{r - r % 4, c - c % 4}];
+    }
+  }
+  // Every tile starts at the extent's corner plus a multiple of 64 samples, so the
+  // lattice of every 4th cell from that corner lines up with each tile's own.
+  std::size_t cells = 0;
+  for (std::size_t r = e[1]; r < e[3]; r += 4) {
+    for (std::size_t c = e[0]; c < e[2]; c += 4) {
+      ++cells;
+      ASSERT_EQ((cover[{r - r % 4, c - c % 4}]), 1) << "cell " << r << "," << c;
+    }
+  }
+  EXPECT_GT(cells, 1000u);
+  EXPECT_GT(selected->tiles.size(), 4u);
+}
+
+TEST(TerrainTilesTest, CloserCameraSelectsFinerTiles) {
+  const auto frame = store_frame();
+  const auto finest = [&](const lod::Camera& cam) {
+    view::TerrainTiles tiles(big_dem(), frame);
+    const auto selected = settle(tiles, cam);
+    int level = 0;
+    for (const auto& t : selected->tiles) level = std::max(level, t->key.level);
+    return level;
+  };
+  const int far = finest(camera_at(frame, {0, -1500, 800}, {0, 0, 0}));
+  const int near = finest(camera_at(frame, {0, -60, 30}, {0, 0, 0}));
+  EXPECT_GT(near, far);
+}
+
+TEST(TerrainTilesTest, ParentShownUntilChildrenArrive) {
+  const auto frame = store_frame();
+  view::TerrainTiles tiles(big_dem(), frame);
+  const auto cam = camera_at(frame, {0, -60, 30}, {0, 0, 0});
+  // The first update has nothing loaded: nothing drawn, not complete, never blocks.
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto first = tiles.update(cam, 10.0, 720);
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::milliseconds(200));
+  EXPECT_TRUE(first->tiles.empty());
+  EXPECT_FALSE(tiles.complete());
+  // Every later frame draws something (the root at least) and finally finer tiles.
+  for (int i = 0; i < 20000 && !tiles.complete(); ++i) {
+    const auto f = tiles.update(cam, 10.0, 720);
+    if (tiles.status().loads > 0) {
+      EXPECT_FALSE(f->tiles.empty());
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  EXPECT_TRUE(tiles.complete());
+}
+
+TEST(TerrainTilesTest, CacheStaysWithinItsByteBound) {
+  const auto frame = store_frame();
+  const std::size_t bound = 2u << 20;
+  view::TerrainTiles tiles(big_dem(), frame, {.error_pixels = 1.0, .cache_bytes = bound});
+  // Fly along: each view needs other fine tiles.
+  for (double x = -300; x <= 300; x += 100) {
+    const auto drawn = settle(tiles, camera_at(frame, {x, -50, 20}, {x, 0, 0}));
+    std::size_t drawn_bytes = 0;
+    for (const auto& t : drawn->tiles) drawn_bytes += t->bytes();
+    const auto s = tiles.status();
+    // The bound holds except for what the current frame uses (never evicted): the tiles
+    // drawn and their ancestors (at most a third more tiles, plus one per level).
+    EXPECT_LE(s.cache_bytes, bound + 2 * drawn_bytes) << x;
+  }
+  EXPECT_GT(tiles.status().loads, tiles.status().cached);  // something was evicted
+}
+
+TEST(TerrainTilesTest, MissingSamplesAreFlaggedAtHeightZero) {
+  const auto frame = store_frame();
+  auto dem = std::make_shared<FunctionDem>(201, 141, 4.5, 14.5, 47.5, 54.5, [](double lon, double) {
+    return lon < 9.5 ? NAN : 1000.0f;
+  });
+  view::TerrainTiles tiles(dem, frame);
+  const auto root = tiles.load_tile({0, 0, 0});
+  std::size_t missing = 0, present = 0;
+  for (std::size_t i = 0; i < root->vertices.size(); i += view::kTerrainVertexFloats) {
+    const float* v = &root->vertices[i];
+    if (v[7] > 0.5f) {
+      ++missing;
+      EXPECT_LE(v[2], 0.0f);  // height 0 (skirt copies lower)
+    } else {
+      ++present;
+    }
+  }
+  EXPECT_GT(missing, 100u);
+  EXPECT_GT(present, 100u);
+}
+
+TEST(TerrainTilesTest, DemOutsideTheStoreIsRefused) {
+  const auto frame = store_frame();
+  auto dem = std::make_shared<FunctionDem>(10, 10, 100, 110, 10, 20, [](double, double) { return 1.0f; });
+  testing::expect_error([&] { view::TerrainTiles tiles(dem, frame); }, ErrorCode::kInvalidInput,
+                        {"does not overlap"});
+}
+
+}  // namespace
+}  // namespace strielad
