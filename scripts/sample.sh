@@ -12,7 +12,9 @@ convert=build/cmd/strielad-convert/strielad-convert
 dims=${DIMS:-286x312x60}
 out=${OUT:-sample-data}
 rm -rf "$out/store"
-"$convert" sample -o "$out/netcdf" --dims "$dims" --steps 4
+"$convert" sample -o "$out/netcdf" --dims "$dims" --steps 4 --terrain 1024 --tracks 3000
+# The DEM is not an input of the conversion: next to the store, not among the .nc inputs.
+mv "$out/netcdf/sample_terrain.nc" "$out/sample_terrain.nc"
 "$convert" "$out"/netcdf/*.nc -o "$out/store"
 "$convert" verify "$out/store"
 "$convert" info "$out/store"

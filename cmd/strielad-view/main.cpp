@@ -4,6 +4,7 @@
 #include "cli/tool_main.h"
 #include "core/error.h"
 #include "viewer_args.h"
+#include "viewer_session.h"
 
 int main(int argc, char** argv) {
   using namespace strielad;
@@ -74,6 +75,22 @@ int main(int argc, char** argv) {
         app.add_option("--track-minutes", args->track_minutes,
                        "Draw the part of each track flown in the last N minutes (default 2)")
             ->check(CLI::Range(0.0, 1e6));
+        app.add_option("--terrain", args->terrain_file,
+                       "Terrain: a DEM as CF-NetCDF (lon/lat or rotated-pole grid) or any raster "
+                       "GDAL reads (GeoTIFF...), README \"Terrain\"");
+        app.add_option("--terrain-var", args->terrain_var,
+                       "NetCDF DEM variable (default: standard_name surface_altitude, or HSURF, "
+                       "z_ifc, topography_c, orog, elevation)");
+        app.add_option("--terrain-image", args->terrain_image,
+                       "Georeferenced image (any raster GDAL reads, RGB or grey) draped over the "
+                       "terrain instead of height colours");
+        app.add_option("--terrain-error", args->terrain_error,
+                       "Terrain level of detail: split tiles whose error exceeds this many "
+                       "pixels (default 2)")
+            ->check(CLI::PositiveNumber);
+        app.add_option("--terrain-cache-mib", args->terrain_cache_mib,
+                       "Terrain tile cache bound, MiB (default 256)")
+            ->check(CLI::PositiveNumber);
         app.add_flag("--offscreen", args->offscreen,
                      "Render without a window (EGL; no X server needed) once the cut has fully "
                      "arrived, write --out and exit");
@@ -89,7 +106,8 @@ int main(int argc, char** argv) {
                        "Window: close after this many frames (for smoke tests; 0 = never)");
         app.add_option("--screenshot", args->screenshot,
                        "Window: save the last frame, panel included, as PNG on exit");
-        app.callback([args, &action] {
+        app.callback([args, &action, &app] {
+          args->sun_given = app.count("--sun") > 0;
           action = [args] {
             if (args->store.empty() == args->connect.empty()) {
               throw make_error(ErrorCode::kInvalidArgument,
@@ -103,6 +121,17 @@ int main(int argc, char** argv) {
                                "--advect-seconds is for --offscreen; the window has a slider");
             }
             if (args->advect_seconds) args->advect = true;
+            const bool terrain_flags = !args->terrain_var.empty() || !args->terrain_image.empty();
+            if (terrain_flags && args->terrain_file.empty() && args->scene_file.empty()) {
+              throw make_error(ErrorCode::kInvalidArgument,
+                               "--terrain-var and --terrain-image need --terrain FILE");
+            }
+            *args = view_cmd::with_scene_settings(*args);
+            if (args->terrain_file.empty() &&
+                (!args->terrain_var.empty() || !args->terrain_image.empty())) {
+              throw make_error(ErrorCode::kInvalidArgument,
+                               "--terrain-var and --terrain-image need --terrain FILE");
+            }
             if (args->offscreen && args->out.empty()) {
               throw make_error(ErrorCode::kInvalidArgument, "--offscreen needs --out FILE.png");
             }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -124,8 +125,26 @@ int run_offscreen(const ViewerArgs& args) {
   const double track_window_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tracks_start).count();
   for (std::size_t i = 0; i < cameras.size(); ++i) {
+    // Terrain: the tiles of this camera's final selection, all loaded (deterministic).
+    double terrain_wait_ms = 0;
+    std::shared_ptr<const view::TerrainFrame> terrain;
+    if (session.terrain) {
+      const auto t0 = std::chrono::steady_clock::now();
+      while (true) {
+        terrain = session.terrain->update(cameras[i], args.exaggeration, height);
+        if (session.terrain->complete()) break;
+        if (std::chrono::steady_clock::now() - t0 > std::chrono::minutes(10)) {
+          throw make_error(ErrorCode::kCancelled, "the terrain was not loaded after 600 s");
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      }
+      terrain_wait_ms = std::chrono::duration<double, std::milli>(
+                            std::chrono::steady_clock::now() - t0).count();
+    }
     auto inputs = render::frame_inputs(controller, cameras[i]);
+    inputs.terrain = terrain;
     if (sun) inputs.sun_direction = sun->direction;
+    else if (args.sun_fixed_direction) inputs.sun_direction = *args.sun_fixed_direction;
     inputs.tracks = tracks;
     inputs.time_seconds = time_s;
     inputs.motions = motions;
@@ -135,6 +154,7 @@ int run_offscreen(const ViewerArgs& args) {
     if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
     render::write_png(out, frame.image);
     const auto& s = frame.stats;
+    const auto terrain_status = session.terrain ? session.terrain->status() : view::TerrainStatus{};
     if (args.json) {
       nlohmann::json line{{"frame", i},
                           {"file", out.string()},
@@ -151,6 +171,11 @@ int run_offscreen(const ViewerArgs& args) {
                           {"advect_trajectories", motions.empty() ? 0 : motions[0].map->points()},
                           {"advect_evaluations", motions.empty() ? 0 : motions[0].map->evaluations},
                           {"advect_map_ms", motions.empty() ? 0.0 : motions[0].map->compute_seconds * 1e3},
+                          {"terrain_tiles", s.terrain_tiles},
+                          {"terrain_triangles", s.terrain_triangles},
+                          {"terrain_load_ms", terrain_wait_ms},
+                          {"terrain_tiles_loaded", terrain_status.loads},
+                          {"terrain_tile_ms", terrain_status.loads ? terrain_status.load_ms / double(terrain_status.loads) : 0.0},
                           {"wait_ms", frame.wait_ms},
                           {"render_ms", frame.render_ms},
                           {"geometry_ms", s.geometry_ms},
@@ -161,6 +186,14 @@ int run_offscreen(const ViewerArgs& args) {
                           {"truncated_pixels", s.truncated_pixels},
                           {"max_fragments_per_pixel", s.max_fragments_per_pixel},
                           {"failed_nodes", controller.failed_nodes()}};
+      line["slice_triangles"] = renderer.meshes().slice_triangles();
+      line["slices"] = nlohmann::json::array();
+      for (std::size_t k = 0; k < frame.slice_styles.size(); ++k) {
+        const auto& style = frame.slice_styles[k];
+        line["slices"].push_back({{"id", controller.scene().slices[k].id},
+                                  {"colormap", style.colormap},
+                                  {"range", {style.lo, style.hi}}});
+      }
       std::cout << line.dump() << std::endl;
     } else {
       spdlog::info("{}: {} nodes ({} with meshes, {} triangles), complete after {:.0f} ms, "

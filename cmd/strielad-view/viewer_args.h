@@ -37,9 +37,19 @@ struct ViewerArgs {
   std::string integrator = "rk4";        // lib/advect method
   double advect_step_s = 60;             // fixed step, or the adaptive methods' first
   double advect_rtol = 1e-6;             // adaptive methods
-  std::string sun = "time";
+  std::string sun = "time";  // "time": the true sun at the simulation time; "fixed"
+  // With "fixed": towards the sun in the world frame (x east, y north, z up); unset: the
+  // built-in light. Set from the scene's "sun" {"elevation", "azimuth"}.
+  std::optional<lod::Vec3> sun_fixed_direction;
+  bool sun_given = false;  // --sun was on the command line (it overrides the scene)
   std::string tracks_file;   // flight tracks CSV (geo/flight_tracks.h)
-  double track_minutes = 2;  // drawn: the last minutes of each track  // "time": the true sun at the simulation time; "fixed"
+  double track_minutes = 2;  // drawn: the last minutes of each track
+  // Terrain (README "Terrain").
+  std::string terrain_file;   // DEM: NetCDF or any raster GDAL reads
+  std::string terrain_var;    // NetCDF variable (default: found by standard_name / name)
+  std::string terrain_image;  // georeferenced drape image
+  double terrain_error = 2.0; // screen-space error bound, pixels
+  double terrain_cache_mib = 256;
   // Headless.
   bool offscreen = false;
   std::string camera_file;  // formats/camera-path.md: one keyframe, or a path

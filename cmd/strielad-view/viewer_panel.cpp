@@ -151,6 +151,7 @@ void statistics(const PanelInfo& info) {
   ImGui::Text("received: %llu results (%llu failed), %s", static_cast<unsigned long long>(info.results),
               static_cast<unsigned long long>(info.failed), bytes_text(info.bytes_received).c_str());
   ImGui::Text("GPU: %zu triangles in %s", info.gpu_triangles, bytes_text(info.gpu_bytes).c_str());
+  if (!info.terrain.empty()) ImGui::TextWrapped("%s", info.terrain.c_str());
   const auto& f = info.frame;
   ImGui::Text("A-buffer: %.1f fragments per covered pixel, max %u", f.fragments_per_covered_pixel(),
               f.max_fragments_per_pixel);

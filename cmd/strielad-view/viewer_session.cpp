@@ -2,11 +2,16 @@
 #include "viewer_session.h"
 
 #include <fmt/format.h>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
 #include <spdlog/spdlog.h>
 
 #include "advect/integrators.h"
 #include "core/error.h"
 #include "core/file_io.h"
+#include "geo/dem_source.h"
+#include "geo/drape_image.h"
 #include "net/socket.h"
 #include "net/token_file.h"
 #include "view/default_scene.h"
@@ -100,11 +105,53 @@ ViewerSession open_session(const ViewerArgs& args) {
     spdlog::info("{}: {} flight tracks, {} position reports", args.tracks_file,
                  session.tracks->tracks.size(), session.tracks->reports);
   }
+  if (!args.terrain_file.empty()) {
+    std::shared_ptr<const geo::DemSource> dem = geo::open_dem(args.terrain_file, args.terrain_var);
+    std::shared_ptr<const geo::DrapeImage> drape;
+    if (!args.terrain_image.empty()) {
+      drape = std::make_shared<const geo::DrapeImage>(args.terrain_image);
+      spdlog::info("terrain drape image {}", drape->describe());
+    }
+    view::TerrainOptions options;
+    options.error_pixels = args.terrain_error;
+    options.cache_bytes = static_cast<std::size_t>(args.terrain_cache_mib * 1048576.0);
+    session.terrain = std::make_unique<view::TerrainTiles>(
+        std::move(dem), session.link->placer().frame(), options, std::move(drape));
+  }
   spdlog::info("{}: {} x {} x {} grid, {} variables, {} time steps, {} octree nodes",
                session.dataset_name, manifest.x.size(), manifest.y.size(), manifest.z.size(),
                manifest.variables.size(), manifest.time.values.size(),
                session.link->octree().node_count());
   return session;
+}
+
+ViewerArgs with_scene_settings(ViewerArgs args) {
+  if (args.scene_file.empty()) return args;
+  const Scene scene = load_scene_file(args.scene_file);
+  const std::filesystem::path dir = std::filesystem::path(args.scene_file).parent_path();
+  const auto beside_scene = [&dir](const std::string& path) {
+    const std::filesystem::path p(path);
+    return (p.is_absolute() ? p : dir / p).lexically_normal().string();
+  };
+  if (scene.terrain && args.terrain_file.empty()) {
+    args.terrain_file = beside_scene(scene.terrain->dem);
+    if (args.terrain_var.empty()) args.terrain_var = scene.terrain->var;
+    if (args.terrain_image.empty() && !scene.terrain->image.empty()) {
+      args.terrain_image = beside_scene(scene.terrain->image);
+    }
+  }
+  if (scene.trajectories && args.tracks_file.empty()) {
+    args.tracks_file = beside_scene(scene.trajectories->file);
+    args.track_minutes = scene.trajectories->minutes;
+  }
+  if (scene.sun && !scene.sun->from_time && !args.sun_given) {
+    constexpr double kRad = std::numbers::pi / 180.0;
+    const double el = scene.sun->elevation_deg * kRad, az = scene.sun->azimuth_deg * kRad;
+    args.sun = "fixed";
+    args.sun_fixed_direction = lod::Vec3{std::sin(az) * std::cos(el), std::cos(az) * std::cos(el),
+                                         std::sin(el)};
+  }
+  return args;
 }
 
 std::shared_ptr<const view::TrackLines> tracks_at(const ViewerSession& session,

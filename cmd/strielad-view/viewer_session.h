@@ -11,6 +11,7 @@
 #include "scene/scene.h"
 #include "serve/server.h"
 #include "view/advection_worker.h"
+#include "view/terrain_tiles.h"
 #include "view/track_window.h"
 #include "view/view_link.h"
 #include "viewer_args.h"
@@ -29,6 +30,8 @@ struct ViewerSession {
   std::string advection_status;
   // Flight tracks (--tracks), null when none.
   std::shared_ptr<const geo::FlightTracks> tracks;
+  // Terrain (--terrain), null when none; tiles load on its own thread.
+  std::unique_ptr<view::TerrainTiles> terrain;
 };
 
 // The tracks to draw at time step `step` plus `seconds_after` (null without --tracks).
@@ -40,6 +43,11 @@ std::shared_ptr<const view::TrackLines> tracks_at(const ViewerSession& session,
 // kIo when the server cannot be reached; with --advect, the errors of
 // view::AdvectionWorker (a store without wind, a wind level outside the octree).
 ViewerSession open_session(const ViewerArgs& args);
+
+// The scene file's geographic settings (format version 2: "terrain", "sun",
+// "trajectories") filled in where no flag gave them: flags win, paths are taken relative
+// to the scene file. Without a scene file, `args` unchanged. \error as load_scene_file.
+ViewerArgs with_scene_settings(ViewerArgs args);
 
 // The shader file's text. \error kNotFound / kIo naming the file.
 std::string read_text_file(const std::string& path);

@@ -301,6 +301,7 @@ int run_window(const ViewerArgs& args) {
       }
       inputs.tracks = tracks;
     }
+    if (args.sun_fixed_direction) inputs.sun_direction = *args.sun_fixed_direction;
     if (args.sun == "time") {
       const double after = seconds_after;
       if (const auto sun = view::sun_at_step(controller.link().placer().frame(), manifest,
@@ -308,6 +309,17 @@ int run_window(const ViewerArgs& args) {
         inputs.sun_direction = sun->direction;
         info.sun_elevation_deg = sun->position.elevation_deg;
       }
+    }
+    if (session.terrain) {
+      inputs.terrain = session.terrain->update(cam, controller.options().vertical_exaggeration,
+                                               height);
+      const auto t = session.terrain->status();
+      info.terrain = fmt::format("terrain: {} tiles, {} triangles; {} loaded ({:.1f} ms each), {} "
+                                 "pending, cache {:.0f} MiB{}",
+                                 t.selected, t.triangles, t.loads,
+                                 t.loads ? t.load_ms / double(t.loads) : 0.0, t.pending,
+                                 double(t.cache_bytes) / 1048576.0,
+                                 t.error.empty() ? "" : "; " + t.error);
     }
     info.step_seconds = playback ? playback->step_seconds() : 0;
     if (state.boxes) {

@@ -12,6 +12,11 @@ FrameInputs frame_inputs(const view::ViewController& controller, const lod::Came
   inputs.camera = camera;
   inputs.vertical_exaggeration = controller.options().vertical_exaggeration;
   inputs.mirrored = controller.link().placer().mirrored();
+  const Scene& scene = controller.scene();
+  if (!scene.slices.empty()) {
+    inputs.slice_styles =
+        slice_styles(scene, view::shown_slice_ranges(controller.meshes(), scene.slices.size()));
+  }
   return inputs;
 }
 
@@ -46,6 +51,13 @@ CompleteFrame render_complete_frame(view::ViewController& controller, VolumeRend
     }
   }
   renderer.meshes().sync(controller.meshes(), SIZE_MAX);
+  // Slices without a range span the values shown: now that every node has arrived.
+  if (!controller.scene().slices.empty()) {
+    inputs.slice_styles = slice_styles(
+        controller.scene(),
+        view::shown_slice_ranges(controller.meshes(), controller.scene().slices.size()));
+  }
+  frame.slice_styles = inputs.slice_styles;
   const auto t0 = clock::now();
   frame.stats = renderer.render(inputs, target.framebuffer(), target.width(), target.height());
   frame.image = RgbaImage{target.width(), target.height(),

@@ -29,6 +29,7 @@ struct CompleteFrame {
   double render_ms = 0;       // wall time of the last render, read-back included
   std::size_t cut_nodes = 0;
   std::size_t nodes_with_mesh = 0;
+  std::vector<SliceStyle> slice_styles;  // the slices' colour maps and ranges drawn
 };
 
 // \error kCancelled when the cut is not complete within the timeout; kIo when the

@@ -130,6 +130,40 @@ else
 fi
 kill -TERM "$serve_pid" 2>/dev/null; wait "$serve_pid" 2>/dev/null
 
+# A scene of format version 2 carries slices, the terrain, a fixed sun and flight tracks
+# (paths relative to the scene file): one command renders all of it.
+"$convert" sample -o "$work/geo" --dims 8x8x4 --steps 1 --vars ta --terrain 64 -q
+mkdir -p "$work/scenes"
+cat > "$work/scenes/figure.json" <<'JSON'
+{"format_version": 2,
+ "subvolumes": [{"id": 1, "limits": [{"var": "clw", "min": 1e-5}]}],
+ "slices": [{"id": 1, "axis": "lat", "value": 51.0, "var": "ta", "colormap": "coolwarm"},
+            {"id": 2, "axis": "height", "value": 3000.0, "var": "ua", "range": [-10.0, 10.0]}],
+ "terrain": {"dem": "../geo/sample_terrain.nc"},
+ "sun": {"elevation": 30.0, "azimuth": 135.0},
+ "trajectories": {"file": "../tracks.csv", "minutes": 2}}
+JSON
+if "$view" "$work/store" --offscreen --size 160x90 --threads 2 --scene "$work/scenes/figure.json" \
+    --out "$work/figure.png" --json >"$work/figure.json" 2>"$work/figure.err"; then
+  python3 - "$work/figure.json" <<'PY' || fail "figure: $(cat "$work/figure.json")"
+import json, sys
+d = json.loads(open(sys.argv[1]).readline())
+assert d["slice_triangles"] > 0, "no slice triangles"
+assert [s["id"] for s in d["slices"]] == [1, 2], d["slices"]
+assert d["slices"][1]["range"] == [-10.0, 10.0], d["slices"][1]
+assert d["slices"][0]["range"][0] < d["slices"][0]["range"][1], d["slices"][0]
+assert d["terrain_tiles"] > 0 and d["terrain_triangles"] > 0, "no terrain"
+assert d["tracks_shown"] == 2, d["tracks_shown"]
+assert d["sun_elevation_deg"] is None  # fixed by the scene, not the time
+PY
+  echo "ok: a version-2 scene with slices, terrain, sun and tracks"
+else
+  fail "figure scene"; cat "$work/figure.err"
+fi
+echo '{"format_version": 2, "subvolumes": [{"id": 1, "limits": [{"var": "clw", "min": 1e-5}]}],
+       "terrain": {"dem": "missing-dem.nc"}}' > "$work/scenes/missing.json"
+expect 3 "missing-dem.nc" -- "$work/store" --scene "$work/scenes/missing.json" --offscreen --out "$work/x.png"
+
 # The window: a few frames under Xvfb, then a screenshot.
 if command -v xvfb-run >/dev/null; then
   if xvfb-run -a -s "-screen 0 800x600x24" "$view" "$work/store" --size 640x400 --threads 2 \
