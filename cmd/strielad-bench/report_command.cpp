@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: Apache-2.0
+// strielad-bench report --out DIR [--quick] [--dims XxYxZ] [--suites io,extract,...]
+//                       [--work DIR]
+// Runs every suite as its own process (this binary), one after the other, each writing
+// its JSON, CSV and output into DIR, then writes DIR/BENCHMARKS.md with the charts.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <spdlog/spdlog.h>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <set>
+
+#include "bench/benchmark_report.h"
+#include "bench/process_runner.h"
+#include "commands.h"
+#include "core/error.h"
+
+namespace strielad::bench_cmd {
+namespace {
+
+struct ReportFlags {
+  std::string out = "bench/report";
+  std::string dims = "715x778x150";
+  std::string suites = "io,extract,latency,view,scene,advect,robustness";
+  std::string work = "/tmp/strielad-bench-report";
+  bool quick = false;
+  std::string command_line;
+};
+
+const std::set<std::string>& known_suites() {
+  static const std::set<std::string> s{"io",    "extract", "latency",   "view",
+                                       "scene", "advect",  "robustness"};
+  return s;
+}
+
+bool takes_dims(const std::string& suite) {
+  return suite == "io" || suite == "extract" || suite == "latency" || suite == "view" ||
+         suite == "scene";
+}
+
+bool takes_plot(const std::string& suite) { return suite == "extract" || suite == "advect"; }
+
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    if (comma > start) out.push_back(list.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return out;
+}
+
+int run(const ReportFlags& f) {
+  const auto suites = split(f.suites);
+  if (suites.empty()) throw make_error(ErrorCode::kInvalidArgument, "--suites: no suite named");
+  for (const auto& s : suites) {
+    if (!known_suites().count(s)) {
+      throw make_error(ErrorCode::kInvalidArgument, "--suites: unknown suite '{}' (known: {})", s,
+                       fmt::join(known_suites(), ", "));
+    }
+  }
+  const std::filesystem::path out = std::filesystem::absolute(f.out);
+  std::filesystem::create_directories(out);
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+  bench::ReportInput input;
+  input.command_line = f.command_line;
+  input.mode = f.quick ? "quick mode: small data, checks the harness, not the figures"
+                       : fmt::format("generated data {}", f.dims);
+  input.out = out;
+  for (const auto& suite : suites) {
+    bench::SuiteRun run;
+    run.suite = suite;
+    run.json = out / (suite + ".json");
+    run.csv = out / (suite + ".csv");
+    run.log = out / (suite + ".txt");
+    run.argv = {self, suite};
+    if (f.quick) run.argv.push_back("--quick");
+    else if (takes_dims(suite)) run.argv.insert(run.argv.end(), {"--dims", f.dims});
+    if (suite != "advect") {
+      run.argv.insert(run.argv.end(), {"--work", (std::filesystem::path(f.work) / suite).string()});
+    }
+    run.argv.insert(run.argv.end(), {"--json", run.json.string(), "--csv", run.csv.string()});
+    if (takes_plot(suite)) {
+      run.plot = out / (suite + ".png");
+      run.argv.insert(run.argv.end(), {"--plot", run.plot.string()});
+    }
+    std::filesystem::remove(run.json);
+    spdlog::info("report: running {}", bench::shell_command(run.argv));
+    const auto result = bench::run_process(run.argv, run.log);
+    run.exit_status = result.exit_status;
+    run.seconds = result.seconds;
+    if (result.exit_status != 0) run.output_tail = result.output_tail;
+    spdlog::info("report: {} exited {} after {:.1f} s", suite, run.exit_status, run.seconds);
+    input.runs.push_back(std::move(run));
+  }
+  const auto written = bench::write_benchmark_report(input);
+  std::cout << "report: " << written.markdown.string() << " (" << written.charts.size()
+            << " charts";
+  if (!written.chart_problems.empty()) {
+    std::cout << "; not drawn: " << fmt::format("{}", fmt::join(written.chart_problems, "; "));
+  }
+  std::cout << ")\n";
+  int failed = 0;
+  for (const auto& r : input.runs) failed += r.exit_status != 0;
+  if (failed) {
+    std::cerr << "strielad-bench report: " << failed << " suite(s) failed; see the report\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void register_report(CLI::App& app, cli::Action& action, std::string command_line) {
+  auto f = std::make_shared<ReportFlags>();
+  f->command_line = std::move(command_line);
+  auto* sub = app.add_subcommand(
+      "report",
+      "Runs every suite (each its own process) and writes one report: BENCHMARKS.md with the "
+      "machine, each suite's command, tables and charts, plus the suites' CSV and JSON");
+  sub->add_option("--out", f->out, "Folder of the report")->capture_default_str();
+  sub->add_option("--dims", f->dims,
+                  "Grid XxYxZ of the generated data for io, extract, latency, view and scene "
+                  "(default: a quarter of the paper's time step)")
+      ->capture_default_str();
+  sub->add_option("--suites", f->suites, "Comma-separated suites to run")->capture_default_str();
+  sub->add_option("--work", f->work, "Scratch folder; each suite gets its own below it")
+      ->capture_default_str();
+  sub->add_flag("--quick", f->quick, "Every suite in quick mode: seconds, checks the harness");
+  sub->callback([f, &action] { action = [f] { return run(*f); }; });
+}
+
+}  // namespace strielad::bench_cmd

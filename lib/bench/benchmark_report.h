@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: Apache-2.0
+// The one reproducible performance report (issue 7, strielad-bench report): the suites'
+// JSON reports, gathered after each ran as its own process, become one Markdown file
+// with the machine, every suite's command, status and tables, and the charts: throughput
+// against peers, the cut's arrival curves, error against run time, scene economy.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace strielad::bench {
+
+struct SuiteRun {
+  std::string suite;                // "io", "extract", ...
+  std::vector<std::string> argv;    // as run
+  int exit_status = -1;
+  double seconds = 0;
+  std::filesystem::path json, csv, log;  // what it wrote; log = its stdout and stderr
+  std::filesystem::path plot;      // the suite's own chart (--plot), if asked for
+  std::string output_tail;          // of a failed run
+};
+
+struct ReportInput {
+  std::vector<SuiteRun> runs;
+  std::string command_line;  // the report's own command
+  std::string mode;          // "quick" or the stated size
+  std::filesystem::path out; // folder of the report, its charts and the suites' files
+};
+
+struct ReportOutput {
+  std::filesystem::path markdown;
+  std::vector<std::filesystem::path> charts;  // written
+  std::vector<std::string> chart_problems;    // "chart: why not"
+};
+
+// Reads every run's JSON (a missing or unreadable one is reported in the Markdown, not
+// thrown), draws the charts and writes OUT/BENCHMARKS.md.
+// \error kIo when the Markdown cannot be written.
+ReportOutput write_benchmark_report(const ReportInput& input);
+
+}  // namespace strielad::bench

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# strielad-bench report --quick: runs the named suites as their own processes and writes
+# one BENCHMARKS.md with the machine, each suite's command, exit status and tables, and
+# the charts (when gnuplot is installed); an unknown suite is one clear error.
+# Usage: bench_report_quick_test.sh STRIELAD_CONVERT WORK_DIR (strielad-bench is found
+# next to strielad-convert in the build tree).
+set -uo pipefail
+convert=$1
+work=$2
+bench="$(dirname "$convert")/../strielad-bench/strielad-bench"
+rm -rf "$work" && mkdir -p "$work"
+failures=0
+# shellcheck source=../support/expect_cli_error.sh
+source "$(dirname "$0")/../support/expect_cli_error.sh"
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+expect_cli_error "$bench" "$work" 2 "unknown suite 'nope'" -- report --quick --suites io,nope \
+  --out "$work/bad"
+
+"$bench" report --quick --suites scene,advect --out "$work/report" --work "$work/scratch" \
+  >"$work/report.out" 2>"$work/report.err" || fail "report exited $?: $(tail -5 "$work/report.err")"
+md="$work/report/BENCHMARKS.md"
+[[ -s "$md" ]] || fail "no $md"
+for needle in "## Machine" "cores" "## scene" "## advect" "What a scene and a view read" \
+              "| scene | view | nodes |" "Fewest field evaluations" "report --quick"; do
+  grep -qF -- "$needle" "$md" || fail "BENCHMARKS.md lacks '$needle'"
+done
+for f in scene.json scene.csv scene.txt advect.json advect.csv advect.txt; do
+  [[ -s "$work/report/$f" ]] || fail "no $f"
+done
+if command -v gnuplot >/dev/null; then
+  for png in scene-economy.png advect.png; do
+    [[ -s "$work/report/$png" ]] || fail "no chart $png"
+    grep -qF "($png)" "$md" || fail "BENCHMARKS.md does not show $png"
+  done
+fi
+[[ $failures -eq 0 ]] && echo "bench report quick: ok"
+exit $((failures > 0))
