@@ -175,58 +175,47 @@ void validate(const GenerationStarted& m, const Rules& r) {
   r.text("scene_json", m.scene_json, kMaxSceneBytes);
 }
 
+// One list of a NodeResult (its sub-volume or slice results): at most `max_entries`,
+// ids in 1 ..= max_id and distinct, known outcomes, reasons within the text limit, and
+// triangles only with outcome kMesh. `id_of` gives an entry's id, `id_name` its field.
+template <typename Result, typename IdOf>
+void validate_results(const std::vector<Result>& results, std::string_view list,
+                      std::size_t max_entries, std::uint32_t max_id, std::string_view id_name,
+                      IdOf id_of, const Rules& r) {
+  if (results.size() > max_entries) {
+    throw r.fail(std::string(list), "{} entries, over the limit of {}", results.size(),
+                 max_entries);
+  }
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const Result& s = results[i];
+    const std::string field = fmt::format("{}[{}]", list, i);
+    const std::string id_field = fmt::format("{}.{}", field, id_name);
+    if (id_of(s) == 0 || id_of(s) > max_id) {
+      throw r.fail(id_field, "{} is outside 1 ..= {}", id_of(s), max_id);
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (id_of(results[j]) == id_of(s)) {
+        throw r.fail(id_field, "{} is also at {}[{}]", id_of(s), list, j);
+      }
+    }
+    if (s.outcome > kLastOutcome) {
+      throw r.fail(field + ".outcome", "{} is not an outcome (0..4)",
+                   static_cast<unsigned>(s.outcome));
+    }
+    r.text(field + ".reason", s.reason, kMaxMessageTextBytes);
+    if (s.outcome != NodeOutcome::kMesh && !s.mesh.triangles.empty()) {
+      throw r.fail(field + ".mesh", "{} triangles with outcome {}", s.mesh.triangles.size(),
+                   node_outcome_name(s.outcome));
+    }
+  }
+}
+
 // The mesh itself is checked by encode_mesh / decode_mesh.
 void validate(const NodeResult& m, const Rules& r) {
-  if (m.subvolumes.size() > kMaxSubVolumes) {
-    throw r.fail("subvolumes", "{} entries, over the limit of {}", m.subvolumes.size(),
-                 kMaxSubVolumes);
-  }
-  for (std::size_t i = 0; i < m.subvolumes.size(); ++i) {
-    const SubVolumeResultWire& s = m.subvolumes[i];
-    const std::string field = fmt::format("subvolumes[{}]", i);
-    if (s.subvolume_id == 0 || s.subvolume_id > kMaxSubVolumeId) {
-      throw r.fail(field + ".subvolume_id", "{} is outside 1 ..= {}", s.subvolume_id,
-                   kMaxSubVolumeId);
-    }
-    for (std::size_t j = 0; j < i; ++j) {
-      if (m.subvolumes[j].subvolume_id == s.subvolume_id) {
-        throw r.fail(field + ".subvolume_id", "{} is also at subvolumes[{}]", s.subvolume_id, j);
-      }
-    }
-    if (s.outcome > kLastOutcome) {
-      throw r.fail(field + ".outcome", "{} is not an outcome (0..4)",
-                   static_cast<unsigned>(s.outcome));
-    }
-    r.text(field + ".reason", s.reason, kMaxMessageTextBytes);
-    if (s.outcome != NodeOutcome::kMesh && !s.mesh.triangles.empty()) {
-      throw r.fail(field + ".mesh", "{} triangles with outcome {}", s.mesh.triangles.size(),
-                   node_outcome_name(s.outcome));
-    }
-  }
-  if (m.slices.size() > kMaxSliceResults) {
-    throw r.fail("slices", "{} entries, over the limit of {}", m.slices.size(), kMaxSliceResults);
-  }
-  for (std::size_t i = 0; i < m.slices.size(); ++i) {
-    const SliceResultWire& s = m.slices[i];
-    const std::string field = fmt::format("slices[{}]", i);
-    if (s.slice_id == 0 || s.slice_id > kMaxSliceId) {
-      throw r.fail(field + ".slice_id", "{} is outside 1 ..= {}", s.slice_id, kMaxSliceId);
-    }
-    for (std::size_t j = 0; j < i; ++j) {
-      if (m.slices[j].slice_id == s.slice_id) {
-        throw r.fail(field + ".slice_id", "{} is also at slices[{}]", s.slice_id, j);
-      }
-    }
-    if (s.outcome > kLastOutcome) {
-      throw r.fail(field + ".outcome", "{} is not an outcome (0..4)",
-                   static_cast<unsigned>(s.outcome));
-    }
-    r.text(field + ".reason", s.reason, kMaxMessageTextBytes);
-    if (s.outcome != NodeOutcome::kMesh && !s.mesh.triangles.empty()) {
-      throw r.fail(field + ".mesh", "{} triangles with outcome {}", s.mesh.triangles.size(),
-                   node_outcome_name(s.outcome));
-    }
-  }
+  validate_results(m.subvolumes, "subvolumes", kMaxSubVolumes, kMaxSubVolumeId, "subvolume_id",
+                   [](const SubVolumeResultWire& s) { return s.subvolume_id; }, r);
+  validate_results(m.slices, "slices", kMaxSliceResults, kMaxSliceId, "slice_id",
+                   [](const SliceResultWire& s) { return s.slice_id; }, r);
 }
 
 void validate(const NodeFailed& m, const Rules& r) {

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string_view>
 
 #include "core/error.h"
 
@@ -30,6 +31,52 @@ GeometryPlacer::GeometryPlacer(const format::Manifest& manifest)
   mirrored_ = (negative % 2) == 1;
 }
 
+namespace {
+
+// Places vertex v of `mesh` in the world frame: its position into position[0..2] and
+// its normal (the inverse transpose of the diagonal axis-to-world Jacobian: divided by
+// the slopes, renormalized; straight up if it vanishes) into normal[0..2].
+// \error kInvalidInput naming the node and `what` for a vertex without a world position.
+void place_vertex(const lod::WorldFrame& frame, const Mesh& mesh, std::size_t v, NodeId node,
+                  std::string_view what, float* position, float* normal_out) {
+  const auto& p = mesh.positions[v];
+  lod::Vec3 normal{0, 0, 0};
+  for (int axis = 0; axis < 3; ++axis) {
+    const double world = frame.axis_to_world(axis, p[axis]);
+    if (!std::isfinite(world)) {
+      throw make_error(ErrorCode::kInvalidInput, "node {}: {} {}: vertex {} has no world position",
+                       node, what, mesh.subvolume_id, v);
+    }
+    position[axis] = static_cast<float>(world);
+    normal[axis] = mesh.normals[v][axis] / axis_slope(frame, axis, p[axis]);
+  }
+  const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] +
+                                  normal[2] * normal[2]);
+  for (int axis = 0; axis < 3; ++axis) {
+    normal_out[axis] = length > 0 ? static_cast<float>(normal[axis] / length)
+                                  : (axis == 2 ? 1.0f : 0.0f);
+  }
+}
+
+// Appends the mesh's triangles, their indices offset by `first`.
+// \error kInvalidInput naming the node and `what` for an index out of range.
+void append_triangles(const Mesh& mesh, std::size_t first, NodeId node, std::string_view what,
+                      std::vector<std::uint32_t>& indices) {
+  const std::size_t n = mesh.vertex_count();
+  indices.reserve(indices.size() + mesh.triangle_count() * 3);
+  for (const auto& t : mesh.triangles) {
+    for (const auto index : t) {
+      if (index >= n) {
+        throw make_error(ErrorCode::kInvalidInput, "node {}: {} {}: index {} >= vertex count {}",
+                         node, what, mesh.subvolume_id, index, n);
+      }
+      indices.push_back(static_cast<std::uint32_t>(first + index));
+    }
+  }
+}
+
+}  // namespace
+
 void GeometryPlacer::append_slice(const Mesh& mesh, std::uint32_t slot, NodeGeometry& out) const {
   const std::size_t first = out.slice_vertex_count();
   const std::size_t n = mesh.vertex_count();
@@ -45,37 +92,12 @@ void GeometryPlacer::append_slice(const Mesh& mesh, std::uint32_t slot, NodeGeom
   out.slice_vertices.resize((first + n) * kSliceVertexFloats);
   for (std::size_t v = 0; v < n; ++v) {
     float* dst = out.slice_vertices.data() + (first + v) * kSliceVertexFloats;
-    const auto& p = mesh.positions[v];
-    lod::Vec3 normal{0, 0, 0};
-    for (int axis = 0; axis < 3; ++axis) {
-      const double world = frame_.axis_to_world(axis, p[axis]);
-      if (!std::isfinite(world)) {
-        throw make_error(ErrorCode::kInvalidInput,
-                         "node {}: slice {}: vertex {} has no world position", out.node,
-                         mesh.subvolume_id, v);
-      }
-      dst[kSliceVertexPosition + axis] = static_cast<float>(world);
-      normal[axis] = mesh.normals[v][axis] / axis_slope(frame_, axis, p[axis]);
-    }
-    const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] +
-                                    normal[2] * normal[2]);
-    for (int axis = 0; axis < 3; ++axis) {
-      dst[kSliceVertexNormal + axis] = length > 0 ? static_cast<float>(normal[axis] / length)
-                                                  : (axis == 2 ? 1.0f : 0.0f);
-    }
+    place_vertex(frame_, mesh, v, out.node, "slice", dst + kSliceVertexPosition,
+                 dst + kSliceVertexNormal);
     dst[kSliceVertexValue] = mesh.attributes[0][v];
     dst[kSliceVertexSlot] = static_cast<float>(slot);
   }
-  out.slice_indices.reserve(out.slice_indices.size() + mesh.triangle_count() * 3);
-  for (const auto& t : mesh.triangles) {
-    for (const auto index : t) {
-      if (index >= n) {
-        throw make_error(ErrorCode::kInvalidInput, "node {}: slice {}: index {} >= vertex count {}",
-                         out.node, mesh.subvolume_id, index, n);
-      }
-      out.slice_indices.push_back(static_cast<std::uint32_t>(first + index));
-    }
-  }
+  append_triangles(mesh, first, out.node, "slice", out.slice_indices);
 }
 
 void GeometryPlacer::append_mesh(const Mesh& mesh, std::uint32_t slot, NodeGeometry& out) const {
@@ -88,42 +110,15 @@ void GeometryPlacer::append_mesh(const Mesh& mesh, std::uint32_t slot, NodeGeome
   out.vertices.resize((first + n) * kVertexFloats);
   for (std::size_t v = 0; v < n; ++v) {
     float* dst = out.vertices.data() + (first + v) * kVertexFloats;
-    const auto& p = mesh.positions[v];
-    lod::Vec3 normal{0, 0, 0};
-    for (int axis = 0; axis < 3; ++axis) {
-      const double world = frame_.axis_to_world(axis, p[axis]);
-      if (!std::isfinite(world)) {
-        throw make_error(ErrorCode::kInvalidInput,
-                         "node {}: sub-volume {}: vertex {} has no world position", out.node,
-                         mesh.subvolume_id, v);
-      }
-      dst[kVertexPosition + axis] = static_cast<float>(world);
-      // Inverse transpose of a diagonal Jacobian: divide by the slope.
-      normal[axis] = mesh.normals[v][axis] / axis_slope(frame_, axis, p[axis]);
-    }
-    const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] +
-                                    normal[2] * normal[2]);
-    for (int axis = 0; axis < 3; ++axis) {
-      dst[kVertexNormal + axis] = length > 0 ? static_cast<float>(normal[axis] / length)
-                                             : (axis == 2 ? 1.0f : 0.0f);
-    }
+    place_vertex(frame_, mesh, v, out.node, "sub-volume", dst + kVertexPosition,
+                 dst + kVertexNormal);
     dst[kVertexSlot] = static_cast<float>(slot);
     for (std::size_t a = 0; a < kViewAttributeSlots; ++a) {
       dst[kVertexAttributes + a] = a < attributes ? mesh.attributes[a][v]
                                                   : std::numeric_limits<float>::quiet_NaN();
     }
   }
-  out.indices.reserve(out.indices.size() + mesh.triangle_count() * 3);
-  for (const auto& t : mesh.triangles) {
-    for (const auto index : t) {
-      if (index >= n) {
-        throw make_error(ErrorCode::kInvalidInput,
-                         "node {}: sub-volume {}: index {} >= vertex count {}", out.node,
-                         mesh.subvolume_id, index, n);
-      }
-      out.indices.push_back(static_cast<std::uint32_t>(first + index));
-    }
-  }
+  append_triangles(mesh, first, out.node, "sub-volume", out.indices);
 }
 
 }  // namespace strielad::view
