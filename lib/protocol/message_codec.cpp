@@ -474,6 +474,24 @@ GenerationStarted read_generation_started(PayloadReader& p) {
   return m;
 }
 
+// One entry of a NodeResult list (a sub-volume or a slice result): id, outcome, reason
+// and, for outcome kMesh, the mesh decoded in `role`, carrying the entry's id.
+template <typename Result>
+void read_result(PayloadReader& p, const std::string& field, std::string_view id_name,
+                 MeshRole role, std::uint32_t& id, Result& s) {
+  id = p.in().u32(fmt::format("{}.{}", field, id_name));
+  const std::uint8_t outcome = p.in().u8(field + ".outcome");
+  if (outcome > static_cast<std::uint8_t>(kLastOutcome)) {
+    throw p.rules().fail(field + ".outcome", "{} is not an outcome (0..4)", outcome);
+  }
+  s.outcome = static_cast<NodeOutcome>(outcome);
+  s.reason = p.str16(field + ".reason", kMaxMessageTextBytes);
+  if (s.outcome == NodeOutcome::kMesh) {
+    s.mesh = decode_mesh(p.in(), fmt::format("{}: {}.mesh", p.rules().what, field), role);
+    s.mesh.subvolume_id = id;
+  }
+}
+
 NodeResult read_node_result(PayloadReader& p, std::uint16_t flags) {
   NodeResult m;
   m.generation = p.in().u32("generation");
@@ -481,18 +499,8 @@ NodeResult read_node_result(PayloadReader& p, std::uint16_t flags) {
   m.subvolumes.resize(p.count("subvolumes", kMaxSubVolumes, kMinSubVolumeBytes));
   for (std::size_t i = 0; i < m.subvolumes.size(); ++i) {
     SubVolumeResultWire& s = m.subvolumes[i];
-    const std::string field = fmt::format("subvolumes[{}]", i);
-    s.subvolume_id = p.in().u32(field + ".subvolume_id");
-    const std::uint8_t outcome = p.in().u8(field + ".outcome");
-    if (outcome > static_cast<std::uint8_t>(kLastOutcome)) {
-      throw p.rules().fail(field + ".outcome", "{} is not an outcome (0..4)", outcome);
-    }
-    s.outcome = static_cast<NodeOutcome>(outcome);
-    s.reason = p.str16(field + ".reason", kMaxMessageTextBytes);
-    if (s.outcome == NodeOutcome::kMesh) {
-      s.mesh = decode_mesh(p.in(), fmt::format("{}: {}.mesh", p.rules().what, field));
-      s.mesh.subvolume_id = s.subvolume_id;
-    }
+    read_result(p, fmt::format("subvolumes[{}]", i), "subvolume_id", MeshRole::kSubVolume,
+                s.subvolume_id, s);
   }
   if ((flags & kFrameFlagSlices) == 0) return m;
   const std::uint32_t slices = p.count("slices", kMaxSliceResults, kMinSubVolumeBytes);
@@ -502,19 +510,7 @@ NodeResult read_node_result(PayloadReader& p, std::uint16_t flags) {
   m.slices.resize(slices);
   for (std::size_t i = 0; i < m.slices.size(); ++i) {
     SliceResultWire& s = m.slices[i];
-    const std::string field = fmt::format("slices[{}]", i);
-    s.slice_id = p.in().u32(field + ".slice_id");
-    const std::uint8_t outcome = p.in().u8(field + ".outcome");
-    if (outcome > static_cast<std::uint8_t>(kLastOutcome)) {
-      throw p.rules().fail(field + ".outcome", "{} is not an outcome (0..4)", outcome);
-    }
-    s.outcome = static_cast<NodeOutcome>(outcome);
-    s.reason = p.str16(field + ".reason", kMaxMessageTextBytes);
-    if (s.outcome == NodeOutcome::kMesh) {
-      s.mesh = decode_mesh(p.in(), fmt::format("{}: {}.mesh", p.rules().what, field),
-                           MeshRole::kSlice);
-      s.mesh.subvolume_id = s.slice_id;
-    }
+    read_result(p, fmt::format("slices[{}]", i), "slice_id", MeshRole::kSlice, s.slice_id, s);
   }
   return m;
 }

@@ -21,6 +21,14 @@ void storage(const GlBuffer& buffer, std::size_t bytes, const void* data) {
 
 std::size_t gpu_bytes(const GpuMesh& m) { return m.source ? geometry_bytes(*m.source) : 0; }
 
+// Vertex attribute `location` of `vao`: `size` floats at float `offset` of binding 0.
+void float_attribute(GLuint vao, GLuint location, GLint size, std::size_t offset) {
+  glEnableVertexArrayAttrib(vao, location);
+  glVertexArrayAttribFormat(vao, location, size, GL_FLOAT, GL_FALSE,
+                            static_cast<GLuint>(offset * sizeof(float)));
+  glVertexArrayAttribBinding(vao, location, 0);
+}
+
 }  // namespace
 
 std::size_t GpuMeshes::sync(const view::ProgressiveMeshes& meshes, std::size_t max_upload_bytes) {
@@ -66,17 +74,11 @@ void GpuMeshes::upload(NodeId node, std::shared_ptr<const view::NodeGeometry> ge
   glVertexArrayVertexBuffer(vao, 0, mesh.vertices.get(), 0,
                             static_cast<GLsizei>(view::kVertexFloats * sizeof(float)));
   glVertexArrayElementBuffer(vao, mesh.indices.get());
-  const auto attribute = [&](GLuint location, GLint size, std::size_t offset) {
-    glEnableVertexArrayAttrib(vao, location);
-    glVertexArrayAttribFormat(vao, location, size, GL_FLOAT, GL_FALSE,
-                              static_cast<GLuint>(offset * sizeof(float)));
-    glVertexArrayAttribBinding(vao, location, 0);
-  };
-  attribute(0, 3, view::kVertexPosition);
-  attribute(1, 3, view::kVertexNormal);
-  attribute(2, 1, view::kVertexSlot);
-  attribute(3, 4, view::kVertexAttributes);
-  attribute(4, 4, view::kVertexAttributes + 4);
+  float_attribute(vao, 0, 3, view::kVertexPosition);
+  float_attribute(vao, 1, 3, view::kVertexNormal);
+  float_attribute(vao, 2, 1, view::kVertexSlot);
+  float_attribute(vao, 3, 4, view::kVertexAttributes);
+  float_attribute(vao, 4, 4, view::kVertexAttributes + 4);
   mesh.index_count = static_cast<GLsizei>(g.indices.size());
   std::array<float, 3> lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
                           std::numeric_limits<float>::max()};
@@ -105,16 +107,10 @@ void GpuMeshes::upload(NodeId node, std::shared_ptr<const view::NodeGeometry> ge
     glVertexArrayVertexBuffer(svao, 0, mesh.slice_vertices.get(), 0,
                               static_cast<GLsizei>(view::kSliceVertexFloats * sizeof(float)));
     glVertexArrayElementBuffer(svao, mesh.slice_indices.get());
-    const auto slice_attribute = [&](GLuint location, GLint size, std::size_t offset) {
-      glEnableVertexArrayAttrib(svao, location);
-      glVertexArrayAttribFormat(svao, location, size, GL_FLOAT, GL_FALSE,
-                                static_cast<GLuint>(offset * sizeof(float)));
-      glVertexArrayAttribBinding(svao, location, 0);
-    };
-    slice_attribute(0, 3, view::kSliceVertexPosition);
-    slice_attribute(1, 3, view::kSliceVertexNormal);
-    slice_attribute(2, 1, view::kSliceVertexValue);
-    slice_attribute(3, 1, view::kSliceVertexSlot);
+    float_attribute(svao, 0, 3, view::kSliceVertexPosition);
+    float_attribute(svao, 1, 3, view::kSliceVertexNormal);
+    float_attribute(svao, 2, 1, view::kSliceVertexValue);
+    float_attribute(svao, 3, 1, view::kSliceVertexSlot);
     mesh.slice_index_count = static_cast<GLsizei>(g.slice_indices.size());
   }
   mesh.source = std::move(geometry);
