@@ -23,15 +23,15 @@ namespace {
 struct ReportFlags {
   std::string out = "bench/report";
   std::string dims = "715x778x150";
-  std::string suites = "io,extract,latency,view,scene,advect,robustness";
+  std::string suites = "io,extract,latency,view,scene,scaling,advect,robustness";
   std::string work = "/tmp/strielad-bench-report";
   bool quick = false;
   std::string command_line;
 };
 
 const std::set<std::string>& known_suites() {
-  static const std::set<std::string> s{"io",    "extract", "latency",   "view",
-                                       "scene", "advect",  "robustness"};
+  static const std::set<std::string> s{"io",      "extract", "latency", "view",
+                                       "scene",   "scaling", "advect",  "robustness"};
   return s;
 }
 

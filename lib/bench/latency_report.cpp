@@ -208,6 +208,15 @@ nlohmann::json latency_report_json(const LatencySuiteReport& r, const std::vecto
       {"convert_seconds", r.convert_seconds},
       {"targets", targets_json(r.targets)},
   };
+  // Every round's raw arrival times, for the report's arrival curves (CDFs).
+  j["arrivals"] = nlohmann::json::array();
+  for (const auto& p : r.phases) {
+    nlohmann::json rounds = nlohmann::json::array();
+    for (const auto& round : p.rounds) {
+      rounds.push_back({{"cut", round.nodes}, {"complete", round.complete}, {"seconds", round.arrivals}});
+    }
+    j["arrivals"].push_back({{"phase", p.phase}, {"prefetch", p.prefetch}, {"rounds", rounds}});
+  }
   nlohmann::json t = nlohmann::json::object();
   for (const auto& table : tables) t[table.name] = table_json(table);
   j["tables"] = t;

@@ -62,6 +62,7 @@ CutLatency cut_latency(const CutClient& c, bool complete) {
   l.all = complete ? at(1.0) : -1.0;
   l.meshes = c.generation_counters().meshes;
   l.skipped = c.generation_counters().skipped;
+  l.arrivals = std::move(t);
   return l;
 }
 

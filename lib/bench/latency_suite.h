@@ -64,6 +64,7 @@ struct CutLatency {
   double first = 0, p50 = 0, p90 = 0, all = 0;
   bool complete = false;  // every node answered before the timeout
   std::uint64_t meshes = 0, skipped = 0;
+  std::vector<double> arrivals;  // seconds of every answer of a node in the cut, sorted
 };
 
 struct PhaseLatency {

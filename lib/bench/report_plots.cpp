@@ -21,11 +21,24 @@ std::string quoted(const std::string& text) {
   return out + "'";
 }
 
+// Gnuplot double-quoted strings: backslash escapes, so '\n' breaks the line.
+std::string double_quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '\n') out += "\\n";
+    else if (c == '"' || c == '\\') out += std::string("\\") + c;
+    else out += c;
+  }
+  return out + "\"";
+}
+
 std::string header(const std::filesystem::path& png, const ChartAxes& axes, int width) {
   std::ostringstream gp;
+  // About 7 px per character at 10 pt; the title wraps rather than being cut off.
+  const std::size_t title_chars = static_cast<std::size_t>(std::max(40, width / 7 - 4));
   gp << "set terminal pngcairo noenhanced size " << width << ",480 font 'sans,10'\n"
      << "set output " << quoted(png.filename().string()) << "\n"
-     << "set title " << quoted(axes.title) << "\n"
+     << "set title " << double_quoted(wrap_title(axes.title, title_chars)) << "\n"
      << "set xlabel " << quoted(axes.x_label) << "\n"
      << "set ylabel " << quoted(axes.y_label) << "\n"
      << "set grid ytics\n";
@@ -68,7 +81,7 @@ std::string bar_chart(const std::filesystem::path& png, const ChartAxes& axes,
 }
 
 std::string line_chart(const std::filesystem::path& png, const ChartAxes& axes,
-                       const std::vector<ChartSeries>& series) {
+                       const std::vector<ChartSeries>& series, bool points) {
   std::ostringstream dat;
   std::vector<std::string> plots;
   int block = 0;
@@ -83,8 +96,9 @@ std::string line_chart(const std::filesystem::path& png, const ChartAxes& axes,
     }
     if (!any) continue;
     dat << "\n\n";
-    plots.push_back(fmt::format("{} index {} using 1:2 with linespoints lw 2 title {}",
-                                quoted(dat_path.filename().string()), block++, quoted(s.name)));
+    plots.push_back(fmt::format("{} index {} using 1:2 with {} lw 2 title {}",
+                                quoted(dat_path.filename().string()), block++,
+                                points ? "linespoints" : "lines", quoted(s.name)));
   }
   if (plots.empty()) return "no data";
   write_text_file(dat_path, dat.str());
@@ -94,6 +108,21 @@ std::string line_chart(const std::filesystem::path& png, const ChartAxes& axes,
   const auto gp_path = with_extension(png, ".gp");
   write_text_file(gp_path, gp.str());
   return run_gnuplot(gp_path, png);
+}
+
+std::string wrap_title(const std::string& title, std::size_t width) {
+  std::string out, line;
+  std::istringstream words(title);
+  std::string word;
+  while (words >> word) {
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      out += (out.empty() ? "" : "\n") + line;
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  if (!line.empty()) out += (out.empty() ? "" : "\n") + line;
+  return out;
 }
 
 }  // namespace strielad::bench

@@ -24,8 +24,13 @@ struct ChartSeries {
   std::vector<double> x, y;
 };
 
-// Lines with points, one per series.
+// One line per series, with a mark at every point when `points` (dense curves leave
+// them out).
 std::string line_chart(const std::filesystem::path& png, const ChartAxes& axes,
-                       const std::vector<ChartSeries>& series);
+                       const std::vector<ChartSeries>& series, bool points = true);
+
+// A chart title broken into lines of at most `width` characters at spaces (a longer word
+// stays whole), joined with '\n'.
+std::string wrap_title(const std::string& title, std::size_t width);
 
 }  // namespace strielad::bench

@@ -7,18 +7,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <set>
 
 #include "bench/machine_info.h"
+#include "bench/node_batch.h"
 #include "bench/sample_input.h"
 #include "core/error.h"
-#include "extract/node_extraction.h"
 #include "lod/camera.h"
 #include "lod/lod_cut.h"
 #include "lod/world_frame.h"
 #include "scene/scene.h"
-#include "serve/node_executor.h"
-#include "store/brick_cache.h"
 #include "store/store.h"
 
 namespace strielad::bench {
@@ -29,11 +26,6 @@ using Seconds = std::chrono::duration<double>;
 struct NamedScene {
   std::string name;
   std::string json;
-};
-
-struct NamedCamera {
-  std::string name;
-  lod::Camera camera;
 };
 
 std::pair<double, double> axis_range(const Axis& axis) {
@@ -61,6 +53,8 @@ std::vector<NamedScene> typical_scenes(const format::Manifest& m) {
 
 // An overview of the whole domain, a low oblique view over its centre, and a close view
 // straight down on a point off the centre.
+}  // namespace
+
 std::vector<NamedCamera> typical_cameras(const lod::WorldFrame& frame, double aspect) {
   const lod::WorldBox& d = frame.domain();
   const lod::Vec3 size = lod::sub(d.hi, d.lo);
@@ -83,43 +77,29 @@ std::vector<NamedCamera> typical_cameras(const lod::WorldFrame& frame, double as
   };
 }
 
+std::vector<NodeId> cut_nodes(const Store& store, const lod::WorldFrame& frame,
+                              const lod::Camera& camera) {
+  lod::LodCut cut(store.octree(), lod::node_world_boxes(store.octree(), frame));
+  cut.update(camera);
+  std::vector<NodeId> nodes;
+  for (const auto& p : cut.nodes()) nodes.push_back(p.node);
+  return nodes;
+}
+
+namespace {
+
 SceneCost extract_nodes(const std::filesystem::path& store_dir, const Scene& scene,
                         const std::vector<NodeId>& nodes) {
-  const auto store = Store::open(store_dir);  // fresh: its counters and index start empty
-  auto resolved = std::make_shared<const ResolvedScene>(
-      resolve_scene(scene, store->manifest(), "scene"));
-  BrickCache cache(std::uint64_t{8} << 30);
+  const NodeBatchCost batch = run_node_batch(store_dir, scene, nodes, 1);
   SceneCost cost;
-  cost.nodes = nodes.size();
-  std::set<std::uint32_t> variables;
-  const auto t0 = std::chrono::steady_clock::now();
-  for (const NodeId node : nodes) {
-    serve::NodeTask task;
-    task.store = store;
-    task.scene = resolved;
-    task.generation = 1;
-    task.node = node;
-    const serve::NodeOutput out = serve::run_node_task(task, cache);
-    switch (out.kind) {
-      case serve::NodeOutputKind::kMesh:
-      case serve::NodeOutputKind::kEmpty:
-        ++cost.extracted;
-        for (const auto v : node_brick_variables(*store, *resolved, resolved->time, node)) {
-          variables.insert(v);
-        }
-        break;
-      case serve::NodeOutputKind::kSkipped: ++cost.skipped; break;
-      case serve::NodeOutputKind::kFailed:
-        throw make_error(ErrorCode::kInternal, "scene economy: node {} failed", node);
-      case serve::NodeOutputKind::kCancelled: break;
-    }
-    cost.bytes_sent += out.frame.size();
-  }
-  cost.seconds = Seconds(std::chrono::steady_clock::now() - t0).count();
-  const StoreReadCounters c = store->counters();
-  cost.bricks = c.chunks_read;
-  cost.bytes_read = c.chunk_bytes + c.index_bytes;
-  cost.variables_read = variables.size();
+  cost.nodes = batch.nodes;
+  cost.extracted = batch.extracted;
+  cost.skipped = batch.skipped;
+  cost.bricks = batch.bricks;
+  cost.bytes_read = batch.bytes_read;
+  cost.bytes_sent = batch.bytes_sent;
+  cost.variables_read = batch.variables_read;
+  cost.seconds = batch.seconds;
   return cost;
 }
 
@@ -136,12 +116,6 @@ SceneCost whole_step(const Store& store, std::uint32_t step) {
   cost.variables_read = store.variable_count();
   cost.bytes_read = std::filesystem::file_size(store.step_path(step));
   return cost;
-}
-
-std::vector<NodeId> leaves(const OctreeLayout& layout) {
-  std::vector<NodeId> ids(layout.level(0).node_count());
-  for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<NodeId>(i);
-  return ids;
 }
 
 double ratio(double part, double whole) { return whole > 0 ? part / whole : 0; }
@@ -165,16 +139,12 @@ SceneEconomyReport run_scene_economy(const SceneEconomyOptions& o) {
   const lod::WorldFrame frame(store->manifest());
   report.step_file_bytes = std::filesystem::file_size(store->step_path(0));
   const SceneCost step = whole_step(*store, 0);
-  const auto all_leaves = leaves(store->octree());
+  const auto all_leaves = level_nodes(store->octree(), 0);
   for (const NamedScene& named : typical_scenes(store->manifest())) {
     const Scene scene = parse_scene(named.json, named.name);
     report.scene_json.push_back(scene_to_json(scene));
     for (const NamedCamera& camera : typical_cameras(frame, o.aspect)) {
-      lod::LodCut cut(store->octree(), lod::node_world_boxes(store->octree(), frame));
-      cut.update(camera.camera);
-      std::vector<NodeId> nodes;
-      for (const auto& p : cut.nodes()) nodes.push_back(p.node);
-      SceneCost cost = extract_nodes(store_dir, scene, nodes);
+      SceneCost cost = extract_nodes(store_dir, scene, cut_nodes(*store, frame, camera.camera));
       cost.scene = named.name;
       cost.view = camera.name;
       report.costs.push_back(cost);

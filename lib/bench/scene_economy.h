@@ -21,6 +21,13 @@
 #include "bench/table_writer.h"
 #include "build/converter.h"
 #include "grid/axis.h"
+#include "lod/camera.h"
+#include "lod/world_frame.h"
+#include "octree/octree_layout.h"
+
+namespace strielad {
+class Store;
+}
 
 namespace strielad::bench {
 
@@ -34,6 +41,18 @@ struct SceneEconomyOptions {
   double aspect = 16.0 / 9.0;
   std::string command_line;
 };
+
+// The views the suite measures: an overview of the whole domain, a low oblique view over
+// its centre, and a close view straight down on a point off the centre.
+struct NamedCamera {
+  std::string name;
+  lod::Camera camera;
+};
+std::vector<NamedCamera> typical_cameras(const lod::WorldFrame& frame, double aspect);
+
+// The nodes of the viewer's level-of-detail cut (lib/lod, default options) for a camera.
+std::vector<NodeId> cut_nodes(const Store& store, const lod::WorldFrame& frame,
+                              const lod::Camera& camera);
 
 // A small grid: seconds, for CI (checks the harness).
 SceneEconomyOptions quick_scene_economy_options(SceneEconomyOptions base);

@@ -66,7 +66,12 @@ std::filesystem::path find_serve_binary() {
 }
 
 BenchServer::BenchServer(const std::filesystem::path& binary, const serve::ServerConfig& config,
-                         const std::filesystem::path& log) {
+                         const std::filesystem::path& log,
+                         const std::vector<std::string>& launcher) {
+  if (binary.empty() && !launcher.empty()) {
+    throw make_error(ErrorCode::kInvalidArgument, "a launcher ({}) needs a server binary",
+                     launcher.front());
+  }
   if (binary.empty()) {
     serve::ServerConfig c = config;
     c.listen = net::Endpoint{"127.0.0.1", 0};
@@ -75,10 +80,11 @@ BenchServer::BenchServer(const std::filesystem::path& binary, const serve::Serve
     port_ = server_->port();
     return;
   }
-  std::vector<std::string> argv{binary.string(), "--root", config.root.string(), "--listen",
+  std::vector<std::string> argv = launcher;
+  argv.insert(argv.end(), {binary.string(), "--root", config.root.string(), "--listen",
                                 "127.0.0.1:0", "--json", "--threads", std::to_string(config.threads),
                                 "--cache-mib", std::to_string(config.cache_bytes >> 20),
-                                "--max-clients", std::to_string(config.max_clients), "-q"};
+                                "--max-clients", std::to_string(config.max_clients), "-q"});
   if (!config.prefetch) argv.push_back("--no-prefetch");
   std::vector<char*> args;
   for (auto& a : argv) args.push_back(a.data());
@@ -96,7 +102,7 @@ BenchServer::BenchServer(const std::filesystem::path& binary, const serve::Serve
   if (rc != 0) {
     ::close(out[0]);
     pid_ = -1;
-    throw make_error(ErrorCode::kIo, "cannot start {}: {}", binary.string(), std::strerror(rc));
+    throw make_error(ErrorCode::kIo, "cannot start {}: {}", argv.front(), std::strerror(rc));
   }
   const std::string line = read_first_line(out[0], std::chrono::seconds(30));
   ::close(out[0]);

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "serve/server_config.h"
 
@@ -27,10 +28,12 @@ struct ServerMemory {
 class BenchServer {
  public:
   // Starts the server on 127.0.0.1 with an ephemeral port. `binary` empty: in-process.
-  // Child output goes to `log`. \error kIo when the child cannot start or does not
-  // report its port within 30 s; the Server's errors in-process.
+  // `launcher`, when given, is put before the child's command line (mpirun and its
+  // flags: the server then runs on several ranks). Child output goes to `log`.
+  // \error kIo when the child cannot start or does not report its port within 30 s;
+  // kInvalidArgument for a launcher without a binary; the Server's errors in-process.
   BenchServer(const std::filesystem::path& binary, const serve::ServerConfig& config,
-              const std::filesystem::path& log);
+              const std::filesystem::path& log, const std::vector<std::string>& launcher = {});
   ~BenchServer();  // stop()
   BenchServer(const BenchServer&) = delete;
   BenchServer& operator=(const BenchServer&) = delete;
