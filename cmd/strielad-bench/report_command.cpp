@@ -13,6 +13,7 @@
 #include <set>
 
 #include "bench/benchmark_report.h"
+#include "bench/noise_probe.h"
 #include "bench/process_runner.h"
 #include "commands.h"
 #include "core/error.h"
@@ -53,6 +54,11 @@ std::vector<std::string> split(const std::string& list) {
   return out;
 }
 
+// Three noise probes (bench/noise_probe.h): how much other load slows a core now.
+void take_probes(bench::ReportInput& input, const std::string& when) {
+  for (int i = 0; i < 3; ++i) input.probes.push_back({when, bench::noise_probe_seconds()});
+}
+
 int run(const ReportFlags& f) {
   const auto suites = split(f.suites);
   if (suites.empty()) throw make_error(ErrorCode::kInvalidArgument, "--suites: no suite named");
@@ -87,6 +93,7 @@ int run(const ReportFlags& f) {
       run.plot = out / (suite + ".png");
       run.argv.insert(run.argv.end(), {"--plot", run.plot.string()});
     }
+    take_probes(input, "before " + suite);
     std::filesystem::remove(run.json);
     spdlog::info("report: running {}", bench::shell_command(run.argv));
     const auto result = bench::run_process(run.argv, run.log);
@@ -96,6 +103,7 @@ int run(const ReportFlags& f) {
     spdlog::info("report: {} exited {} after {:.1f} s", suite, run.exit_status, run.seconds);
     input.runs.push_back(std::move(run));
   }
+  take_probes(input, "after " + suites.back());
   const auto written = bench::write_benchmark_report(input);
   std::cout << "report: " << written.markdown.string() << " (" << written.charts.size()
             << " charts";

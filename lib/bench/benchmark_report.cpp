@@ -5,11 +5,13 @@
 #include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <fstream>
 #include <map>
 
+#include "bench/latency_stats.h"
 #include "bench/process_runner.h"
 #include "bench/report_markdown.h"
 #include "bench/report_charts.h"
@@ -39,6 +41,23 @@ std::string utc_now() {
   return buf;
 }
 
+// How much other load slowed the machine during the run, from the noise probes.
+std::string noise_markdown(const std::vector<NoiseProbe>& probes) {
+  if (probes.empty()) return "";
+  std::vector<double> ms;
+  for (const auto& p : probes) ms.push_back(p.seconds * 1000);
+  const Summary s = summarize(ms);
+  const auto slowest = std::max_element(probes.begin(), probes.end(),
+                                        [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
+  return fmt::format(
+      "## Noise\n\nA fixed single-threaded CPU loop (`bench/noise_probe.h`) was timed {} times "
+      "between the suites: median {:.1f} ms, fastest {:.1f} ms, slowest {:.1f} ms ({}), so "
+      "other load on this machine slowed a core by up to {:.0f} % during the run (slowest / "
+      "fastest {:.2f}). Read every figure below with that spread in mind; the suites give "
+      "medians of repeated runs with their own spread.\n\n",
+      probes.size(), s.p50, s.min, s.max, slowest->when, 100 * (s.max / s.min - 1), s.max / s.min);
+}
+
 }  // namespace
 
 ReportOutput write_benchmark_report(const ReportInput& input) {
@@ -63,6 +82,7 @@ ReportOutput write_benchmark_report(const ReportInput& input) {
     }
   }
   if (!machine_written) md += "(no suite reported its machine)\n\n";
+  md += noise_markdown(input.probes);
   md += "## Suites\n\n| suite | exit status | seconds | command |\n|---|---|---|---|\n";
   for (const auto& run : input.runs) {
     md += fmt::format("| [{}](#{}) | {} | {:.1f} | `{}` |\n", run.suite, run.suite,

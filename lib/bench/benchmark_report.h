@@ -21,8 +21,15 @@ struct SuiteRun {
   std::string output_tail;          // of a failed run
 };
 
+// One noise probe (bench/noise_probe.h) taken between suites.
+struct NoiseProbe {
+  std::string when;  // "before io", "after robustness", ...
+  double seconds = 0;
+};
+
 struct ReportInput {
   std::vector<SuiteRun> runs;
+  std::vector<NoiseProbe> probes;
   std::string command_line;  // the report's own command
   std::string mode;          // "quick" or the stated size
   std::filesystem::path out; // folder of the report, its charts and the suites' files

@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # strielad-bench report --quick: runs the named suites as their own processes and writes
 # one BENCHMARKS.md with the machine, each suite's command, exit status and tables, and
-# the charts (when gnuplot is installed); an unknown suite is one clear error.
+# the charts (when gnuplot is installed), with the noise probes taken between suites; an
+# unknown suite is one clear error.
 # Usage: bench_report_quick_test.sh STRIELAD_CONVERT WORK_DIR (strielad-bench is found
 # next to strielad-convert in the build tree).
 set -uo pipefail
@@ -18,19 +19,23 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 expect_cli_error "$bench" "$work" 2 "unknown suite 'nope'" -- report --quick --suites io,nope \
   --out "$work/bad"
 
-"$bench" report --quick --suites scene,advect --out "$work/report" --work "$work/scratch" \
+"$bench" report --quick --suites scene,scaling,latency,advect --out "$work/report" --work "$work/scratch" \
   >"$work/report.out" 2>"$work/report.err" || fail "report exited $?: $(tail -5 "$work/report.err")"
 md="$work/report/BENCHMARKS.md"
 [[ -s "$md" ]] || fail "no $md"
-for needle in "## Machine" "cores" "## scene" "## advect" "What a scene and a view read" \
-              "| scene | view | nodes |" "Fewest field evaluations" "report --quick"; do
+for needle in "## Machine" "cores" "## Noise" "slowest / fastest" "## scene" "## advect" \
+              "What a scene and a view read" "| scene | view | nodes |" \
+              "Fewest field evaluations" "report --quick" "## scaling" "Cost against grid size" \
+              "| ranks | threads/rank |" "number of sub-volumes" \
+              "against the paper's published figures"; do
   grep -qF -- "$needle" "$md" || fail "BENCHMARKS.md lacks '$needle'"
 done
-for f in scene.json scene.csv scene.txt advect.json advect.csv advect.txt; do
+for f in scene.json scene.csv scene.txt advect.json advect.csv advect.txt scaling.json latency.json; do
   [[ -s "$work/report/$f" ]] || fail "no $f"
 done
 if command -v gnuplot >/dev/null; then
-  for png in scene-economy.png advect.png; do
+  for png in scene-economy.png advect.png scaling-grid.png scaling-subvolumes.png \
+             scaling-ranks.png latency-cut-arrivals.png; do
     [[ -s "$work/report/$png" ]] || fail "no chart $png"
     grep -qF "($png)" "$md" || fail "BENCHMARKS.md does not show $png"
   done

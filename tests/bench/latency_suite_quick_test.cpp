@@ -5,6 +5,8 @@
 // report has every table, so the harness cannot rot between full runs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "bench/latency_suite.h"
 #include "support/temp_dir.h"
 
@@ -32,6 +34,11 @@ TEST(LatencySuiteQuick, RunsEveryPhaseToACompleteCut) {
     EXPECT_LE(round.first, round.p50);
     EXPECT_LE(round.p50, round.p90);
     EXPECT_LE(round.p90, round.all);
+    // Every answer of a complete cut is kept, in time order, ending at the whole cut.
+    EXPECT_EQ(round.arrivals.size(), round.nodes);
+    EXPECT_TRUE(std::is_sorted(round.arrivals.begin(), round.arrivals.end()));
+    EXPECT_EQ(round.arrivals.front(), round.first);
+    EXPECT_EQ(round.arrivals.back(), round.all);
   }
   EXPECT_GT(r.bytes_per_node, 0.0);
 
@@ -47,9 +54,15 @@ TEST(LatencySuiteQuick, RunsEveryPhaseToACompleteCut) {
   EXPECT_GT(r.concurrent.results, 0u);
 
   const auto tables = bench::latency_report_tables(r);
-  EXPECT_EQ(tables.size(), 6u);
+  EXPECT_EQ(tables.size(), 7u);
+  // Time changes with and without prefetching: foreground and whole view each.
+  const auto paper = std::find_if(tables.begin(), tables.end(),
+                                  [](const bench::Table& t) { return t.name == "paper_comparison"; });
+  ASSERT_NE(paper, tables.end());
+  EXPECT_EQ(paper->rows.size(), 4u);
   const auto json = bench::latency_report_json(r, tables);
   EXPECT_EQ(json["suite"], "latency");
+  EXPECT_EQ(json["arrivals"].size(), r.phases.size());
   EXPECT_EQ(json["targets"].size(), r.targets.size());
 }
 
