@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // strielad-bench report --out DIR [--quick] [--dims XxYxZ] [--suites io,extract,...]
-//                       [--work DIR]
+//                       [--work DIR] [--rerun SUITES]
 // Runs every suite as its own process (this binary), one after the other, each writing
 // its JSON, CSV and output into DIR, then writes DIR/BENCHMARKS.md with the charts.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -14,6 +15,7 @@
 
 #include "bench/benchmark_report.h"
 #include "bench/noise_probe.h"
+#include "bench/report_runs.h"
 #include "bench/process_runner.h"
 #include "commands.h"
 #include "core/error.h"
@@ -26,9 +28,13 @@ struct ReportFlags {
   std::string dims = "715x778x150";
   std::string suites = "io,extract,latency,view,scene,scaling,advect,robustness";
   std::string work = "/tmp/strielad-bench-report";
+  std::string rerun;
   bool quick = false;
   std::string command_line;
 };
+
+// What the report ran, for a later --rerun (bench/report_runs.h).
+constexpr const char* kRunsFile = "runs.json";
 
 const std::set<std::string>& known_suites() {
   static const std::set<std::string> s{"io",      "extract", "latency", "view",
@@ -59,12 +65,45 @@ void take_probes(bench::ReportInput& input, const std::string& when) {
   for (int i = 0; i < 3; ++i) input.probes.push_back({when, bench::noise_probe_seconds()});
 }
 
+bench::SuiteRun planned_run(const ReportFlags& f, const std::string& suite,
+                            const std::filesystem::path& out, const std::string& self) {
+  bench::SuiteRun run;
+  run.suite = suite;
+  run.json = out / (suite + ".json");
+  run.csv = out / (suite + ".csv");
+  run.log = out / (suite + ".txt");
+  run.argv = {self, suite};
+  if (f.quick) run.argv.push_back("--quick");
+  else if (takes_dims(suite)) run.argv.insert(run.argv.end(), {"--dims", f.dims});
+  if (suite != "advect") {
+    run.argv.insert(run.argv.end(), {"--work", (std::filesystem::path(f.work) / suite).string()});
+  }
+  run.argv.insert(run.argv.end(), {"--json", run.json.string(), "--csv", run.csv.string()});
+  if (takes_plot(suite)) {
+    run.plot = out / (suite + ".png");
+    run.argv.insert(run.argv.end(), {"--plot", run.plot.string()});
+  }
+  return run;
+}
+
+void execute(bench::SuiteRun& run) {
+  std::filesystem::remove(run.json);
+  spdlog::info("report: running {}", bench::shell_command(run.argv));
+  const auto result = bench::run_process(run.argv, run.log);
+  run.exit_status = result.exit_status;
+  run.seconds = result.seconds;
+  run.output_tail = result.exit_status != 0 ? result.output_tail : std::string();
+  spdlog::info("report: {} exited {} after {:.1f} s", run.suite, run.exit_status, run.seconds);
+}
+
 int run(const ReportFlags& f) {
-  const auto suites = split(f.suites);
-  if (suites.empty()) throw make_error(ErrorCode::kInvalidArgument, "--suites: no suite named");
+  const bool rerun = !f.rerun.empty();
+  const auto suites = split(rerun ? f.rerun : f.suites);
+  const char* flag = rerun ? "--rerun" : "--suites";
+  if (suites.empty()) throw make_error(ErrorCode::kInvalidArgument, "{}: no suite named", flag);
   for (const auto& s : suites) {
     if (!known_suites().count(s)) {
-      throw make_error(ErrorCode::kInvalidArgument, "--suites: unknown suite '{}' (known: {})", s,
+      throw make_error(ErrorCode::kInvalidArgument, "{}: unknown suite '{}' (known: {})", flag, s,
                        fmt::join(known_suites(), ", "));
     }
   }
@@ -72,38 +111,29 @@ int run(const ReportFlags& f) {
   std::filesystem::create_directories(out);
   const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
   bench::ReportInput input;
-  input.command_line = f.command_line;
-  input.mode = f.quick ? "quick mode: small data, checks the harness, not the figures"
-                       : fmt::format("generated data {}", f.dims);
+  if (rerun) {
+    input = bench::load_report_runs(out / kRunsFile);
+    input.notes.push_back(fmt::format("Re-run by `{}`: {}; the other suites are as first run.",
+                                      f.command_line, fmt::join(suites, ", ")));
+  } else {
+    input.command_line = f.command_line;
+    input.mode = f.quick ? "quick mode: small data, checks the harness, not the figures"
+                         : fmt::format("generated data {}", f.dims);
+  }
   input.out = out;
   for (const auto& suite : suites) {
-    bench::SuiteRun run;
-    run.suite = suite;
-    run.json = out / (suite + ".json");
-    run.csv = out / (suite + ".csv");
-    run.log = out / (suite + ".txt");
-    run.argv = {self, suite};
-    if (f.quick) run.argv.push_back("--quick");
-    else if (takes_dims(suite)) run.argv.insert(run.argv.end(), {"--dims", f.dims});
-    if (suite != "advect") {
-      run.argv.insert(run.argv.end(), {"--work", (std::filesystem::path(f.work) / suite).string()});
+    const auto kept = std::find_if(input.runs.begin(), input.runs.end(),
+                                   [&](const bench::SuiteRun& r) { return r.suite == suite; });
+    take_probes(input, (rerun ? "re-run, before " : "before ") + suite);
+    if (kept != input.runs.end()) {
+      execute(*kept);  // the same command as the first run
+    } else {
+      input.runs.push_back(planned_run(f, suite, out, self));
+      execute(input.runs.back());
     }
-    run.argv.insert(run.argv.end(), {"--json", run.json.string(), "--csv", run.csv.string()});
-    if (takes_plot(suite)) {
-      run.plot = out / (suite + ".png");
-      run.argv.insert(run.argv.end(), {"--plot", run.plot.string()});
-    }
-    take_probes(input, "before " + suite);
-    std::filesystem::remove(run.json);
-    spdlog::info("report: running {}", bench::shell_command(run.argv));
-    const auto result = bench::run_process(run.argv, run.log);
-    run.exit_status = result.exit_status;
-    run.seconds = result.seconds;
-    if (result.exit_status != 0) run.output_tail = result.output_tail;
-    spdlog::info("report: {} exited {} after {:.1f} s", suite, run.exit_status, run.seconds);
-    input.runs.push_back(std::move(run));
   }
-  take_probes(input, "after " + suites.back());
+  take_probes(input, (rerun ? "re-run, after " : "after ") + suites.back());
+  bench::save_report_runs(input, out / kRunsFile);
   const auto written = bench::write_benchmark_report(input);
   std::cout << "report: " << written.markdown.string() << " (" << written.charts.size()
             << " charts";
@@ -138,6 +168,9 @@ void register_report(CLI::App& app, cli::Action& action, std::string command_lin
   sub->add_option("--work", f->work, "Scratch folder; each suite gets its own below it")
       ->capture_default_str();
   sub->add_flag("--quick", f->quick, "Every suite in quick mode: seconds, checks the harness");
+  sub->add_option("--rerun", f->rerun,
+                  "Run only these suites again (comma-separated), with their first commands, "
+                  "keep the other suites of the report in --out, and write the whole report");
   sub->callback([f, &action] { action = [f] { return run(*f); }; });
 }
 

@@ -67,6 +67,7 @@ ReportOutput write_benchmark_report(const ReportInput& input) {
   md += fmt::format("Generated {} by `{}` ({}). Every suite ran as its own process, one "
                     "after the other, on this machine; the tables are the suites' own.\n\n",
                     utc_now(), input.command_line, input.mode);
+  for (const auto& note : input.notes) md += note + "\n\n";
   std::map<std::string, json> reports;
   for (const auto& run : input.runs) {
     if (auto j = read_json(run.json)) reports[run.suite] = std::move(*j);

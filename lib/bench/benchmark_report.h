@@ -31,6 +31,7 @@ struct ReportInput {
   std::vector<SuiteRun> runs;
   std::vector<NoiseProbe> probes;
   std::string command_line;  // the report's own command
+  std::vector<std::string> notes;  // e.g. which suites a later --rerun ran again
   std::string mode;          // "quick" or the stated size
   std::filesystem::path out; // folder of the report, its charts and the suites' files
 };

@@ -9,6 +9,7 @@
 
 #include "bench/cpu_time.h"
 #include "bench/file_copy.h"
+#include "bench/io_sweeps.h"
 #include "bench/latency_stats.h"
 #include "bench/page_cache.h"
 #include "bench/process_runner.h"
@@ -134,10 +135,10 @@ ConversionBench run_conversion_bench(const ConversionBenchOptions& o) {
     const auto& c = codecs[i];
     converts.push_back(contender(
         i == 0 ? std::string("strielad-convert")
-               : fmt::format("strielad-convert ({} {} {})", c.name, c.level, c.shuffle),
-        fmt::format("build::convert in process, brick {}, blosc {} level {} {}-shuffle, threads {}; "
-                    "includes NetCDF reads, fsync and finalize",
-                    o.brick, c.name, c.level, c.shuffle, threads)));
+               : fmt::format("strielad-convert ({})", codec_label(c)),
+        fmt::format("build::convert in process, brick {}, blosc {} level {} {}-shuffle, "
+                    "predictor {}, threads {}; includes NetCDF reads, fsync and finalize",
+                    o.brick, c.name, c.level, c.shuffle, c.predictor, threads)));
   }
   ContenderRuns nccopy =
       contender("nccopy", shell_command(bench.nccopy_argv) + " (+ fsync of the output)");

@@ -39,14 +39,17 @@ struct IoSuiteOptions {
   std::uint64_t read_seed = 42;   // of the random brick choice
   int threads = 0;                // converter threads, 0 = all cores
   std::uint32_t brick = build::kDefaultBrick;  // main measurements: the converter default
-  format::CodecSpec codec;        // main measurements (the current default)
+  // Main measurements: the converter's default (predictor chosen per variable).
+  format::CodecSpec codec{.predictor = std::string(build::kPredictorAuto)};
   bool nccopy = true;             // false: skip the NetCDF competitors
   std::vector<std::string> nccopy_extra;  // extra nccopy flags, after the cache flags
   bool nccopy_tuned_cache = true;         // pass nccopy_cache_args() (see conversion_bench.h)
   // Further converter contenders in the main conversion table (same brick, other codecs;
   // one equal to `codec` is skipped).
-  std::vector<format::CodecSpec> extra_codecs{
-      {"lz4", 5, "byte"}, {"zstd", 1, "byte"}, {"zstd", 5, "byte"}};
+  std::vector<format::CodecSpec> extra_codecs{{"lz4", 5, "byte", "auto"},
+                                              {"zstd", 1, "byte", "auto"},
+                                              {"zstd", 5, "byte", "auto"},
+                                              {"zstd", 1, "byte", "none"}};
   bool sweeps = true;
   Dims3 sweep_dims{512, 512, 150};
   std::vector<std::uint32_t> sweep_bricks{12, 16, 20, 24, 32};

@@ -11,7 +11,8 @@
 namespace strielad::bench {
 
 std::string codec_label(const format::CodecSpec& codec) {
-  return fmt::format("{} {} {}", codec.name, codec.level, codec.shuffle);
+  const std::string label = fmt::format("{} {} {}", codec.name, codec.level, codec.shuffle);
+  return codec.predictor == "none" ? label : label + " " + codec.predictor;
 }
 
 std::vector<SweepRow> run_sweep(const SweepOptions& o, const std::vector<SweepConfig>& configs) {

@@ -45,7 +45,7 @@ struct SweepOptions {
 
 std::vector<SweepRow> run_sweep(const SweepOptions& options, const std::vector<SweepConfig>& configs);
 
-// "zstd 5 byte" style label.
+// "zstd 5 byte" style label, with the predictor after it unless it is "none".
 std::string codec_label(const format::CodecSpec& codec);
 
 }  // namespace strielad::bench

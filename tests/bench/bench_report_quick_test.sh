@@ -40,5 +40,21 @@ if command -v gnuplot >/dev/null; then
     grep -qF "($png)" "$md" || fail "BENCHMARKS.md does not show $png"
   done
 fi
+
+# --rerun runs only the named suite again and keeps the others from runs.json.
+[[ -s "$work/report/runs.json" ]] || fail "no runs.json"
+before_advect=$(stat -c %Y "$work/report/advect.json")
+"$bench" report --quick --rerun scene --out "$work/report" --work "$work/scratch" \
+  >"$work/rerun.out" 2>"$work/rerun.err" || fail "rerun exited $?: $(tail -5 "$work/rerun.err")"
+for needle in "Re-run by" "## scene" "## advect" "## scaling"; do
+  grep -qF -- "$needle" "$md" || fail "BENCHMARKS.md after --rerun lacks '$needle'"
+done
+grep -qF "re-run, before scene" "$work/report/runs.json" || fail "runs.json lacks the re-run's probes"
+[[ $(stat -c %Y "$work/report/advect.json") == "$before_advect" ]] || fail "--rerun scene re-ran advect"
+expect_cli_error "$bench" "$work" 2 "unknown suite 'nope'" -- report --quick --rerun nope \
+  --out "$work/report"
+expect_cli_error "$bench" "$work" 3 "no earlier report" -- report --quick --rerun scene \
+  --out "$work/empty"
+
 [[ $failures -eq 0 ]] && echo "bench report quick: ok"
 exit $((failures > 0))
