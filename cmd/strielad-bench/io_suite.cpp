@@ -25,7 +25,8 @@ struct IoFlags {
   bool quick = false, keep = false, no_nccopy = false, no_sweeps = false, nccopy_untuned = false;
   std::string csv, json;
   std::uint32_t brick = build::kDefaultBrick;
-  format::CodecSpec codec;
+  // The converter's default (bench::IoSuiteOptions): predictor chosen per variable.
+  format::CodecSpec codec = bench::IoSuiteOptions{}.codec;
   int threads = 0;
   std::uint64_t seed = 1;
   std::string sweep_dims = "512x512x150";
@@ -119,6 +120,10 @@ void register_io(CLI::App& app, cli::Action& action, std::string command_line) {
   sub->add_option("--level", f->codec.level, "Codec level of the main measurements")
       ->capture_default_str();
   sub->add_option("--shuffle", f->codec.shuffle, "Shuffle of the main measurements")
+      ->capture_default_str();
+  sub->add_option("--predictor", f->codec.predictor,
+                  "Predictor of the main measurements: auto (per variable, the converter's "
+                  "default), none or lorenzo3")
       ->capture_default_str();
   sub->add_option("--threads", f->threads, "Converter threads (default: all cores)");
   sub->add_option("--seed", f->seed, "Seed of the sample data")->capture_default_str();

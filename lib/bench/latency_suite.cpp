@@ -66,17 +66,6 @@ CutLatency cut_latency(const CutClient& c, bool complete) {
   return l;
 }
 
-struct StoreFiles {
-  std::vector<EvictableFile> files;
-  explicit StoreFiles(const std::filesystem::path& store) {
-    for (const auto& e : std::filesystem::recursive_directory_iterator(store)) {
-      if (e.is_regular_file()) files.emplace_back(e.path());
-    }
-  }
-  void evict() const {
-    for (const auto& f : files) f.evict();
-  }
-};
 
 nlohmann::json server_stats(CutClient& c) { return nlohmann::json::parse(c.client().stats()); }
 
@@ -153,7 +142,7 @@ void run_fly_in(Rig& rig, LatencySuiteReport& report) {
   report.fly_in.push_back({duration + after.seconds(), c.cut_size(), c.answered_in_cut()});
 }
 
-void run_phases(Rig& rig, LatencySuiteReport& report, const StoreFiles& files) {
+void run_phases(Rig& rig, LatencySuiteReport& report, const EvictableFolder& files) {
   const LatencySuiteOptions& o = rig.o;
   PhaseLatency cold{"cold start", false, {}}, cold_pf{"cold start", true, {}};
   PhaseLatency time_on{"time change", true, {}}, time_off{"time change", false, {}};
@@ -330,7 +319,7 @@ LatencySuiteReport run_latency_suite(const LatencySuiteOptions& o) {
   report.convert_seconds = convert_clock.seconds();
   const auto store = Store::open(store_dir);
   report.octree_nodes = store->octree().node_count();
-  const StoreFiles files(store_dir);
+  const EvictableFolder files(store_dir);
 
   const lod::WorldFrame frame(store->manifest());
   const lod::CameraPath path = o.camera_path.empty()

@@ -93,4 +93,14 @@ EvictableFile::~EvictableFile() {
   if (fd_ >= 0) ::close(fd_);
 }
 
+EvictableFolder::EvictableFolder(const std::filesystem::path& folder) {
+  for (const auto& e : std::filesystem::recursive_directory_iterator(folder)) {
+    if (e.is_regular_file()) files_.emplace_back(e.path());
+  }
+}
+
+void EvictableFolder::evict() const {
+  for (const auto& f : files_) f.evict();
+}
+
 }  // namespace strielad::bench

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <vector>
 
 namespace strielad::bench {
 
@@ -42,6 +43,17 @@ class EvictableFile {
  private:
   std::filesystem::path path_;
   int fd_ = -1;
+};
+
+// Every regular file under a folder (a store), kept open for repeated evictions before
+// cold starts. Throws kIo naming a file that cannot be opened.
+class EvictableFolder {
+ public:
+  explicit EvictableFolder(const std::filesystem::path& folder);
+  void evict() const;
+
+ private:
+  std::vector<EvictableFile> files_;
 };
 
 }  // namespace strielad::bench

@@ -70,6 +70,8 @@ std::string bar_chart(const std::filesystem::path& png, const ChartAxes& axes,
      << "set style fill solid 0.8 border -1\n"
      << "set boxwidth 0.7\n"
      << "set xtics rotate by -30\n"
+     // The last label runs down to the right of its bar: room for it, in characters.
+     << "set rmargin " << 2 + static_cast<int>(0.87 * double(labels.back().size())) << "\n"
      << "set yrange [" << (axes.log_y ? "*" : "0") << ":*]\n"
      << "unset key\n"
      << "plot " << quoted(dat_path.filename().string())

@@ -138,17 +138,6 @@ GridScaling measure_grid(const ScalingSuiteOptions& o, double fraction,
   return g;
 }
 
-struct StoreFiles {
-  std::vector<EvictableFile> files;
-  explicit StoreFiles(const std::filesystem::path& store) {
-    for (const auto& e : std::filesystem::recursive_directory_iterator(store)) {
-      if (e.is_regular_file()) files.emplace_back(e.path());
-    }
-  }
-  void evict() const {
-    for (const auto& f : files) f.evict();
-  }
-};
 
 // Seconds after the request until the first answer, half the cut and all of it (-1 when
 // the cut did not complete).
@@ -170,7 +159,7 @@ CutTimes cut_times(const CutClient& c, bool complete) {
 
 ServerScaling measure_server(const ScalingSuiteOptions& o, const ServerLayout& layout,
                              const std::filesystem::path& root, const std::string& dataset,
-                             const StoreFiles& files) {
+                             const EvictableFolder& files) {
   ServerScaling s;
   s.layout = layout;
   if (o.server_binary.empty()) {
@@ -262,7 +251,7 @@ ScalingSuiteReport run_scaling_suite(const ScalingSuiteOptions& o) {
     if (smallest_store.empty()) smallest_store = store_dir;
   }
   // The server's root holds every grid's store; the client opens the smallest.
-  const StoreFiles files(smallest_store);
+  const EvictableFolder files(smallest_store);
   for (const ServerLayout& layout : o.layouts) {
     spdlog::info("scaling: server with {} rank(s) x {} thread(s)", layout.ranks, layout.threads);
     report.servers.push_back(
