@@ -3,7 +3,8 @@
 // checksum, Blosc decompression) with the step file evicted from the page cache before
 // every read (cold) or after a warm-up pass (warm), the bytes each read fetched from disk
 // (/proc/self/io read_bytes, or mincore residency where that counter does not move), and
-// the same regions read from a chunked NetCDF-4 file with nc_get_vara_float.
+// the same regions read from a chunked NetCDF-4 file with nc_get_vara_float and through
+// OpenVDB's delayed loading of a level-0 .vdb (vdb/delayed_region_reader.h).
 // The store's index sections are loaded before timing starts (a reader keeps them), so a
 // cold read costs exactly the chunk; `first_brick` measures open + index + one brick.
 #pragma once
@@ -58,6 +59,9 @@ struct ReadSet {
 struct BrickReadOptions {
   std::filesystem::path store;
   std::filesystem::path netcdf;  // chunked NetCDF-4 copy of the input; empty: skip
+  // Level 0 of every store variable as .vdb (vdb::write_level_vdb), in store variable
+  // order, read through OpenVDB delayed loading; empty: skip.
+  std::vector<std::filesystem::path> vdb_files;
   std::vector<std::string> variables;  // netCDF names, in store variable order
   std::size_t reads = 1000;            // per set
   std::size_t first_brick_reads = 20;  // fresh opens

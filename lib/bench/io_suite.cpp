@@ -9,6 +9,8 @@
 #include "bench/stopwatch.h"
 #include "core/error.h"
 #include "sample/sample_variables.h"
+#include "store/store.h"
+#include "vdb/level_grid.h"
 
 namespace strielad::bench {
 namespace {
@@ -109,6 +111,17 @@ IoSuiteReport run_io_suite(const IoSuiteOptions& options) {
   ro.first_brick_reads = o.first_brick_reads;
   ro.seed = o.read_seed;
   ro.scratch = o.work;
+  if (o.vdb_reads) {
+    spdlog::info("bench: writing level 0 of every variable as .vdb for the delayed-loading reads");
+    const auto store = Store::open(report.conversion.store);
+    const auto vdb_dir = o.work / "vdb";
+    std::filesystem::create_directories(vdb_dir);
+    for (std::uint32_t v = 0; v < store->variable_count(); ++v) {
+      const auto path = vdb_dir / (store->manifest().variables[v].name + ".vdb");
+      vdb::write_level_vdb(*store, 0, v, 0, path);
+      ro.vdb_files.push_back(path);
+    }
+  }
   report.reads = run_brick_read_bench(ro);
 
   if (o.sweeps) {

@@ -34,6 +34,7 @@ struct IoSuiteOptions {
   int repeat = 3;                 // rounds per throughput measurement (medians)
   std::size_t reads = 1000;       // random brick reads per latency set
   std::size_t first_brick_reads = 20;
+  bool vdb_reads = true;          // also read the bricks through OpenVDB delayed loading
   bool keep = false;              // keep generated inputs, stores and copies
   std::uint64_t seed = 1;         // of the sample data
   std::uint64_t read_seed = 42;   // of the random brick choice

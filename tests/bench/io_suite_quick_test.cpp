@@ -75,6 +75,11 @@ TEST(IoSuiteQuick, ReportsSaneNumbers) {
   if (have_nccopy) {
     EXPECT_NE(r.reads.find("netcdf cold, B^3 box"), nullptr);
   }
+  // The same bricks through OpenVDB delayed loading, every read measured.
+  const auto* vdb = r.reads.find("openvdb delayed, (B+1)^3 box");
+  ASSERT_NE(vdb, nullptr);
+  EXPECT_EQ(vdb->latency().count, options.reads);
+  EXPECT_GT(vdb->latency().p50, 0);
 
   // Sweeps: one row per configuration, each measured.
   ASSERT_EQ(r.brick_sweep.size(), options.sweep_bricks.size());
