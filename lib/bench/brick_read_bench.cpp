@@ -82,10 +82,13 @@ IndexBox aligned_box(const OctreeLayout& layout, NodeId node) {
   return box;
 }
 
-ReadSet netcdf_pass(NetcdfRegionReader& nc, const OctreeLayout& layout,
-                    const std::vector<ReadSample>& samples, bool brick_box, std::string name,
-                    std::string description, const std::function<void()>& before_each,
-                    DiskMeter& meter) {
+// Reads each sample's box (the brick's (B+1)^3 samples, or its chunk-aligned B^3 ones)
+// through `read`, timed and metered, `before_each` (evictions) untimed.
+using RegionRead = std::function<void(std::uint32_t variable, const IndexBox&, std::vector<float>&)>;
+ReadSet region_pass(const OctreeLayout& layout, const std::vector<ReadSample>& samples,
+                    bool brick_box, std::string name, std::string description,
+                    const std::function<void()>& before_each, DiskMeter& meter,
+                    const RegionRead& read) {
   ReadSet set{std::move(name), std::move(description), {}, {}, {}, {}};
   std::vector<float> out;
   for (const auto& s : samples) {
@@ -93,7 +96,7 @@ ReadSet netcdf_pass(NetcdfRegionReader& nc, const OctreeLayout& layout,
     if (before_each) before_each();
     meter.start();
     const Stopwatch clock;
-    nc.read_box(s.variable, 0, box, out);
+    read(s.variable, box, out);
     const double us = clock.microseconds();
     set.disk_bytes.push_back(meter.stop());
     set.latency_us.push_back(us);
@@ -101,6 +104,17 @@ ReadSet netcdf_pass(NetcdfRegionReader& nc, const OctreeLayout& layout,
     set.page_bytes.push_back(0);
   }
   return set;
+}
+
+ReadSet netcdf_pass(NetcdfRegionReader& nc, const OctreeLayout& layout,
+                    const std::vector<ReadSample>& samples, bool brick_box, std::string name,
+                    std::string description, const std::function<void()>& before_each,
+                    DiskMeter& meter) {
+  return region_pass(layout, samples, brick_box, std::move(name), std::move(description),
+                     before_each, meter,
+                     [&](std::uint32_t v, const IndexBox& box, std::vector<float>& out) {
+                       nc.read_box(v, 0, box, out);
+                     });
 }
 
 // The same (B+1)^3 samples as each brick through OpenVDB delayed loading, the .vdb files
@@ -114,27 +128,20 @@ ReadSet vdb_pass(const BrickReadOptions& o, const Store& store,
   for (const auto& f : o.vdb_files) files.emplace_back(f);
   DiskMeter meter(method, o.vdb_files.front());
   const auto& layout = store.octree();
-  ReadSet set{"openvdb delayed, (B+1)^3 box",
-              fmt::format("FloatGrid of level 0 per variable (vdb::write_level_vdb, Blosc), "
-                          "io::File::open(delayLoad) with copy-max-bytes 0, topology read at open; "
-                          "the brick's {}^3 samples through a ValueAccessor, which loads the 8^3 "
-                          "leaves it touches; files evicted before each read",
-                          layout.brick() + 1),
-              {}, {}, {}, {}};
-  std::vector<float> out;
-  for (const auto& s : samples) {
-    const IndexBox box = layout.fine_box(layout.key(s.node));
-    for (const auto& f : files) f.evict();
-    meter.start();
-    const Stopwatch clock;
-    reader.read_box(s.variable, box, out);
-    const double us = clock.microseconds();
-    set.disk_bytes.push_back(meter.stop());
-    set.latency_us.push_back(us);
-    set.payload_bytes.push_back(0);
-    set.page_bytes.push_back(0);
-  }
-  return set;
+  return region_pass(
+      layout, samples, true, "openvdb delayed, (B+1)^3 box",
+      fmt::format("FloatGrid of level 0 per variable (vdb::write_level_vdb, Blosc), "
+                  "io::File::open(delayLoad) with copy-max-bytes 0, topology read at open; "
+                  "the brick's {}^3 samples through a ValueAccessor, which loads the 8^3 "
+                  "leaves it touches; files evicted before each read",
+                  layout.brick() + 1),
+      [&] {
+        for (const auto& f : files) f.evict();
+      },
+      meter,
+      [&](std::uint32_t v, const IndexBox& box, std::vector<float>& out) {
+        reader.read_box(v, box, out);
+      });
 }
 
 }  // namespace
