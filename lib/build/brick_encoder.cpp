@@ -49,6 +49,45 @@ struct RowStats {
   T max() const { return std::bit_cast<T>(order_key<T>(max_key)); }
 };
 
+// Adds n samples to `stats`. Branch-free, on locals and integer bits only, so that GCC
+// 12 vectorizes it (a floating-point `v == v` in the loop keeps it scalar): a sample is
+// NaN exactly when its magnitude bits exceed those of infinity, and a NaN's key becomes
+// a value that cannot win the min or the max.
+template <typename T>
+void scan_row(const T* row, std::size_t n, RowStats<T>& stats) {
+  using K = SignedBits<T>;
+  constexpr K kMagnitude = std::numeric_limits<K>::max();
+  constexpr K kInfinity = std::bit_cast<K>(std::numeric_limits<T>::infinity());
+  K mn = stats.min_key, mx = stats.max_key;
+  K valid = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const K b = std::bit_cast<K>(row[i]);
+    const K ok = (b & kMagnitude) <= kInfinity ? K(-1) : K(0);
+    const K k = order_key<T>(b);
+    valid -= ok;
+    const K lo = (k & ok) | (std::numeric_limits<K>::max() & ~ok);
+    const K hi = (k & ok) | (std::numeric_limits<K>::min() & ~ok);
+    mn = lo < mn ? lo : mn;
+    mx = hi > mx ? hi : mx;
+  }
+  stats.min_key = mn;
+  stats.max_key = mx;
+  stats.valid += static_cast<std::uint64_t>(valid);
+}
+
+// Samples that are not NaN, in integer bits for the same reason.
+template <typename T>
+std::uint64_t count_valid(const T* row, std::size_t n) {
+  using K = SignedBits<T>;
+  constexpr K kMagnitude = std::numeric_limits<K>::max();
+  constexpr K kInfinity = std::bit_cast<K>(std::numeric_limits<T>::infinity());
+  K valid = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    valid += (std::bit_cast<K>(row[i]) & kMagnitude) <= kInfinity ? 1 : 0;
+  }
+  return static_cast<std::uint64_t>(valid);
+}
+
 }  // namespace
 
 template <typename T>
@@ -71,28 +110,11 @@ EncodedBrick encode_brick(const PlaneBlock<T>& planes, const IndexBox& box, cons
       const T* row = &planes.at(box.lo[0], y, z);
       std::memcpy(dst, row, n * sizeof(T));
       if (!owned) continue;
-      // Branch-free, on locals and integer keys, so that it vectorizes.
-      using K = SignedBits<T>;
-      K mn = covered.min_key, mx = covered.max_key;
-      std::uint32_t valid = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        const T v = row[i];
-        const bool ok = v == v;
-        const K k = order_key<T>(std::bit_cast<K>(v));
-        valid += ok;
-        const K lo = ok ? k : std::numeric_limits<K>::max();
-        const K hi = ok ? k : std::numeric_limits<K>::min();
-        mn = lo < mn ? lo : mn;
-        mx = hi > mx ? hi : mx;
-      }
-      covered.min_key = mn;
-      covered.max_key = mx;
-      covered.valid += valid;
+      scan_row<T>(row, n, covered);
       if (z >= owned->lo[2] && z <= owned->hi[2] && y >= owned->lo[1] && y <= owned->hi[1]) {
         const std::size_t end = owned->hi[0] - box.lo[0] + 1;
-        std::uint32_t row_valid = 0;
-        for (std::size_t i = owned->lo[0] - box.lo[0]; i < end; ++i) row_valid += row[i] == row[i];
-        owned_valid += row_valid;
+        const std::size_t begin = owned->lo[0] - box.lo[0];
+        owned_valid += count_valid<T>(row + begin, end - begin);
       }
     }
   }
@@ -107,14 +129,11 @@ EncodedBrick encode_brick(const PlaneBlock<T>& planes, const IndexBox& box, cons
     // Above level 0 the range covers the brick's own samples too: one that stands in for
     // fill is a mean of level-below samples that may lie just outside the node's box
     // (formats/store.md, "Per-node statistics"), so culling by the range stays safe.
-    NodeStats own;
-    for (const T v : samples) {
-      if (v != v) continue;
-      const double d = static_cast<double>(v);
-      if (!(own.min <= d)) own.min = d;  // NaN at first
-      if (!(own.max >= d)) own.max = d;
+    scan_row<T>(samples.data(), samples.size(), covered);
+    if (covered.valid > 0) {
+      stats.merge(NodeStats{static_cast<double>(covered.min()),
+                            static_cast<double>(covered.max()), 0});
     }
-    stats.merge(own);
   }
 
   EncodedBrick out;
@@ -122,12 +141,10 @@ EncodedBrick encode_brick(const PlaneBlock<T>& planes, const IndexBox& box, cons
   out.entry.min = stats.min;
   out.entry.max = stats.max;
 
-  // Kind: all missing, all bitwise equal (and valid), or data. Both scans stop early,
-  // and level 0 already knows whether any sample is valid.
+  // Kind: all missing, all bitwise equal (and valid), or data. `covered` has counted the
+  // valid samples of the whole brick at every level; the equality scan stops early.
   const Bits<T> first = std::bit_cast<Bits<T>>(samples.front());
-  const bool any_valid = owned ? covered.valid > 0
-                               : std::any_of(samples.begin(), samples.end(),
-                                             [](T v) { return v == v; });
+  const bool any_valid = covered.valid > 0;
   const bool all_equal = std::all_of(samples.begin(), samples.end(), [first](T v) {
     return std::bit_cast<Bits<T>>(v) == first;
   });

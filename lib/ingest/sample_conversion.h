@@ -4,9 +4,11 @@
 // outside valid_min/valid_max; all compared in the raw (packed) type before unpacking.
 // Then value * scale_factor + add_offset in double, stored in the output type (a value
 // beyond that type's range is reported). NaN/Inf that is not declared missing is
-// reported (or masked when nan_as_fill).
+// reported (or masked when nan_as_fill). `raw` and `out` may be the same memory when Raw
+// is Out (in-place conversion of a buffer that netCDF filled).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -93,24 +95,46 @@ ConversionResult convert_samples(std::span<const Raw> raw, const CfValueAttribut
     if (!packed && !has_min && !has_max && fills.size() <= 2) {
       const Raw f0 = fills.empty() ? kNaNRaw<Raw> : fills[0];
       const Raw f1 = fills.size() < 2 ? f0 : fills[1];
-      // Branch-free pass (vectorizes); the rare undeclared NaN/Inf is located afterwards.
-      bool any_undeclared = false;
-      for (std::size_t i = 0; i < raw.size(); ++i) {
-        const Raw r = raw[i];
-        const bool finite = r - r == Raw(0);  // false for NaN and +-Inf
-        const bool missing = r == f0 || r == f1 || (nan_is_missing && r != r);
-        out[i] = (missing || !finite) ? kNaN : static_cast<Out>(r);
-        any_undeclared |= !missing && !finite;
-      }
-      if (any_undeclared && !nan_as_fill) {
-        for (std::size_t i = 0; i < raw.size(); ++i) {
-          const Raw r = raw[i];
-          const bool missing = r == f0 || r == f1 || (nan_is_missing && r != r);
-          if (!missing && !std::isfinite(r)) {
-            result.first_non_finite = i;
-            result.non_finite_value = static_cast<double>(r);
-            break;
+      // Branch-free passes over blocks that stay in L1: one finds whether the block holds
+      // an undeclared NaN/Inf (then it is located while the block is still intact), the
+      // next writes the block. Both written with bitwise operators on unsigned flags, not
+      // && and ||: GCC 12 vectorizes them only so (short-circuit operators are control
+      // flow, and the loop stays scalar at 3x the cost). `raw` and `out` may be the same
+      // memory (in-place conversion).
+      const Raw* src = raw.data();
+      Out* dst = out.data();
+      const std::size_t n = raw.size();
+      const unsigned nan_missing = nan_is_missing ? 1u : 0u;
+      constexpr std::size_t kBlock = 2048;
+      for (std::size_t b = 0; b < n; b += kBlock) {
+        const std::size_t e = std::min(n, b + kBlock);
+        if (!nan_as_fill && !result.first_non_finite) {
+          unsigned undeclared = 0;
+          for (std::size_t i = b; i < e; ++i) {
+            const Raw r = src[i];
+            const unsigned finite = r - r == Raw(0) ? 1u : 0u;  // 0 for NaN and +-Inf
+            const unsigned missing = static_cast<unsigned>(r == f0) |
+                                     static_cast<unsigned>(r == f1) |
+                                     (nan_missing & static_cast<unsigned>(r != r));
+            undeclared |= (missing ^ 1u) & (finite ^ 1u);
           }
+          for (std::size_t i = b; undeclared != 0 && i < e; ++i) {
+            const Raw r = src[i];
+            const bool missing = r == f0 || r == f1 || (nan_is_missing && r != r);
+            if (!missing && !std::isfinite(r)) {
+              result.first_non_finite = i;
+              result.non_finite_value = static_cast<double>(r);
+              break;
+            }
+          }
+        }
+        for (std::size_t i = b; i < e; ++i) {
+          const Raw r = src[i];
+          const unsigned finite = r - r == Raw(0) ? 1u : 0u;
+          const unsigned missing = static_cast<unsigned>(r == f0) |
+                                   static_cast<unsigned>(r == f1) |
+                                   (nan_missing & static_cast<unsigned>(r != r));
+          dst[i] = (missing | (finite ^ 1u)) != 0 ? kNaN : static_cast<Out>(r);
         }
       }
       return result;

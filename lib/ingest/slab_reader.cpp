@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <system_error>
 
@@ -130,15 +131,15 @@ const VariableHandle& SlabReader::Impl::variable(OpenFile& of, std::size_t file,
 namespace {
 
 template <typename Raw, typename Out>
-ConversionResult convert_buffer(const std::vector<std::byte>& buffer, std::size_t count,
+ConversionResult convert_buffer(const std::byte* buffer, std::size_t count,
                                 const CfValueAttributes& attrs, bool nan_as_fill,
                                 std::span<Out> out) {
-  const auto* data = reinterpret_cast<const Raw*>(buffer.data());
+  const auto* data = reinterpret_cast<const Raw*>(buffer);
   return convert_samples<Raw, Out>(std::span<const Raw>(data, count), attrs, nan_as_fill, out);
 }
 
 template <typename Out>
-ConversionResult convert_any(int type, const std::vector<std::byte>& buffer, std::size_t count,
+ConversionResult convert_any(int type, const std::byte* buffer, std::size_t count,
                              const CfValueAttributes& attrs, bool nan_as_fill,
                              std::span<Out> out) {
   switch (type) {
@@ -189,7 +190,12 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
   const std::string& name = catalog.variables[v].name;
   const std::string context = fmt::format("{}: variable '{}' time step {}", path, name, t);
 
-  std::vector<std::byte> buffer;
+  // Samples already in the output type are read straight into `out` and converted in
+  // place; others go through a per-thread buffer that is never zero-filled (netCDF fills
+  // it), so a slab costs no page faults beyond its first use.
+  static thread_local std::unique_ptr<std::byte[]> buffer;
+  static thread_local std::size_t buffer_size = 0;
+  std::byte* raw = nullptr;
   CfValueAttributes attrs;
   {
     std::lock_guard lock(netcdf_mutex());
@@ -201,7 +207,16 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
                        context, loc.time_in_file);
     }
     attrs = h.attrs;
-    buffer.resize(count * nc_type_size(attrs.type));
+    if (attrs.type == (sizeof(Out) == 4 ? NC_FLOAT : NC_DOUBLE)) {
+      raw = reinterpret_cast<std::byte*>(out.data());
+    } else {
+      const std::size_t bytes = count * nc_type_size(attrs.type);
+      if (buffer_size < bytes) {
+        buffer.reset(new std::byte[bytes]);
+        buffer_size = bytes;
+      }
+      raw = buffer.get();
+    }
     std::array<std::size_t, 4> start{}, edge{};
     std::size_t d = 0;
     if (h.has_time) {
@@ -214,11 +229,10 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
     edge[d++] = dims.y;
     start[d] = 0;
     edge[d++] = dims.x;
-    nc_check(nc_get_vara(h.grpid, h.varid, start.data(), edge.data(), buffer.data()), context);
+    nc_check(nc_get_vara(h.grpid, h.varid, start.data(), edge.data(), raw), context);
   }
 
-  const ConversionResult r =
-      convert_any<Out>(attrs.type, buffer, count, attrs, options.nan_as_fill, out);
+  const ConversionResult r = convert_any<Out>(attrs.type, raw, count, attrs, options.nan_as_fill, out);
   if (r.first_non_finite) {
     const std::size_t i = *r.first_non_finite;
     const std::size_t plane = dims.x * dims.y;
