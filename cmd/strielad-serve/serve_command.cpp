@@ -31,6 +31,7 @@ struct ServeArgs {
   double cache_mib = 1024;
   std::size_t max_clients = 64;
   bool no_prefetch = false;
+  bool direct_io = false;
   std::uint32_t max_nodes_per_update = protocol::kMaxNodesPerUpdate;
   bool json = false;
 };
@@ -105,7 +106,8 @@ int run_serve_mpi(serve::ServerConfig config, bool json) {
   serve::MpiRuntime mpi;
   if (mpi.size() == 1) return run_threaded(config, json);
   if (mpi.rank() != 0) {
-    return serve::run_mpi_worker(mpi, {config.root, config.threads, config.cache_bytes});
+    return serve::run_mpi_worker(mpi, {config.root, config.threads, config.cache_bytes,
+                                       config.direct_reads});
   }
   serve::MpiMaster master(mpi);
   // --threads counts per worker rank; the dispatcher keeps every rank's threads busy.
@@ -127,6 +129,7 @@ int run_serve(const ServeArgs& args) {
     throw make_error(ErrorCode::kInvalidArgument, "--cache-mib must be >= 0, not {}", args.cache_mib);
   }
   config.cache_bytes = static_cast<std::uint64_t>(args.cache_mib * 1024 * 1024);
+  config.direct_reads = args.direct_io;
   config.max_clients = args.max_clients;
   config.prefetch = !args.no_prefetch;
   config.limits.max_nodes_per_update = args.max_nodes_per_update;
@@ -159,6 +162,10 @@ void register_serve(CLI::App& app, cli::Action& action) {
   app.add_option("--max-clients", args->max_clients, "Refuse clients beyond this many (default 64)");
   app.add_option("--max-nodes-per-update", args->max_nodes_per_update,
                  "Largest node list one CutUpdate may carry");
+  app.add_flag("--direct-io", args->direct_io,
+               "Read bricks with O_DIRECT: only the 512-byte disk blocks a brick spans, not "
+               "whole 4 KiB pages, and no page cache (the brick cache is the only cache); "
+               "stays buffered where the file system has no direct I/O");
   app.add_flag("--no-prefetch", args->no_prefetch,
                "Do not warm the cache with the next time step when idle");
   app.add_flag("--json", args->json, "Print the listening endpoint as one JSON line");

@@ -15,6 +15,7 @@
 #include "bench/page_cache.h"
 #include "bench/proc_io.h"
 #include "bench/stopwatch.h"
+#include "core/direct_read_file.h"
 #include "core/error.h"
 #include "store/store.h"
 #include "vdb/delayed_region_reader.h"
@@ -238,6 +239,17 @@ BrickReadBench run_brick_read_bench(const BrickReadOptions& o) {
                                       one_read + ", step file evicted before each read", evict,
                                       store_meter));
     }
+  }
+  // The same bricks with direct reads (StoreOpenOptions::direct_reads): whole device
+  // blocks instead of whole pages, and no page cache to evict.
+  if (DirectReadFile::open(step_file)) {
+    const auto direct = Store::open(o.store, StoreOpenOptions{.direct_reads = true});
+    for (std::uint32_t v = 0; v < direct->variable_count(); ++v) direct->index(0, v);
+    bench.sets.push_back(store_pass(*direct, level0, "store direct, level 0",
+                                    "Store::read_brick with direct_reads: O_DIRECT pread of the "
+                                    "512-byte blocks the chunk spans + XXH3 + Blosc decompress, "
+                                    "no page cache",
+                                    evict, store_meter));
   }
   store_pass(*store, level0, "warm-up", "", {}, store_meter);
   bench.sets.push_back(store_pass(*store, level0, "store warm, level 0",

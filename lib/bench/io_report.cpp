@@ -261,14 +261,25 @@ std::vector<Target> evaluate_io_targets(const IoSuiteReport& r) {
     out.push_back(t);
   }
   {
+    // Buffered reads fetch whole 4 KiB pages, so no layout gets a chunk of a few KB under
+    // the page-rounded figure; direct reads (StoreOpenOptions::direct_reads) fetch 512-byte
+    // blocks. The target is met when either way of reading meets it, and says which.
     Target t{"cold read amplification < 1.25x", "", false, false};
+    const ReadSet* direct = r.reads.find("store direct, level 0");
     if (cold) {
-      t.measured = fmt::format("{:.2f}x total, {:.2f}x median per brick ({:.1f} KB from disk for "
-                               "{:.1f} KB chunks; whole pages alone: {:.2f}x)",
+      t.measured = fmt::format("buffered {:.2f}x total, {:.2f}x median per brick ({:.1f} KB from "
+                               "disk for {:.1f} KB chunks; whole pages alone: {:.2f}x)",
                                cold->amplification(), cold->amplification_p50(),
                                cold->mean_disk_bytes() / 1e3, cold->mean_payload_bytes() / 1e3,
                                cold->page_amplification());
       t.met = cold->amplification() < 1.25;
+      t.evaluated = true;
+    }
+    if (direct) {
+      const Summary l = direct->latency();
+      t.measured += fmt::format("; direct reads {:.2f}x total ({:.1f} KB from disk, p50 {:.0f} us)",
+                                direct->amplification(), direct->mean_disk_bytes() / 1e3, l.p50);
+      t.met = t.met || direct->amplification() < 1.25;
       t.evaluated = true;
     }
     out.push_back(t);

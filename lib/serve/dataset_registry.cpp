@@ -11,7 +11,8 @@ namespace strielad::serve {
 
 namespace fs = std::filesystem;
 
-DatasetRegistry::DatasetRegistry(const fs::path& root) {
+DatasetRegistry::DatasetRegistry(const fs::path& root, bool direct_reads)
+    : direct_reads_(direct_reads) {
   std::error_code ec;
   if (!fs::is_directory(root, ec)) {
     throw make_error(ErrorCode::kNotFound, "{}: dataset root is not a directory", root.string());
@@ -71,7 +72,7 @@ std::shared_ptr<const Store> DatasetRegistry::open(std::string_view name) {
   if (const auto it = open_.find(resolved); it != open_.end()) return it->second;
   std::shared_ptr<const Store> store;
   try {
-    store = Store::open(resolved);
+    store = Store::open(resolved, StoreOpenOptions{.direct_reads = direct_reads_});
   } catch (const Error& e) {
     throw e.with_context(fmt::format("dataset '{}'", name));
   }

@@ -19,8 +19,9 @@ namespace strielad::serve {
 
 class DatasetRegistry {
  public:
-  // \error kNotFound when the root is not a directory.
-  explicit DatasetRegistry(const std::filesystem::path& root);
+  // \error kNotFound when the root is not a directory. `direct_reads`: stores read
+  // their chunks with O_DIRECT (StoreOpenOptions::direct_reads).
+  explicit DatasetRegistry(const std::filesystem::path& root, bool direct_reads = false);
 
   const std::filesystem::path& root() const { return root_; }
 
@@ -31,6 +32,7 @@ class DatasetRegistry {
 
  private:
   std::filesystem::path root_;  // canonical
+  bool direct_reads_ = false;
   std::mutex mutex_;
   std::map<std::filesystem::path, std::shared_ptr<const Store>> open_;
 };

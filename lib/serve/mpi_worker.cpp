@@ -47,7 +47,7 @@ class Worker {
                                  : std::max(1u, std::thread::hardware_concurrency())),
         cache_(options.cache_bytes) {
     try {
-      datasets_.emplace(options.root);
+      datasets_.emplace(options.root, options.direct_reads);
     } catch (const Error& e) {
       error_ = e.code();
       error_message_ = e.what();

@@ -24,6 +24,7 @@ struct MpiWorkerOptions {
   std::filesystem::path root;
   unsigned threads = 0;  // tasks run at once; 0 = one per hardware thread
   std::uint64_t cache_bytes = 1ull << 30;
+  bool direct_reads = false;  // StoreOpenOptions::direct_reads
 };
 
 // Serves rank 0 until it sends the stop, then returns 0; returns 1 when the worker could

@@ -29,7 +29,7 @@ std::unique_ptr<NodeExecutor> or_local(std::unique_ptr<NodeExecutor> executor,
 Server::Server(ServerConfig config, std::unique_ptr<NodeExecutor> executor)
     : config_(std::move(config)),
       executor_(or_local(std::move(executor), config_.cache_bytes)),
-      datasets_(config_.root),
+      datasets_(config_.root, config_.direct_reads),
       dispatcher_(worker_count(config_.threads), *executor_, counters_, config_.prefetch),
       listener_(net::listen_tcp(config_.listen)),
       port_(net::local_port(listener_)) {

@@ -23,6 +23,8 @@ struct ServerConfig {
   std::optional<std::string> token;
   unsigned threads = 0;  // extraction workers; 0 = one per hardware thread
   std::uint64_t cache_bytes = 1ull << 30;
+  // Read bricks with O_DIRECT, past the page cache (StoreOpenOptions::direct_reads).
+  bool direct_reads = false;
   std::size_t max_clients = 64;
   bool prefetch = true;
   std::string server_name = "strielad-serve";

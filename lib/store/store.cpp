@@ -2,6 +2,7 @@
 #include "store/store.h"
 
 #include "core/checksum.h"
+#include "core/direct_read_file.h"
 #include "core/error.h"
 #include "core/file_io.h"
 #include "store/brick_cache.h"
@@ -16,6 +17,7 @@ struct Store::StepState {
   std::mutex mutex;
   bool opened = false;
   ReadOnlyFile file;
+  std::unique_ptr<DirectReadFile> direct;  // chunk reads, when opened with direct_reads
   format::StepFooter footer;
   std::vector<format::SectionEntry> sections;
   std::vector<std::unique_ptr<const std::vector<IndexEntry>>> indexes;  // per variable, lazy
@@ -36,7 +38,9 @@ std::shared_ptr<const Store> Store::open(const std::filesystem::path& dir,
                      "re-running strielad-convert or 'strielad-convert finalize'",
                      dir.string());
   }
-  return std::shared_ptr<const Store>(new Store(dir, std::move(manifest)));
+  std::shared_ptr<Store> store(new Store(dir, std::move(manifest)));
+  store->direct_reads_ = options.direct_reads;
+  return store;
 }
 
 Store::Store(std::filesystem::path dir, format::Manifest manifest)
@@ -134,6 +138,7 @@ Store::StepState& Store::step_state(std::uint32_t step) const {
   index_bytes_ += header.size() + footer_bytes.size() + table.size();
   s.footer = f;
   s.file = std::move(file);
+  if (direct_reads_) s.direct = DirectReadFile::open(path);  // null: buffered after all
   s.indexes.resize(variable_count());
   s.opened = true;
   return s;
@@ -182,7 +187,11 @@ Brick Store::read_brick(std::uint32_t step, std::uint32_t variable, NodeId node)
 
   StepState& s = step_state(step);
   std::vector<std::byte> chunk(e.chunk_size);
-  s.file.read_at(e.chunk_offset, chunk);
+  if (s.direct) {
+    device_bytes_ += s.direct->read_at(e.chunk_offset, chunk);
+  } else {
+    s.file.read_at(e.chunk_offset, chunk);
+  }
   chunks_read_ += 1;
   chunk_bytes_ += chunk.size();
   const auto what = [&] {
@@ -205,7 +214,8 @@ std::shared_ptr<const Brick> Store::read_brick(std::uint32_t step, std::uint32_t
 }
 
 StoreReadCounters Store::counters() const {
-  return StoreReadCounters{chunks_read_.load(), chunk_bytes_.load(), index_bytes_.load()};
+  return StoreReadCounters{chunks_read_.load(), chunk_bytes_.load(), index_bytes_.load(),
+                           device_bytes_.load()};
 }
 
 }  // namespace strielad

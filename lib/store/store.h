@@ -26,12 +26,18 @@ class BrickCache;
 struct StoreOpenOptions {
   // Open a store whose conversion has not been finalized (steps may be missing).
   bool allow_incomplete = false;
+  // Read chunks with O_DIRECT (core/direct_read_file.h): only the 512-byte device blocks
+  // a chunk spans come from disk, not whole 4 KiB pages, and nothing goes through the
+  // kernel's page cache (the caller's BrickCache is then the only cache). Index
+  // sections stay buffered. Where the file system has no direct I/O, reads stay buffered.
+  bool direct_reads = false;
 };
 
 struct StoreReadCounters {
   std::uint64_t chunks_read = 0;   // data bricks fetched from disk
   std::uint64_t chunk_bytes = 0;   // compressed bytes of those bricks
   std::uint64_t index_bytes = 0;   // bytes of headers, footers, tables and index sections
+  std::uint64_t direct_bytes = 0;  // device blocks read for chunks with direct reads
 };
 
 class Store {
@@ -80,7 +86,9 @@ class Store {
   format::Manifest manifest_;
   OctreeLayout octree_;
   std::vector<std::unique_ptr<StepState>> steps_;
-  mutable std::atomic<std::uint64_t> chunks_read_{0}, chunk_bytes_{0}, index_bytes_{0};
+  bool direct_reads_ = false;
+  mutable std::atomic<std::uint64_t> chunks_read_{0}, chunk_bytes_{0}, index_bytes_{0},
+      device_bytes_{0};
 };
 
 }  // namespace strielad

@@ -49,8 +49,10 @@ class ServerLoopbackTest : public ::testing::Test {
   }
   static void TearDownTestSuite() { delete dir_; }
 
-  std::unique_ptr<serve::Server> start_server(unsigned threads = 2, std::size_t max_clients = 8) {
+  std::unique_ptr<serve::Server> start_server(unsigned threads = 2, std::size_t max_clients = 8,
+                                              bool direct_reads = false) {
     serve::ServerConfig config;
+    config.direct_reads = direct_reads;
     config.root = *dir_ / "root";
     config.listen = net::Endpoint{"127.0.0.1", 0};
     config.token = kToken;
@@ -69,6 +71,9 @@ class ServerLoopbackTest : public ::testing::Test {
     return client::ServerClient::connect(net::Endpoint{"127.0.0.1", server.port()}, options);
   }
 
+  // Every node of the whole octree over the wire equals batch extraction.
+  void expect_results_equal_batch_extraction(bool direct_reads);
+
   static testing::TempDir* dir_;
 };
 testing::TempDir* ServerLoopbackTest::dir_ = nullptr;
@@ -81,8 +86,8 @@ std::map<NodeId, protocol::NodeResult> collect(client::ServerClient& c, std::siz
   return testing::collect_results(c, wanted, generation, order, 20s);
 }
 
-TEST_F(ServerLoopbackTest, ResultsEqualBatchExtraction) {
-  auto server = start_server();
+void ServerLoopbackTest::expect_results_equal_batch_extraction(bool direct_reads) {
+  auto server = start_server(2, 8, direct_reads);
   auto c = connect(*server);
   c->open_dataset("small");
   const Scene scene = parse_scene(kSceneJson, "test");
@@ -138,6 +143,13 @@ TEST_F(ServerLoopbackTest, ResultsEqualBatchExtraction) {
   }
   EXPECT_GT(meshes, 5u);
   EXPECT_EQ(c->stale_results(), 0u);
+}
+
+TEST_F(ServerLoopbackTest, ResultsEqualBatchExtraction) { expect_results_equal_batch_extraction(false); }
+
+// --direct-io: bricks read with O_DIRECT (or buffered where the file system has none).
+TEST_F(ServerLoopbackTest, DirectReadsGiveTheSameResults) {
+  expect_results_equal_batch_extraction(true);
 }
 
 // Counts how many nodes run at once; the first two wait (up to 10 s) for each other.
