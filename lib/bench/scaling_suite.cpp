@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "bench/cut_client.h"
 #include "bench/machine_info.h"
@@ -183,9 +184,21 @@ ServerScaling measure_server(const ScalingSuiteOptions& o, const ServerLayout& l
   std::vector<double> first, half, all, scene_all;
   for (int r = 0; r < o.repeat; ++r) {
     files.evict();
-    BenchServer server(o.server_binary, config,
-                       o.work / fmt::format("server-{}x{}-{}.log", layout.ranks, layout.threads, r),
-                       launcher);
+    const auto log = o.work / fmt::format("server-{}x{}-{}.log", layout.ranks, layout.threads, r);
+    std::optional<BenchServer> started;
+    try {
+      started.emplace(o.server_binary, config, log, launcher);
+    } catch (const Error& e) {
+      // An installed mpirun that cannot start jobs here (no slots, no network, a broken
+      // Open MPI) costs this layout only; a threaded server that fails is a real failure.
+      if (launcher.empty()) throw;
+      spdlog::warn("scaling: {} rank(s) x {} thread(s) skipped: {}", layout.ranks, layout.threads,
+                   e.what());
+      s.skipped = fmt::format("mpirun did not start the server ({}; log {})", e.what(),
+                              log.string());
+      return s;
+    }
+    BenchServer& server = *started;
     CutClient c({"127.0.0.1", server.port()}, dataset, {}, "bench scaling");
     c.move(typical_cameras(c.frame(), o.aspect).front().camera);
     s.cut = c.cut_size();

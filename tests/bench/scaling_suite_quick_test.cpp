@@ -86,5 +86,23 @@ TEST(ScalingSuiteQuickTest, CostGrowsWithGridAndSubvolumes) {
   EXPECT_EQ(j["grids"].size(), 3u);
 }
 
+// An installed mpirun that cannot start jobs costs only its own layouts: they are marked
+// skipped with the reason, and the threaded server is still measured.
+TEST(ScalingSuiteQuickTest, MpirunThatCannotStartSkipsOnlyItsLayouts) {
+  bench::ScalingSuiteOptions o = bench::quick_scaling_options({});
+  o.work = std::filesystem::temp_directory_path() / "strielad_scaling_suite_broken_mpirun_test";
+  o.server_binary = STRIELAD_SERVE_EXE;
+  o.mpirun = "/bin/false";  // exits at once: the server never reports its port
+  o.fractions = {1.0};
+  o.layouts = {{1, 1}, {2, 1}};
+  const auto report = bench::run_scaling_suite(o);
+  ASSERT_EQ(report.servers.size(), 2u);
+  EXPECT_TRUE(report.servers[0].skipped.empty()) << report.servers[0].skipped;
+  EXPECT_EQ(report.servers[0].complete, report.servers[0].rounds);
+  EXPECT_NE(report.servers[1].skipped.find("mpirun did not start the server"), std::string::npos)
+      << report.servers[1].skipped;
+  EXPECT_EQ(report.servers[1].complete, 0u);
+}
+
 }  // namespace
 }  // namespace strielad::testing
