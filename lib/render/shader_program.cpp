@@ -6,6 +6,8 @@
 #include <regex>
 #include <sstream>
 
+#include "core/error.h"
+
 namespace strielad::render {
 namespace {
 
@@ -127,6 +129,17 @@ CompileResult compile_program(const std::vector<StageSource>& stages,
   for (const auto& shader : shaders) glDetachShader(program.get(), shader.get());
   result.program = std::move(program);
   return result;
+}
+
+GlProgram compile_builtin_program(const std::string& vertex, const std::string& fragment,
+                                  std::string_view what) {
+  auto result = compile_program({{GL_VERTEX_SHADER, vertex, std::nullopt},
+                                 {GL_FRAGMENT_SHADER, fragment, std::nullopt}},
+                                "built-in");
+  if (!result.ok()) {
+    throw make_error(ErrorCode::kInternal, "{} program: {}", what, result.first_error());
+  }
+  return std::move(result.program);
 }
 
 }  // namespace strielad::render

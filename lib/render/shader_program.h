@@ -15,6 +15,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "render/gl_handles.h"
@@ -46,6 +47,11 @@ struct CompileResult {
 // Compiles every stage and links them. Never throws for bad GLSL: that is a result.
 CompileResult compile_program(const std::vector<StageSource>& stages,
                               const std::string& user_name);
+
+// A program of built-in vertex and fragment code only. Its GLSL failing to compile is a
+// bug: throws kInternal, "WHAT program: first error".
+GlProgram compile_builtin_program(const std::string& vertex, const std::string& fragment,
+                                  std::string_view what);
 
 // Splits a driver's info log into diagnostics, rewriting positions as described above
 // (exposed for tests: driver logs differ).

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <optional>
 
-#include "core/error.h"
 #include "render/shader_program.h"
 #include "view/node_geometry.h"
 
@@ -130,13 +129,7 @@ std::array<float, 3> colormap_color(std::string_view name, double t) {
 }
 
 SliceDrawing::SliceDrawing() {
-  auto result = compile_program({{GL_VERTEX_SHADER, kVertexSource, std::nullopt},
-                                 {GL_FRAGMENT_SHADER, kFragmentSource, std::nullopt}},
-                                "built-in");
-  if (!result.ok()) {
-    throw make_error(ErrorCode::kInternal, "slice program: {}", result.first_error());
-  }
-  program_ = std::move(result.program);
+  program_ = compile_builtin_program(kVertexSource, kFragmentSource, "slice");
   const auto rows = static_cast<GLsizei>(maps().size());
   std::vector<std::uint8_t> texels;
   texels.reserve(static_cast<std::size_t>(kTextureWidth * rows * 4));

@@ -4,7 +4,6 @@
 #include <string>
 #include <vector>
 
-#include "core/error.h"
 #include "render/shader_program.h"
 
 namespace strielad::render {
@@ -74,13 +73,7 @@ void main() {
 }  // namespace
 
 TerrainDrawing::TerrainDrawing() {
-  auto result = compile_program({{GL_VERTEX_SHADER, kVertex, std::nullopt},
-                                 {GL_FRAGMENT_SHADER, kFragment, std::nullopt}},
-                                "built-in");
-  if (!result.ok()) {
-    throw make_error(ErrorCode::kInternal, "terrain program: {}", result.first_error());
-  }
-  program_ = std::move(result.program);
+  program_ = compile_builtin_program(kVertex, kFragment, "terrain");
 }
 
 TerrainDrawStats TerrainDrawing::draw(const view::TerrainFrame& frame,

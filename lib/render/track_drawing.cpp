@@ -3,7 +3,6 @@
 
 #include <vector>
 
-#include "core/error.h"
 #include "render/colored_vertices.h"
 #include "render/shader_program.h"
 #include "render/volume_shaders.h"
@@ -11,13 +10,7 @@
 namespace strielad::render {
 
 TrackDrawing::TrackDrawing() {
-  auto result = compile_program({{GL_VERTEX_SHADER, line_vertex_source(), std::nullopt},
-                                 {GL_FRAGMENT_SHADER, line_fragment_source(), std::nullopt}},
-                                "built-in");
-  if (!result.ok()) {
-    throw make_error(ErrorCode::kInternal, "track program: {}", result.first_error());
-  }
-  program_ = std::move(result.program);
+  program_ = compile_builtin_program(line_vertex_source(), line_fragment_source(), "track");
   vertex_array_ = make_vertex_array();
 }
 

@@ -29,17 +29,6 @@ void set_float(GLuint program, const char* name, double v) {
   glProgramUniform1f(program, location(program, name), static_cast<float>(v));
 }
 
-GlProgram builtin_program(const std::string& vertex, const std::string& fragment,
-                          const char* what) {
-  auto result = compile_program({{GL_VERTEX_SHADER, vertex, std::nullopt},
-                                 {GL_FRAGMENT_SHADER, fragment, std::nullopt}},
-                                "built-in");
-  if (!result.ok()) {
-    throw make_error(ErrorCode::kInternal, "{} program: {}", what, result.first_error());
-  }
-  return std::move(result.program);
-}
-
 // Inverse of a general 4x4 matrix (column-major), by cofactors in double.
 lod::Mat4 inverse(const lod::Mat4& m) {
   std::array<double, 16> a{}, inv{};
@@ -107,9 +96,9 @@ VolumeRenderer::VolumeRenderer(RenderSettings settings) : settings_(settings) {
                      major, minor);
   }
   background_program_ =
-      builtin_program(resolve_vertex_source(), background_fragment_source(), "background");
-  line_program_ = builtin_program(line_vertex_source(), line_fragment_source(), "outline");
-  sort_program_ = builtin_program(resolve_vertex_source(), sort_fragment_source(), "sort");
+      compile_builtin_program(resolve_vertex_source(), background_fragment_source(), "background");
+  line_program_ = compile_builtin_program(line_vertex_source(), line_fragment_source(), "outline");
+  sort_program_ = compile_builtin_program(resolve_vertex_source(), sort_fragment_source(), "sort");
   empty_vertex_array_ = make_vertex_array();
   line_vertex_array_ = make_vertex_array();
   line_buffer_ = make_buffer();
