@@ -380,6 +380,9 @@ std::shared_ptr<const TerrainFrame> TerrainTiles::update(const lod::Camera& came
     if (split) {
       bool all = true;
       for (const auto& c : kids) {
+        // A child that has arrived is in use while it waits for its siblings: evicting
+        // it would let a tight cache bound reload it forever (the split never happens).
+        if (Entry* child = const_cast<Entry*>(loaded(c))) child->last_used = now;
         if (!loaded(c) && !failed_.contains(c)) {
           all = false;
           wanted.emplace_back(double(c.level) * 1e7 + distance, c);

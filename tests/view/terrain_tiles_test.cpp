@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <span>
 #include <thread>
 
 #include "lod/lod_test_grids.h"
@@ -140,6 +141,39 @@ TEST(TerrainTilesTest, CacheStaysWithinItsByteBound) {
     EXPECT_LE(s.cache_bytes, bound + 2 * drawn_bytes) << x;
   }
   EXPECT_GT(tiles.status().loads, tiles.status().cached);  // something was evicted
+}
+
+// A DEM whose reads take a while, so that a tile's children arrive one by one over many
+// frames.
+class SlowDem final : public geo::DemSource {
+ public:
+  explicit SlowDem(std::shared_ptr<FunctionDem> dem) : dem_(std::move(dem)) {}
+  std::size_t width() const override { return dem_->width(); }
+  std::size_t height() const override { return dem_->height(); }
+  void georeference(std::span<const double> cols, std::span<const double> rows,
+                    std::span<geo::LonLat> out) const override {
+    dem_->georeference(cols, rows, out);
+  }
+  std::vector<float> read(const geo::DemWindow& w) const override {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    return dem_->read(w);
+  }
+  std::string describe() const override { return "slow function DEM"; }
+  std::string georeferencing() const override { return dem_->georeferencing(); }
+
+ private:
+  std::shared_ptr<FunctionDem> dem_;
+};
+
+// With a cache bound far below what a view needs, children that have arrived are kept
+// while they wait for their siblings (evicting them would reload them forever).
+TEST(TerrainTilesTest, TightCacheStillCompletesWhenChildrenArriveOneByOne) {
+  const auto frame = store_frame();
+  view::TerrainTiles tiles(std::make_shared<SlowDem>(big_dem()), frame,
+                           {.error_pixels = 2.0, .cache_bytes = 1});
+  const auto drawn = settle(tiles, camera_at(frame, {0, -80, 30}, {0, 0, 0}));
+  EXPECT_TRUE(tiles.complete());
+  EXPECT_GT(drawn->tiles.size(), 4u);  // the root was split
 }
 
 TEST(TerrainTilesTest, MissingSamplesAreFlaggedAtHeightZero) {
