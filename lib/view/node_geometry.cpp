@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "view/node_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string_view>
@@ -94,8 +95,13 @@ void GeometryPlacer::append_slice(const Mesh& mesh, std::uint32_t slot, NodeGeom
     float* dst = out.slice_vertices.data() + (first + v) * kSliceVertexFloats;
     place_vertex(frame_, mesh, v, out.node, "slice", dst + kSliceVertexPosition,
                  dst + kSliceVertexNormal);
-    dst[kSliceVertexValue] = mesh.attributes[0][v];
+    const float value = mesh.attributes[0][v];
+    dst[kSliceVertexValue] = value;
     dst[kSliceVertexSlot] = static_cast<float>(slot);
+    if (std::isfinite(value) && slot < kMaxViewSlices) {
+      auto& r = out.slice_value_ranges[slot];
+      r = {std::min(r[0], value), std::max(r[1], value)};
+    }
   }
   append_triangles(mesh, first, out.node, "slice", out.slice_indices);
 }

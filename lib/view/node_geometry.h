@@ -11,8 +11,10 @@
 // Jacobian, so they stay outward and perpendicular to the surface in the world frame.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -44,6 +46,15 @@ inline constexpr std::size_t kSliceVertexValue = 6;     // 1 float: colouring va
 inline constexpr std::size_t kSliceVertexSlot = 7;      // 1 float: the slice's position in the scene
 inline constexpr std::size_t kSliceVertexFloats = 8;
 
+// Smallest and largest finite colouring value per slice slot; lo > hi when there is none.
+using SliceValueRanges = std::array<std::array<float, 2>, kMaxViewSlices>;
+inline constexpr SliceValueRanges kNoSliceValues = [] {
+  SliceValueRanges r{};
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  for (auto& lo_hi : r) lo_hi = {kInf, -kInf};
+  return r;
+}();
+
 struct NodeGeometry {
   NodeId node = 0;
   std::uint32_t step = 0;               // the time step the meshes show
@@ -52,6 +63,10 @@ struct NodeGeometry {
                                         // in axis coordinates (see mirrored)
   std::vector<float> slice_vertices;          // kSliceVertexFloats per vertex
   std::vector<std::uint32_t> slice_indices;   // slice triangles (drawn two-sided)
+  // The range of each slice's values in slice_vertices, kept as they are appended, so
+  // that the range of everything shown (view/slice_ranges.h) costs no pass over the
+  // vertices on every frame.
+  SliceValueRanges slice_value_ranges = kNoSliceValues;
   std::size_t vertex_count() const { return vertices.size() / kVertexFloats; }
   std::size_t triangle_count() const { return indices.size() / 3; }
   std::size_t slice_vertex_count() const { return slice_vertices.size() / kSliceVertexFloats; }

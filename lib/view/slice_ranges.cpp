@@ -2,7 +2,6 @@
 #include "view/slice_ranges.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "view/node_geometry.h"
 
@@ -11,16 +10,15 @@ namespace strielad::view {
 std::vector<std::optional<SliceRange>> shown_slice_ranges(const ProgressiveMeshes& meshes,
                                                           std::size_t slice_count) {
   std::vector<std::optional<SliceRange>> ranges(slice_count);
+  const std::size_t slots = std::min(slice_count, kMaxViewSlices);
   for (const auto& [node, entry] : meshes.entries()) {
     if (!entry.mesh) continue;
-    const auto& v = entry.mesh->slice_vertices;
-    for (std::size_t i = 0; i + kSliceVertexFloats <= v.size(); i += kSliceVertexFloats) {
-      const float value = v[i + kSliceVertexValue];
-      const float slot = v[i + kSliceVertexSlot];
-      if (!std::isfinite(value) || !(slot >= 0) || slot >= float(slice_count)) continue;
-      auto& r = ranges[static_cast<std::size_t>(slot)];
-      if (!r) r = SliceRange{value, value};
-      else r = SliceRange{std::min((*r)[0], value), std::max((*r)[1], value)};
+    for (std::size_t s = 0; s < slots; ++s) {
+      const auto& node_range = entry.mesh->slice_value_ranges[s];
+      if (!(node_range[0] <= node_range[1])) continue;  // no finite value in this node
+      auto& r = ranges[s];
+      r = r ? SliceRange{std::min((*r)[0], node_range[0]), std::max((*r)[1], node_range[1])}
+            : SliceRange{node_range[0], node_range[1]};
     }
   }
   return ranges;
