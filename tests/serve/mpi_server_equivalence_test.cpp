@@ -311,7 +311,13 @@ TEST_F(MpiServerTest, OneWorkerRankEqualsThreadedRun) {
   auto mpi = start_mpi(2, {"--threads", "2"});
   ASSERT_TRUE(mpi);
   auto c = connect(mpi->address());
-  const CutRun run = run_cuts(*c);
+  CutRun run;
+  try {
+    run = run_cuts(*c);
+  } catch (const std::exception& e) {
+    // Seen once in CI under load ("server closed the connection"): keep what mpirun said.
+    FAIL() << e.what() << "; mpirun log:\n" << mpi->log();
+  }
   const auto stats = nlohmann::json::parse(c->stats());
   EXPECT_EQ(stats["ranks"], 2) << stats.dump();
   EXPECT_EQ(stats["workers"], 2) << stats.dump();
