@@ -10,17 +10,13 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "core/io_error.h"
 
 namespace strielad {
 namespace {
 
 // Buffer alignment that every device's direct I/O accepts.
 constexpr std::size_t kMemoryAlignment = 4096;
-
-Error io_error(std::string_view action, const std::filesystem::path& path, int err) {
-  return make_error(err == ENOENT ? ErrorCode::kNotFound : ErrorCode::kIo, "{}: cannot {}: {}",
-                    path.string(), action, std::strerror(err));
-}
 
 struct AlignedFree {
   void operator()(std::byte* p) const { std::free(p); }

@@ -10,14 +10,10 @@
 #include <random>
 
 #include "core/error.h"
+#include "core/io_error.h"
 
 namespace strielad {
 namespace {
-
-Error io_error(std::string_view action, const std::filesystem::path& path, int err) {
-  return make_error(err == ENOENT ? ErrorCode::kNotFound : ErrorCode::kIo, "{}: cannot {}: {}",
-                    path.string(), action, std::strerror(err));
-}
 
 void write_all(int fd, std::span<const std::byte> bytes, const std::filesystem::path& path) {
   std::size_t done = 0;
