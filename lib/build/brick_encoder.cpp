@@ -49,20 +49,27 @@ struct RowStats {
   T max() const { return std::bit_cast<T>(order_key<T>(max_key)); }
 };
 
-// Adds n samples to `stats`. Branch-free, on locals and integer bits only, so that GCC
-// 12 vectorizes it (a floating-point `v == v` in the loop keeps it scalar): a sample is
-// NaN exactly when its magnitude bits exceed those of infinity, and a NaN's key becomes
-// a value that cannot win the min or the max.
+// All ones when the bits of a T are not a NaN, else zero: a sample is NaN exactly when
+// its magnitude bits exceed those of infinity. In integer bits, because a
+// floating-point `v == v` in a loop keeps GCC 12 from vectorizing it.
 template <typename T>
-void scan_row(const T* row, std::size_t n, RowStats<T>& stats) {
+SignedBits<T> valid_mask(SignedBits<T> b) {
   using K = SignedBits<T>;
   constexpr K kMagnitude = std::numeric_limits<K>::max();
   constexpr K kInfinity = std::bit_cast<K>(std::numeric_limits<T>::infinity());
+  return (b & kMagnitude) <= kInfinity ? K(-1) : K(0);
+}
+
+// Adds n samples to `stats`. Branch-free, on locals and integer bits only, so that GCC
+// 12 vectorizes it; a NaN's key becomes a value that cannot win the min or the max.
+template <typename T>
+void scan_row(const T* row, std::size_t n, RowStats<T>& stats) {
+  using K = SignedBits<T>;
   K mn = stats.min_key, mx = stats.max_key;
   K valid = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const K b = std::bit_cast<K>(row[i]);
-    const K ok = (b & kMagnitude) <= kInfinity ? K(-1) : K(0);
+    const K ok = valid_mask<T>(b);
     const K k = order_key<T>(b);
     valid -= ok;
     const K lo = (k & ok) | (std::numeric_limits<K>::max() & ~ok);
@@ -79,12 +86,8 @@ void scan_row(const T* row, std::size_t n, RowStats<T>& stats) {
 template <typename T>
 std::uint64_t count_valid(const T* row, std::size_t n) {
   using K = SignedBits<T>;
-  constexpr K kMagnitude = std::numeric_limits<K>::max();
-  constexpr K kInfinity = std::bit_cast<K>(std::numeric_limits<T>::infinity());
   K valid = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    valid += (std::bit_cast<K>(row[i]) & kMagnitude) <= kInfinity ? 1 : 0;
-  }
+  for (std::size_t i = 0; i < n; ++i) valid -= valid_mask<T>(std::bit_cast<K>(row[i]));
   return static_cast<std::uint64_t>(valid);
 }
 

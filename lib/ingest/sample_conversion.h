@@ -105,36 +105,28 @@ ConversionResult convert_samples(std::span<const Raw> raw, const CfValueAttribut
       Out* dst = out.data();
       const std::size_t n = raw.size();
       const unsigned nan_missing = nan_is_missing ? 1u : 0u;
+      auto finite = [](Raw r) -> unsigned { return r - r == Raw(0) ? 1u : 0u; };  // 0: NaN, +-Inf
+      auto missing = [f0, f1, nan_missing](Raw r) -> unsigned {
+        return static_cast<unsigned>(r == f0) | static_cast<unsigned>(r == f1) |
+               (nan_missing & static_cast<unsigned>(r != r));
+      };
       constexpr std::size_t kBlock = 2048;
       for (std::size_t b = 0; b < n; b += kBlock) {
         const std::size_t e = std::min(n, b + kBlock);
         if (!nan_as_fill && !result.first_non_finite) {
           unsigned undeclared = 0;
-          for (std::size_t i = b; i < e; ++i) {
-            const Raw r = src[i];
-            const unsigned finite = r - r == Raw(0) ? 1u : 0u;  // 0 for NaN and +-Inf
-            const unsigned missing = static_cast<unsigned>(r == f0) |
-                                     static_cast<unsigned>(r == f1) |
-                                     (nan_missing & static_cast<unsigned>(r != r));
-            undeclared |= (missing ^ 1u) & (finite ^ 1u);
-          }
+          for (std::size_t i = b; i < e; ++i) undeclared |= (missing(src[i]) ^ 1u) & (finite(src[i]) ^ 1u);
           for (std::size_t i = b; undeclared != 0 && i < e; ++i) {
-            const Raw r = src[i];
-            const bool missing = r == f0 || r == f1 || (nan_is_missing && r != r);
-            if (!missing && !std::isfinite(r)) {
+            if (((missing(src[i]) ^ 1u) & (finite(src[i]) ^ 1u)) != 0) {
               result.first_non_finite = i;
-              result.non_finite_value = static_cast<double>(r);
+              result.non_finite_value = static_cast<double>(src[i]);
               break;
             }
           }
         }
         for (std::size_t i = b; i < e; ++i) {
           const Raw r = src[i];
-          const unsigned finite = r - r == Raw(0) ? 1u : 0u;
-          const unsigned missing = static_cast<unsigned>(r == f0) |
-                                   static_cast<unsigned>(r == f1) |
-                                   (nan_missing & static_cast<unsigned>(r != r));
-          dst[i] = (missing | (finite ^ 1u)) != 0 ? kNaN : static_cast<Out>(r);
+          dst[i] = (missing(r) | (finite(r) ^ 1u)) != 0 ? kNaN : static_cast<Out>(r);
         }
       }
       return result;
