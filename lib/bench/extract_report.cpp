@@ -116,24 +116,28 @@ Table brick_table(const ExtractSuiteReport& r, const ExtractCase& c) {
   }
   for (const BrickGroup& g : r.groups) {
     if (g.extract_case.name != c.name) continue;
-    std::uint64_t simple = 0, clipped = 0;
+    std::uint64_t table = 0, cut = 0, simple = 0, clipped = 0;
     for (const BrickRun& run : g.runs) {
+      table += run.kernel_stats.table_cells;
+      cut += run.kernel_stats.cut_cells;
       simple += run.kernel_stats.simple_tets;
       clipped += run.kernel_stats.clipped_tets;
     }
+    const double tetrahedra_share =
+        cut == 0 ? 0.0 : 100.0 * static_cast<double>(cut - table) / static_cast<double>(cut);
+    const double clipper_share =
+        simple + clipped == 0 ? 0.0 : 100.0 * static_cast<double>(clipped) / static_cast<double>(simple + clipped);
     t.notes.push_back(fmt::format(
         "B={}: {} bricks picked (seed {}) of {} full {}^3-sample level-0 nodes whose exact [min, "
-        "max] "
-        "straddles {} = {}; kernel: {:.1f}% of cut tetrahedra took the general clipper; group took "
+        "max] straddles {} = {}; kernel: {:.1f}% of cut cells crossed by several conditions (cut "
+        "into tetrahedra), {:.1f}% of their cut tetrahedra took the general clipper; group took "
         "{:.0f} s",
         g.brick, g.runs.size(), r.options.pick_seed, g.candidates, g.brick + 1,
-        c.limits[c.select].var, c.threshold(),
-        ratio(static_cast<double>(clipped), static_cast<double>(simple + clipped)) * 100,
-        g.seconds));
+        c.limits[c.select].var, c.threshold(), tetrahedra_share, clipper_share, g.seconds));
   }
   t.notes.push_back(
-      "timed: strielad kernel = the whole extract_node_mesh call (conditions, tetrahedra, welding, "
-      "axis mapping, gradient normals); paper VTK pipeline = vtkRectilinearGrid build + "
+      "timed: strielad kernel = the whole extract_node_mesh call (conditions, cell loops and "
+      "tetrahedra, welding, axis mapping, gradient normals); paper VTK pipeline = vtkRectilinearGrid build + "
       "vtkTableBasedClipDataSet per limit + vtkDataSetSurfaceFilter + vtkTriangleFilter + "
       "vtkPolyDataNormals; vtkFlyingEdges3D = vtkImageData build + contour with normals; OpenVDB = "
       "FloatGrid + copyFromDense + volumeToMesh (not the padded copy before it); the peers' "

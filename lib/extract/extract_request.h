@@ -39,7 +39,8 @@ struct ExtractStats {
   std::uint64_t cells = 0;          // cells of the node
   std::uint64_t inside_cells = 0;   // cells wholly inside the region
   std::uint64_t cut_cells = 0;      // cells the region's boundary passes through
-  std::uint64_t simple_tets = 0;    // tetrahedra crossed by one condition (table case)
+  std::uint64_t table_cells = 0;    // cut cells crossed by one condition (loops by table)
+  std::uint64_t simple_tets = 0;    // tetrahedra of the other cut cells crossed by one condition
   std::uint64_t clipped_tets = 0;   // tetrahedra clipped by the general polytope clipper
   std::uint64_t conditions = 0;     // half-space conditions left after trivial ones
   bool empty_by_condition = false;  // some condition excludes the whole node

@@ -39,6 +39,23 @@ struct TetPolygon {
   std::array<int, 4> edges{};
 };
 
+// The limit surface of a cell crossed by one condition, for one in/out pattern of its
+// corners and one choice of split sides: closed loops of Kuhn edges, each turning
+// outward (counter-clockwise seen from outside the region). A loop meets every side the
+// condition crosses along the side's own crossings: on a split side through the
+// crossing on its min-max diagonal, as the Kuhn tetrahedra of the cell beyond meet it
+// (a cell crossed by several conditions, or the node beyond the node's boundary); on
+// any other side straight from cell edge to cell edge, as the same table meets it from
+// the neighbouring cell. On an unsplit side whose four corners alternate, the corners
+// on the min-max diagonal are the ones joined, as on a split side. A loop through a
+// diagonal crossing starts there (a fan from it never makes a triangle of three points
+// on one side, which are collinear where the field is linear).
+struct CellLoops {
+  std::uint8_t loops = 0;
+  std::array<std::uint8_t, 6> size{};
+  std::array<std::uint8_t, 18> edges{};
+};
+
 // A tetrahedron face on a cell side: its corners in ascending order, and whether that
 // order turns inward (clockwise seen from outside).
 struct TetFace {
@@ -46,15 +63,6 @@ struct TetFace {
   std::array<int, 3> corners{};  // cell corners
   std::array<int, 3> local{};    // the same as corners of the tetrahedron (0..3)
   bool reversed = false;
-};
-
-// The tetrahedra of a cell that one condition crosses, for each in/out pattern of the
-// cell's corners.
-struct CellCase {
-  int cut = 0;                  // tetrahedra crossed
-  std::array<int, 6> tet{};     // which
-  std::array<int, 6> bits{};    // inside bits of their corners (1..14)
-  int inside = 0;               // bit t: tetrahedron t wholly inside
 };
 
 struct Tables {
@@ -66,7 +74,8 @@ struct Tables {
   // face's min-max diagonal, so that the triangles (0, 1, 2) and (0, 2, 3) split it as
   // the Kuhn tetrahedra do.
   std::array<std::array<int, 4>, 6> side_quads{};
-  std::array<CellCase, 256> cells{};
+  std::array<CellLoops, 256 * 64> loops{};  // [inside bits * 64 + split sides]
+  std::array<std::uint8_t, 256> crossed_sides{};  // [inside bits]: sides whose corners differ
 
   Tables() {
     auto pos = [](int k) { return Vec3{double(k & 1), double((k >> 1) & 1), double((k >> 2) & 1)}; };
@@ -152,17 +161,6 @@ struct Tables {
         f.reversed = n[f.side / 2] * out < 0;
       }
     }
-    for (int in = 0; in < 256; ++in) {
-      CellCase& cc = cells[in];
-      for (int t = 0; t < 6; ++t) {
-        int bits = 0;
-        for (int k = 0; k < 4; ++k) bits |= ((in >> kTets[t][k]) & 1) << k;
-        if (bits == 15) cc.inside |= 1 << t;
-        if (bits == 0 || bits == 15) continue;
-        cc.tet[cc.cut] = t;
-        cc.bits[cc.cut++] = bits;
-      }
-    }
     for (int a = 0; a < 3; ++a) {
       const int u = 1 << ((a + 1) % 3), v = 1 << ((a + 2) % 3);
       for (int side = 0; side < 2; ++side) {
@@ -171,6 +169,69 @@ struct Tables {
         quad = {o, o | u, o | u | v, o | v};  // normal +axis
         if (side == 0) std::swap(quad[1], quad[3]);
       }
+    }
+    for (int in = 1; in < 255; ++in) {
+      for (int side = 0; side < 6; ++side) {
+        int count = 0;
+        for (int k : side_quads[side]) count += (in >> k) & 1;
+        if (count != 0 && count != 4) crossed_sides[in] |= static_cast<std::uint8_t>(1 << side);
+      }
+      for (int split = 0; split < 64; ++split) build_loops(in, split);
+    }
+  }
+
+  // The loops of one entry: per side, the region's boundary on the side's two Kuhn
+  // triangles (outward order), from each entry crossing to the next exit crossing
+  // turned around (the surface runs each shared edge the other way); on an unsplit
+  // side the two pieces through the diagonal become one.
+  void build_loops(int in, int split) {
+    std::array<int, 19> next{};
+    next.fill(-1);
+    for (int side = 0; side < 6; ++side) {
+      const auto& q = side_quads[side];
+      const int diagonal = edge_index[q[0]][q[2]];
+      int into_diagonal = -1, from_diagonal = -1;
+      for (const std::array<int, 3>& tri : {std::array<int, 3>{q[0], q[1], q[2]}, std::array<int, 3>{q[0], q[2], q[3]}}) {
+        int entry = -1, exit = -1;
+        for (int i = 0; i < 3; ++i) {
+          const int cur = tri[i], nxt = tri[(i + 1) % 3];
+          const bool cin = (in >> cur) & 1, nin = (in >> nxt) & 1;
+          if (cin == nin) continue;
+          (cin ? exit : entry) = edge_index[std::min(cur, nxt)][std::max(cur, nxt)];
+        }
+        if (entry < 0) continue;
+        if (next[entry] >= 0) throw make_error(ErrorCode::kInternal, "cell loop table: two edges leave one crossing");
+        next[entry] = exit;
+        if (exit == diagonal) into_diagonal = entry;
+        if (entry == diagonal) from_diagonal = exit;
+      }
+      if (!((split >> side) & 1) && into_diagonal >= 0) {
+        next[into_diagonal] = from_diagonal;
+        next[diagonal] = -1;
+      }
+    }
+    CellLoops& out = loops[static_cast<std::size_t>(in) * 64 + static_cast<std::size_t>(split)];
+    std::array<bool, 19> seen{};
+    int written = 0;
+    for (int start = 0; start < 19; ++start) {
+      if (next[start] < 0 || seen[start]) continue;
+      std::array<int, 18> loop{};
+      int n = 0, first = -1;
+      int e = start;
+      do {
+        if (e < 0 || seen[e] || n == 18) {
+          throw make_error(ErrorCode::kInternal, "cell loop table: a loop that does not close");
+        }
+        seen[e] = true;
+        const bool on_diagonal = std::popcount(static_cast<unsigned>(edges[e].p ^ edges[e].q)) == 2;
+        if (on_diagonal && first < 0) first = n;
+        loop[n++] = e;
+        e = next[e];
+      } while (e != start);
+      if (first < 0) first = 0;
+      if (out.loops == out.size.size() || n < 3) throw make_error(ErrorCode::kInternal, "cell loop table: bad loop");
+      out.size[out.loops++] = static_cast<std::uint8_t>(n);
+      for (int i = 0; i < n; ++i) out.edges[written++] = static_cast<std::uint8_t>(loop[(first + i) % n]);
     }
   }
 };
@@ -244,6 +305,7 @@ struct Scratch {
   std::uint32_t next_stamp = 1;  // the next extraction's
   std::vector<std::uint64_t> row_or, row_and, col_or, col_and;
   std::vector<std::uint8_t> needs_fallback;
+  std::vector<std::uint8_t> multi;  // per cell: crossed by several conditions
   std::vector<Vec3> fallback, normals;
   std::vector<CellPoint> cells;
   std::array<std::vector<double>, 3> inverse_spacing;
@@ -394,10 +456,10 @@ class Kernel {
 
   // One tetrahedron whose only crossing condition is c (bits: c's inside bits of its
   // corners, 1..14): the polygon on c's plane and its faces on the node boundary.
-  void simple_tet(int t, std::uint32_t c, int bits, bool cached) {
+  void simple_tet(int t, std::uint32_t c, int bits) {
     const Tables& tb = tables();
     const TetPolygon& poly = tb.polygons[t][bits];
-    auto id = [&](int i) { return cached ? cell_edge(c, poly.edges[i]) : condition_edge(c, poly.edges[i]); };
+    auto id = [&](int i) { return condition_edge(c, poly.edges[i]); };
     const std::uint32_t a = id(0), b = id(1), d = id(2);
     if (poly.count == 3) {
       b_.oriented_triangle(c, a, b, d);
@@ -425,6 +487,52 @@ class Kernel {
         b_.oriented_quad(group, face_ids[0], face_ids[1], face_ids[2], face_ids[3]);
       } else {
         b_.oriented_polygon(group, face_ids, m);
+      }
+    }
+  }
+
+  // A cell whose only crossing condition is c: its loops on c's surface (table entry),
+  // cell edge vertices cached per cell.
+  void cell_loops(std::uint32_t c, const CellLoops& cl) {
+    std::uint32_t ids[18];
+    int k = 0;
+    for (int l = 0; l < cl.loops; ++l) {
+      const int n = cl.size[l];
+      for (int i = 0; i < n; ++i) ids[i] = cell_edge(c, cl.edges[k + i]);
+      k += n;
+      if (n == 3) {
+        b_.oriented_triangle(c, ids[0], ids[1], ids[2]);
+      } else if (n == 4) {
+        b_.oriented_quad(c, ids[0], ids[1], ids[2], ids[3]);
+      } else {
+        b_.oriented_polygon(c, ids, static_cast<std::size_t>(n));
+      }
+    }
+  }
+
+  // The same cell's faces on the node boundary: per side, the inside part of each of
+  // its two Kuhn triangles (Sutherland-Hodgman by c), so that the node beyond, whatever
+  // crosses its cells there, meets the same crossings.
+  void side_caps(std::uint32_t c, int bits) {
+    const Tables& tb = tables();
+    for (int side = 0; side < 6; ++side) {
+      if (!(boundary_ & (1 << side))) continue;
+      const auto& q = tb.side_quads[side];
+      const std::uint32_t group = side_group_ + static_cast<std::uint32_t>(side);
+      for (const std::array<int, 3>& tri : {std::array<int, 3>{q[0], q[1], q[2]}, std::array<int, 3>{q[0], q[2], q[3]}}) {
+        std::uint32_t ids[4];
+        std::size_t m = 0;
+        for (int i = 0; i < 3; ++i) {
+          const int cur = tri[i], nxt = tri[(i + 1) % 3];
+          const bool cin = (bits >> cur) & 1, nin = (bits >> nxt) & 1;
+          if (cin) ids[m++] = side_corner(side, cur);
+          if (cin != nin) ids[m++] = side_edge(side, c, std::min(cur, nxt), std::max(cur, nxt));
+        }
+        if (m == 3) {
+          b_.oriented_triangle(group, ids[0], ids[1], ids[2]);
+        } else if (m == 4) {
+          b_.oriented_quad(group, ids[0], ids[1], ids[2], ids[3]);
+        }
       }
     }
   }
@@ -555,7 +663,7 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
 
   const std::size_t sy = dims[0], sz = dims[0] * dims[1];
   const std::uint64_t all = set.all;
-  const auto& cell_cases = tables().cells;
+  const auto& cell_loops = tables().loops;
   const std::uint64_t* inside = set.inside.data();
 
   // Per row of samples (y, z): the conditions that hold somewhere and everywhere on it.
@@ -576,6 +684,55 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
   scratch.col_and.resize(dims[0]);
   std::uint64_t* col_or = scratch.col_or.data();
   std::uint64_t* col_and = scratch.col_and.data();
+  auto fill_columns = [&](std::size_t r0) {
+    const std::uint64_t* s0 = inside + r0 * dims[0];
+    const std::uint64_t* s1 = s0 + sy;
+    const std::uint64_t* s2 = s0 + sz;
+    const std::uint64_t* s3 = s0 + sz + sy;
+    for (std::size_t x = 0; x < dims[0]; ++x) {
+      col_or[x] = s0[x] | s1[x] | s2[x] | s3[x];
+      col_and[x] = s0[x] & s1[x] & s2[x] & s3[x];
+    }
+  };
+  // A row of cells (y, z) as its four sample rows summarise it: every condition holds
+  // somewhere (else the row is skipped) and the conditions that hold everywhere.
+  auto row_summary = [&](std::size_t r0, std::uint64_t& row_or, std::uint64_t& row_and) {
+    const std::size_t rr[4]{r0, r0 + 1, r0 + dims[1], r0 + dims[1] + 1};
+    row_or = 0;
+    row_and = all;
+    for (std::size_t r : rr) {
+      row_or |= scratch.row_or[r];
+      row_and &= scratch.row_and[r];
+    }
+  };
+
+  // Cells crossed by several conditions (cut into tetrahedra): the cells crossed by one
+  // condition beside them split the shared side along its diagonal, as the tetrahedra
+  // do. Looked for only where two conditions can cross one row of cells.
+  const std::size_t cx = dims[0] - 1, cy = dims[1] - 1;
+  bool any_multi = false;
+  std::uint64_t holds_everywhere = all;
+  for (std::size_t r = 0; r < rows; ++r) holds_everywhere &= scratch.row_and[r];
+  if (std::popcount(all & ~holds_everywhere) >= 2) {
+    scratch.multi.assign(cx * cy * (dims[2] - 1), 0);
+    for (std::size_t z = 0; z + 1 < dims[2]; ++z) {
+      for (std::size_t y = 0; y + 1 < dims[1]; ++y) {
+        const std::size_t r0 = z * dims[1] + y;
+        std::uint64_t row_or, row_and;
+        row_summary(r0, row_or, row_and);
+        if ((row_or & all) != all || std::popcount(all & ~row_and) < 2) continue;
+        fill_columns(r0);
+        for (std::size_t x = 0; x + 1 < dims[0]; ++x) {
+          if (((col_or[x] | col_or[x + 1]) & all) != all) continue;
+          const std::uint64_t mixed = all & ~(col_and[x] & col_and[x + 1]);
+          if ((mixed & (mixed - 1)) == 0) continue;
+          scratch.multi[(z * cy + y) * cx + x] = 1;
+          any_multi = true;
+        }
+      }
+    }
+  }
+  const std::uint8_t* multi = scratch.multi.data();
 
   for (std::size_t z = 0; z + 1 < dims[2]; ++z) {
     for (std::size_t y = 0; y + 1 < dims[1]; ++y) {
@@ -583,12 +740,8 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
       // when every condition holds on all of them only its cells on the node boundary
       // have faces.
       const std::size_t r0 = z * dims[1] + y;
-      const std::size_t rr[4]{r0, r0 + 1, r0 + dims[1], r0 + dims[1] + 1};
-      std::uint64_t row_or = 0, row_and = all;
-      for (std::size_t r : rr) {
-        row_or |= scratch.row_or[r];
-        row_and &= scratch.row_and[r];
-      }
+      std::uint64_t row_or, row_and;
+      row_summary(r0, row_or, row_and);
       if ((row_or & all) != all) continue;
       const int yz_boundary = (y == 0 ? 1 << 2 : 0) | (y + 2 == dims[1] ? 1 << 3 : 0) |
                               (z == 0 ? 1 << 4 : 0) | (z + 2 == dims[2] ? 1 << 5 : 0);
@@ -606,10 +759,7 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
       const std::uint64_t* s1 = s0 + sy;
       const std::uint64_t* s2 = s0 + sz;
       const std::uint64_t* s3 = s0 + sz + sy;
-      for (std::size_t x = 0; x < dims[0]; ++x) {
-        col_or[x] = s0[x] | s1[x] | s2[x] | s3[x];
-        col_and[x] = s0[x] & s1[x] & s2[x] & s3[x];
-      }
+      fill_columns(r0);
       for (std::size_t x = 0; x + 1 < dims[0]; ++x) {
         if (((col_or[x] | col_or[x + 1]) & all) != all) continue;  // a condition fails at every corner
         const std::uint64_t cell_and = col_and[x] & col_and[x + 1] & all;
@@ -635,20 +785,24 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
         masks[7] = s3[x + 1];
         const std::uint64_t mixed = all & ~cell_and;
         if ((mixed & (mixed - 1)) == 0) {
-          // One condition crosses the cell: marching tetrahedra by table.
+          // One condition crosses the cell: its loops by table, split along the
+          // diagonal on the node's boundary and next to cells cut into tetrahedra.
           const int c = std::countr_zero(mixed);
           int cell_bits = 0;
           for (int k = 0; k < 8; ++k) cell_bits |= static_cast<int>((masks[k] >> c) & 1) << k;
-          const CellCase& cc = cell_cases[cell_bits];
-          local.simple_tets += static_cast<std::uint64_t>(cc.cut);
-          for (int i = 0; i < cc.cut; ++i) {
-            kernel.simple_tet(cc.tet[i], static_cast<std::uint32_t>(c), cc.bits[i], true);
+          int split = boundary;
+          if (any_multi) {
+            const std::size_t cell = (z * cy + y) * cx + x;
+            split |= (x > 0 && multi[cell - 1] ? 1 : 0) | (x + 2 < dims[0] && multi[cell + 1] ? 2 : 0) |
+                     (y > 0 && multi[cell - cx] ? 4 : 0) | (y + 2 < dims[1] && multi[cell + cx] ? 8 : 0) |
+                     (z > 0 && multi[cell - cx * cy] ? 16 : 0) |
+                     (z + 2 < dims[2] && multi[cell + cx * cy] ? 32 : 0);
           }
-          if (boundary != 0) {
-            for (int t = 0; t < 6; ++t) {
-              if (cc.inside & (1 << t)) kernel.inside_tet(t);
-            }
-          }
+          split &= tables().crossed_sides[static_cast<std::size_t>(cell_bits)];
+          ++local.table_cells;
+          kernel.cell_loops(static_cast<std::uint32_t>(c),
+                            cell_loops[static_cast<std::size_t>(cell_bits) * 64 + static_cast<std::size_t>(split)]);
+          if (boundary != 0) kernel.side_caps(static_cast<std::uint32_t>(c), cell_bits);
           continue;
         }
         // Several conditions cross the cell: per tetrahedron.
@@ -670,7 +824,7 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
             const int c = std::countr_zero(tet_mixed);
             int bits = 0;
             for (int k = 0; k < 4; ++k) bits |= static_cast<int>((masks[tet[k]] >> c) & 1) << k;
-            kernel.simple_tet(t, static_cast<std::uint32_t>(c), bits, false);
+            kernel.simple_tet(t, static_cast<std::uint32_t>(c), bits);
             continue;
           }
           ++local.clipped_tets;

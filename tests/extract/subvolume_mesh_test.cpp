@@ -232,6 +232,65 @@ TEST(SubvolumeMesh, NeighbouringNodesMeetWithoutCracks) {
   expect_clean(joined);
 }
 
+// Whether a point of the uniform lattice axis(n, -1, 1) is a lattice sample.
+bool on_sample(double c, std::size_t n) {
+  const double i = (c + 1) / 2 * static_cast<double>(n - 1);
+  return std::fabs(i - std::round(i)) < 1e-9;
+}
+
+TEST(SubvolumeMesh, OneConditionCellsMeetOnCellEdgesInsideTheNode) {
+  // Inside the node a surface crossed by one condition runs straight across cell sides
+  // from one cell-edge crossing to the next (as marching cubes and the paper's clip
+  // do): no vertex lies inside a cell side, so no vertex has two coordinates off the
+  // lattice, and the surface has about two triangles per cut cell.
+  const NodeSamples s = sampled({axis(33, -1, 1), axis(33, -1, 1), axis(33, -1, 1)}, {radius});
+  ExtractRequest r;
+  r.limits = {{0, -kUnbounded, 0.7}};
+  ExtractStats stats;
+  const Mesh mesh = extract_node_mesh(s, r, &stats);
+  expect_clean(mesh);
+  EXPECT_EQ(stats.table_cells, stats.cut_cells);
+  EXPECT_EQ(stats.simple_tets + stats.clipped_tets, 0u);
+  for (const auto& p : mesh.positions) {
+    int off = 0;
+    for (int a = 0; a < 3; ++a) off += on_sample(p[a], 33) ? 0 : 1;
+    EXPECT_LE(off, 1) << p[0] << " " << p[1] << " " << p[2];
+  }
+  EXPECT_LE(mesh.triangles.size(), 2 * stats.cut_cells + stats.cut_cells / 4);
+}
+
+TEST(SubvolumeMesh, CellsBesideSeveralConditionsMeetTheirTetrahedra) {
+  // Two limits whose surfaces cross in many cells, split into two nodes: the cells
+  // crossed by both are cut into tetrahedra, their neighbours crossed by one condition
+  // meet them along the shared sides' diagonals, and the node boundary is split the
+  // same way on both sides whatever crosses the cells there.
+  auto sphere = [](double x, double y, double z) { return radius(x - 0.05, y * 1.2, z); };
+  auto slab = [](double x, double y, double z) { return z - 0.35 * x + 0.2 * y; };
+  const auto y = axis(21, -1, 1), z = axis(21, -1, 1, 1.3);
+  const NodeSamples left = sampled({axis(11, -1, 0), y, z}, {sphere, slab});
+  const NodeSamples right = sampled({axis(11, 0, 1), y, z}, {sphere, slab});
+  ExtractRequest r;
+  r.limits = {{0, -kUnbounded, 0.8}, {1, 0.05, kUnbounded}};
+  Mesh joined;
+  for (const NodeSamples* s : {&left, &right}) {
+    ExtractStats stats;
+    const Mesh m = extract_node_mesh(*s, r, &stats);
+    expect_clean(m);
+    EXPECT_GT(stats.table_cells, 0u);
+    EXPECT_GT(stats.simple_tets + stats.clipped_tets, 0u);
+    const auto offset = static_cast<std::uint32_t>(joined.positions.size());
+    joined.positions.insert(joined.positions.end(), m.positions.begin(), m.positions.end());
+    joined.normals.insert(joined.normals.end(), m.normals.begin(), m.normals.end());
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      if (m.face_kinds[t] == FaceKind::kNodeBoundary) continue;
+      joined.triangles.push_back({m.triangles[t][0] + offset, m.triangles[t][1] + offset,
+                                  m.triangles[t][2] + offset});
+      joined.face_kinds.push_back(m.face_kinds[t]);
+    }
+  }
+  expect_clean(joined);
+}
+
 TEST(SubvolumeMesh, OutputIsDeterministic) {
   const NodeSamples s = sampled({axis(17, -1, 1), axis(17, -1, 1), axis(17, -1, 1)},
                                 {radius, [](double x, double, double) { return x; }});
