@@ -180,6 +180,11 @@ struct Tables {
     }
   }
 
+  // A side's two Kuhn triangles (split along its min-max diagonal), outward order.
+  static std::array<std::array<int, 3>, 2> side_triangles(const std::array<int, 4>& q) {
+    return {{{q[0], q[1], q[2]}, {q[0], q[2], q[3]}}};
+  }
+
   // The loops of one entry: per side, the region's boundary on the side's two Kuhn
   // triangles (outward order), from each entry crossing to the next exit crossing
   // turned around (the surface runs each shared edge the other way); on an unsplit
@@ -191,7 +196,7 @@ struct Tables {
       const auto& q = side_quads[side];
       const int diagonal = edge_index[q[0]][q[2]];
       int into_diagonal = -1, from_diagonal = -1;
-      for (const std::array<int, 3>& tri : {std::array<int, 3>{q[0], q[1], q[2]}, std::array<int, 3>{q[0], q[2], q[3]}}) {
+      for (const std::array<int, 3>& tri : side_triangles(q)) {
         int entry = -1, exit = -1;
         for (int i = 0; i < 3; ++i) {
           const int cur = tri[i], nxt = tri[(i + 1) % 3];
@@ -200,7 +205,9 @@ struct Tables {
           (cin ? exit : entry) = edge_index[std::min(cur, nxt)][std::max(cur, nxt)];
         }
         if (entry < 0) continue;
-        if (next[entry] >= 0) throw make_error(ErrorCode::kInternal, "cell loop table: two edges leave one crossing");
+        if (next[entry] >= 0) {
+          throw make_error(ErrorCode::kInternal, "cell loop table: two edges leave one crossing");
+        }
         next[entry] = exit;
         if (exit == diagonal) into_diagonal = entry;
         if (entry == diagonal) from_diagonal = exit;
@@ -229,7 +236,9 @@ struct Tables {
         e = next[e];
       } while (e != start);
       if (first < 0) first = 0;
-      if (out.loops == out.size.size() || n < 3) throw make_error(ErrorCode::kInternal, "cell loop table: bad loop");
+      if (out.loops == out.size.size() || n < 3) {
+        throw make_error(ErrorCode::kInternal, "cell loop table: too many loops or a loop of two");
+      }
       out.size[out.loops++] = static_cast<std::uint8_t>(n);
       for (int i = 0; i < n; ++i) out.edges[written++] = static_cast<std::uint8_t>(loop[(first + i) % n]);
     }
@@ -362,6 +371,15 @@ class Kernel {
     }
     slab_stamp_[0] = (s_.stamp + static_cast<std::uint32_t>(z)) << 8;
     slab_stamp_[1] = (s_.stamp + static_cast<std::uint32_t>(z + 1)) << 8;
+  }
+
+  // A cell wholly inside: only its faces on the node boundary are made, from node-side
+  // vertices, so the lattice slots of set_cell are not needed.
+  void set_inside_cell(std::size_t x, std::size_t y, std::size_t z, int boundary) {
+    x_ = x;
+    y_ = y;
+    z_ = z;
+    boundary_ = boundary;
   }
 
   Vec3 corner_pos(int k) const {
@@ -519,7 +537,7 @@ class Kernel {
       if (!(boundary_ & (1 << side))) continue;
       const auto& q = tb.side_quads[side];
       const std::uint32_t group = side_group_ + static_cast<std::uint32_t>(side);
-      for (const std::array<int, 3>& tri : {std::array<int, 3>{q[0], q[1], q[2]}, std::array<int, 3>{q[0], q[2], q[3]}}) {
+      for (const std::array<int, 3>& tri : Tables::side_triangles(q)) {
         std::uint32_t ids[4];
         std::size_t m = 0;
         for (int i = 0; i < 3; ++i) {
@@ -750,7 +768,7 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
         for (std::size_t x = 0; x + 1 < dims[0]; ++x) {
           const int boundary = yz_boundary | (x == 0 ? 1 : 0) | (x + 2 == dims[0] ? 2 : 0);
           if (boundary == 0) continue;
-          kernel.set_cell(x, y, z, boundary);
+          kernel.set_inside_cell(x, y, z, boundary);
           kernel.inside_cell_faces();
         }
         continue;
@@ -767,7 +785,7 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
         if (cell_and == all) {
           ++local.inside_cells;
           if (boundary != 0) {
-            kernel.set_cell(x, y, z, boundary);
+            kernel.set_inside_cell(x, y, z, boundary);
             kernel.inside_cell_faces();
           }
           continue;
@@ -793,15 +811,15 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
           int split = boundary;
           if (any_multi) {
             const std::size_t cell = (z * cy + y) * cx + x;
+            const std::size_t cz = cx * cy;
             split |= (x > 0 && multi[cell - 1] ? 1 : 0) | (x + 2 < dims[0] && multi[cell + 1] ? 2 : 0) |
                      (y > 0 && multi[cell - cx] ? 4 : 0) | (y + 2 < dims[1] && multi[cell + cx] ? 8 : 0) |
-                     (z > 0 && multi[cell - cx * cy] ? 16 : 0) |
-                     (z + 2 < dims[2] && multi[cell + cx * cy] ? 32 : 0);
+                     (z > 0 && multi[cell - cz] ? 16 : 0) | (z + 2 < dims[2] && multi[cell + cz] ? 32 : 0);
           }
           split &= tables().crossed_sides[static_cast<std::size_t>(cell_bits)];
           ++local.table_cells;
-          kernel.cell_loops(static_cast<std::uint32_t>(c),
-                            cell_loops[static_cast<std::size_t>(cell_bits) * 64 + static_cast<std::size_t>(split)]);
+          const std::size_t entry = static_cast<std::size_t>(cell_bits) * 64 + static_cast<std::size_t>(split);
+          kernel.cell_loops(static_cast<std::uint32_t>(c), cell_loops[entry]);
           if (boundary != 0) kernel.side_caps(static_cast<std::uint32_t>(c), cell_bits);
           continue;
         }

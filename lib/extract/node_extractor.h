@@ -2,17 +2,20 @@
 // Extraction of one sub-volume inside one octree node as a closed, outward-oriented
 // triangle mesh (formats/scene.md, "Extraction").
 //
-// Method: each lattice cell is split into six tetrahedra along its main diagonal
-// (Kuhn), so neighbouring cells split shared faces the same way. Every condition of
-// the sub-volume (ExtractRequest -> conditions.h) is linear inside a tetrahedron, so
-// the region inside it is a convex polytope (TetClipper). The mesh is the union of
-// the polytope faces that lie on a condition's zero plane (limit and domain-box
-// surfaces) or on the node's boundary. The limit surfaces pass through the exact
-// crossings of the trilinear field on every lattice edge, like the paper's clip
-// pipeline. Cells wholly inside or outside are classified by bit masks and cost a few
-// instructions; a cell crossed by one condition takes its tetrahedra's polygons from a
-// table, and vertices on lattice corners and edges are found by lattice element, not
-// by hashing positions. The same triangles as clipping every tetrahedron one by one.
+// Method: a cell crossed by one condition (nearly every cut cell) takes that
+// condition's surface from a table of closed loops through the exact crossings of the
+// trilinear field on its edges, each loop a fan of triangles (marching-cubes-like). A
+// cell crossed by several conditions is split into six tetrahedra along its main
+// diagonal (Kuhn); every condition of the sub-volume (ExtractRequest -> conditions.h) is
+// linear inside a tetrahedron, so the region inside it is a convex polytope
+// (TetClipper). Where such a cell, or the node's boundary, meets a cell crossed by one
+// condition, the shared side is split along its diagonal so the loop there passes
+// through the diagonal's crossing as the tetrahedra do (node faces are always split,
+// so neighbouring nodes meet whatever crosses their cells). The mesh is the union of
+// the faces on a condition's surface (limit and domain-box surfaces) or on the node's
+// boundary. Cells wholly inside or outside are classified by bit masks and cost a few
+// instructions, and vertices on lattice corners and edges are found by lattice element,
+// not by hashing positions.
 // Crossings within 2^-30 of a cell from a sample are the sample (tet_clipper.h), and
 // triangles that still collapse once in axis coordinates are removed at the end
 // (collapsed_triangles.h), so extreme value ratios leave no slivers or cracks.
