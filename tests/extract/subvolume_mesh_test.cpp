@@ -56,6 +56,20 @@ void expect_clean(const Mesh& mesh) {
   EXPECT_EQ(mesh.face_kinds.size(), mesh.triangles.size());
 }
 
+// Appends node mesh m to joined, leaving out its faces on the node boundary (as a
+// seamless export does): nodes that meet without cracks then join into a closed mesh.
+void append_without_node_faces(Mesh& joined, const Mesh& m) {
+  const auto offset = static_cast<std::uint32_t>(joined.positions.size());
+  joined.positions.insert(joined.positions.end(), m.positions.begin(), m.positions.end());
+  joined.normals.insert(joined.normals.end(), m.normals.begin(), m.normals.end());
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    if (m.face_kinds[t] == FaceKind::kNodeBoundary) continue;
+    joined.triangles.push_back(
+        {m.triangles[t][0] + offset, m.triangles[t][1] + offset, m.triangles[t][2] + offset});
+    joined.face_kinds.push_back(m.face_kinds[t]);
+  }
+}
+
 TEST(SubvolumeMesh, SphereIsClosedWithTheRightVolume) {
   const NodeSamples s = sampled({axis(33, -1, 1), axis(33, -1, 1), axis(33, -1, 1)}, {radius});
   ExtractRequest r;
@@ -219,15 +233,7 @@ TEST(SubvolumeMesh, NeighbouringNodesMeetWithoutCracks) {
   for (const NodeSamples* s : {&left, &right}) {
     const Mesh m = extract_node_mesh(*s, r);
     expect_clean(m);
-    const auto offset = static_cast<std::uint32_t>(joined.positions.size());
-    joined.positions.insert(joined.positions.end(), m.positions.begin(), m.positions.end());
-    joined.normals.insert(joined.normals.end(), m.normals.begin(), m.normals.end());
-    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-      if (m.face_kinds[t] == FaceKind::kNodeBoundary) continue;
-      joined.triangles.push_back({m.triangles[t][0] + offset, m.triangles[t][1] + offset,
-                                  m.triangles[t][2] + offset});
-      joined.face_kinds.push_back(m.face_kinds[t]);
-    }
+    append_without_node_faces(joined, m);
   }
   expect_clean(joined);
 }
@@ -278,15 +284,7 @@ TEST(SubvolumeMesh, CellsBesideSeveralConditionsMeetTheirTetrahedra) {
     expect_clean(m);
     EXPECT_GT(stats.table_cells, 0u);
     EXPECT_GT(stats.simple_tets + stats.clipped_tets, 0u);
-    const auto offset = static_cast<std::uint32_t>(joined.positions.size());
-    joined.positions.insert(joined.positions.end(), m.positions.begin(), m.positions.end());
-    joined.normals.insert(joined.normals.end(), m.normals.begin(), m.normals.end());
-    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-      if (m.face_kinds[t] == FaceKind::kNodeBoundary) continue;
-      joined.triangles.push_back({m.triangles[t][0] + offset, m.triangles[t][1] + offset,
-                                  m.triangles[t][2] + offset});
-      joined.face_kinds.push_back(m.face_kinds[t]);
-    }
+    append_without_node_faces(joined, m);
   }
   expect_clean(joined);
 }
