@@ -488,24 +488,30 @@ class Kernel {
     for (int opposite = 0; opposite < 4; ++opposite) {
       const TetFace& f = tb.faces[t][opposite];
       if (f.side < 0 || !(boundary_ & (1 << f.side))) continue;
-      // The face's inside part (Sutherland-Hodgman by c), then turned outward.
-      std::uint32_t face_ids[4];
-      std::size_t m = 0;
-      for (int i = 0; i < 3; ++i) {
-        const int cur = f.corners[i], nxt = f.corners[(i + 1) % 3];
-        const bool cin = (bits >> f.local[i]) & 1, nin = (bits >> f.local[(i + 1) % 3]) & 1;
-        if (cin) face_ids[m++] = side_corner(f.side, cur);
-        if (cin != nin) face_ids[m++] = side_edge(f.side, c, std::min(cur, nxt), std::max(cur, nxt));
-      }
-      if (f.reversed) std::reverse(face_ids, face_ids + m);
-      const std::uint32_t group = side_group_ + static_cast<std::uint32_t>(f.side);
-      if (m == 3) {
-        b_.oriented_triangle(group, face_ids[0], face_ids[1], face_ids[2]);
-      } else if (m == 4) {
-        b_.oriented_quad(group, face_ids[0], face_ids[1], face_ids[2], face_ids[3]);
-      } else {
-        b_.oriented_polygon(group, face_ids, m);
-      }
+      const std::array<bool, 3> in{((bits >> f.local[0]) & 1) != 0, ((bits >> f.local[1]) & 1) != 0,
+                                   ((bits >> f.local[2]) & 1) != 0};
+      side_triangle_part(f.side, c, f.corners, in, f.reversed);
+    }
+  }
+
+  // The inside part of one triangle on node side `side` (cube corners `corners`, their
+  // inside flags for condition c `in`), clipped Sutherland-Hodgman by c, in the
+  // triangle's order or reversed, and emitted on that side's group.
+  void side_triangle_part(int side, std::uint32_t c, const std::array<int, 3>& corners,
+                          const std::array<bool, 3>& in, bool reversed) {
+    std::uint32_t ids[4];
+    std::size_t m = 0;
+    for (int i = 0; i < 3; ++i) {
+      const int cur = corners[i], nxt = corners[(i + 1) % 3];
+      if (in[i]) ids[m++] = side_corner(side, cur);
+      if (in[i] != in[(i + 1) % 3]) ids[m++] = side_edge(side, c, std::min(cur, nxt), std::max(cur, nxt));
+    }
+    if (reversed) std::reverse(ids, ids + m);
+    const std::uint32_t group = side_group_ + static_cast<std::uint32_t>(side);
+    if (m == 3) {
+      b_.oriented_triangle(group, ids[0], ids[1], ids[2]);
+    } else if (m == 4) {
+      b_.oriented_quad(group, ids[0], ids[1], ids[2], ids[3]);
     }
   }
 
@@ -535,22 +541,10 @@ class Kernel {
     const Tables& tb = tables();
     for (int side = 0; side < 6; ++side) {
       if (!(boundary_ & (1 << side))) continue;
-      const auto& q = tb.side_quads[side];
-      const std::uint32_t group = side_group_ + static_cast<std::uint32_t>(side);
-      for (const std::array<int, 3>& tri : Tables::side_triangles(q)) {
-        std::uint32_t ids[4];
-        std::size_t m = 0;
-        for (int i = 0; i < 3; ++i) {
-          const int cur = tri[i], nxt = tri[(i + 1) % 3];
-          const bool cin = (bits >> cur) & 1, nin = (bits >> nxt) & 1;
-          if (cin) ids[m++] = side_corner(side, cur);
-          if (cin != nin) ids[m++] = side_edge(side, c, std::min(cur, nxt), std::max(cur, nxt));
-        }
-        if (m == 3) {
-          b_.oriented_triangle(group, ids[0], ids[1], ids[2]);
-        } else if (m == 4) {
-          b_.oriented_quad(group, ids[0], ids[1], ids[2], ids[3]);
-        }
+      for (const std::array<int, 3>& tri : Tables::side_triangles(tb.side_quads[side])) {
+        const std::array<bool, 3> in{((bits >> tri[0]) & 1) != 0, ((bits >> tri[1]) & 1) != 0,
+                                     ((bits >> tri[2]) & 1) != 0};
+        side_triangle_part(side, c, tri, in, false);
       }
     }
   }
