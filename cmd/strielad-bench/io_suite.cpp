@@ -27,6 +27,7 @@ struct IoFlags {
   std::uint32_t brick = build::kDefaultBrick;
   // The converter's default (bench::IoSuiteOptions): predictor chosen per variable.
   format::CodecSpec codec = bench::IoSuiteOptions{}.codec;
+  std::vector<std::string> fpzip;
   int threads = 0;
   std::uint64_t seed = 1;
   std::string sweep_dims = "512x512x150";
@@ -71,6 +72,7 @@ int run(const IoFlags& f) {
   o.keep = f.keep;
   o.brick = f.brick;
   o.codec = f.codec;
+  o.fpzip = f.fpzip;
   o.threads = f.threads;
   o.seed = f.seed;
   o.nccopy = !f.no_nccopy;
@@ -125,6 +127,10 @@ void register_io(CLI::App& app, cli::Action& action, std::string command_line) {
                   "Predictor of the main measurements: auto (per variable, the converter's "
                   "default), none or lorenzo3")
       ->capture_default_str();
+  sub->add_option("--fpzip", f->fpzip,
+                  "Variables (or 'all') converted with strielad-convert --fpzip in every converter "
+                  "run (store format version 3); adds a read set of the fpzip chunks")
+      ->delimiter(',');
   sub->add_option("--threads", f->threads, "Converter threads (default: all cores)");
   sub->add_option("--seed", f->seed, "Seed of the sample data")->capture_default_str();
   sub->add_flag("--no-nccopy", f->no_nccopy, "Skip the NetCDF competitors");

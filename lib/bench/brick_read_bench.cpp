@@ -192,6 +192,7 @@ std::vector<ReadSample> pick_data_nodes(const Store& store, LevelFilter filter, 
       if (entries[n].kind != format::BrickKind::kData) continue;
       const bool fine = n < level0_end;
       if ((filter == LevelFilter::kLevel0 && !fine) || (filter == LevelFilter::kCoarse && fine)) continue;
+      if (filter == LevelFilter::kFpzip && entries[n].coding != format::ChunkCoding::kFpzip) continue;
       all.push_back({v, n});
     }
   }
@@ -239,6 +240,15 @@ BrickReadBench run_brick_read_bench(const BrickReadOptions& o) {
                                       one_read + ", step file evicted before each read", evict,
                                       store_meter));
     }
+  }
+  // A store converted with --fpzip: its fpzip chunks alone, whose decoding costs most.
+  if (const auto fpzip = pick_data_nodes(*store, LevelFilter::kFpzip, o.reads, o.seed + 2);
+      !fpzip.empty()) {
+    bench.sets.push_back(store_pass(*store, fpzip, "store cold, fpzip chunks",
+                                    "Store::read_brick of fpzip-coded bricks (any level): pread "
+                                    "of the chunk + XXH3 + fpzip decode + XXH3 of the samples, "
+                                    "step file evicted before each read",
+                                    evict, store_meter));
   }
   // The same bricks with direct reads (StoreOpenOptions::direct_reads): whole device
   // blocks instead of whole pages, and no page cache to evict.

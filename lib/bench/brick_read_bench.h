@@ -28,7 +28,8 @@ struct ReadSample {
   NodeId node = 0;
 };
 
-enum class LevelFilter { kLevel0, kCoarse, kAny };
+// kFpzip: bricks of any level whose chunk is an fpzip chunk (store version 3).
+enum class LevelFilter { kLevel0, kCoarse, kAny, kFpzip };
 
 // `count` data-bearing nodes of step 0 drawn uniformly without replacement (with
 // replacement only when fewer exist) over all variables, deterministic for `seed`.

@@ -137,8 +137,11 @@ ConversionBench run_conversion_bench(const ConversionBenchOptions& o) {
         i == 0 ? std::string("strielad-convert")
                : fmt::format("strielad-convert ({})", codec_label(c)),
         fmt::format("build::convert in process, brick {}, blosc {} level {} {}-shuffle, "
-                    "predictor {}, threads {}; includes NetCDF reads, fsync and finalize",
-                    o.brick, c.name, c.level, c.shuffle, c.predictor, threads)));
+                    "predictor {}{}, threads {}; includes NetCDF reads, fsync and finalize",
+                    o.brick, c.name, c.level, c.shuffle, c.predictor,
+                    o.fpzip.empty() ? std::string()
+                                    : fmt::format(", fpzip where smaller for {}", fmt::join(o.fpzip, ",")),
+                    threads)));
   }
   ContenderRuns nccopy =
       contender("nccopy", shell_command(bench.nccopy_argv) + " (+ fsync of the output)");
@@ -175,6 +178,7 @@ ConversionBench run_conversion_bench(const ConversionBenchOptions& o) {
       co.scan.variables = o.variables;
       co.brick = o.brick;
       co.codec = codecs[i];
+      co.fpzip = o.fpzip;
       co.threads = o.threads;
       cpu0 = process_cpu_seconds();
       const Stopwatch clock;

@@ -84,8 +84,11 @@ Table conversion_table(const IoSuiteReport& r) {
 
 Table size_table(const IoSuiteReport& r) {
   Table t{"sizes",
-          fmt::format("Store size per variable, one step (brick {}, {})", r.sizes.brick,
-                      codec_text(r.options.codec)),
+          fmt::format("Store size per variable, one step (brick {}, {}{})", r.sizes.brick,
+                      codec_text(r.options.codec),
+                      r.options.fpzip.empty()
+                          ? std::string()
+                          : fmt::format("; fpzip where smaller for {}", fmt::join(r.options.fpzip, ","))),
           {"variable", "raw MB", "store MB", "raw/store", "deflate1 MB", "store/deflate1",
            "level-0 MB", "level-0/deflate1", "data bricks", "constant", "empty", "index KB"},
           {},

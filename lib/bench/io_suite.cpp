@@ -83,6 +83,7 @@ IoSuiteReport run_io_suite(const IoSuiteOptions& options) {
   co.work = main_dir;
   co.brick = o.brick;
   co.codec = o.codec;
+  co.fpzip = o.fpzip;
   co.threads = o.threads;
   co.repeat = o.repeat;
   co.with_nccopy = have_nccopy;

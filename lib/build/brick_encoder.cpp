@@ -11,6 +11,7 @@
 
 #include "core/checksum.h"
 #include "store/brick_codec.h"
+#include "store/fpzip_chunk.h"
 
 namespace strielad::build {
 
@@ -160,8 +161,17 @@ EncodedBrick encode_brick(const PlaneBlock<T>& planes, const IndexBox& box, cons
     out.entry.kind = format::BrickKind::kData;
     const std::span<const std::byte> raw(reinterpret_cast<const std::byte*>(samples.data()),
                                          samples.size() * sizeof(T));
-    out.chunk = compress_brick(raw, sizeof(T) == 4 ? DType::kFloat32 : DType::kFloat64,
-                               BrickDims{box.extent(0), box.extent(1), box.extent(2)}, codec);
+    const DType dtype = sizeof(T) == 4 ? DType::kFloat32 : DType::kFloat64;
+    const BrickDims dims{box.extent(0), box.extent(1), box.extent(2)};
+    out.chunk = compress_brick(raw, dtype, dims, codec);
+    // fpzip (store version 3): whichever chunk is smaller, per brick. fpzip wins on smooth
+    // full-resolution fields and loses on the coarse levels (BENCHMARKS.md).
+    if (codec.fpzip) {
+      if (auto f = compress_brick_fpzip(raw, dtype, dims); f && f->size() < out.chunk.size()) {
+        out.chunk = std::move(*f);
+        out.entry.coding = format::ChunkCoding::kFpzip;
+      }
+    }
     out.entry.chunk_size = static_cast<std::uint32_t>(out.chunk.size());
     out.entry.chunk_checksum = checksum64(out.chunk);
   }

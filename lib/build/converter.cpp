@@ -190,6 +190,19 @@ format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOp
     const auto own = options.codec_for.find(catalog.variables[v].name);
     codecs.push_back(own != options.codec_for.end() ? own->second : options.codec);
   }
+  for (const std::string& name : options.fpzip) {
+    bool found = false;
+    for (std::size_t v = 0; v < codecs.size(); ++v) {
+      if (name == "all" || catalog.variables[v].name == name) {
+        codecs[v].fpzip = true;
+        found = true;
+      }
+    }
+    if (!found) {
+      throw make_error(ErrorCode::kInvalidArgument,
+                       "--fpzip names variable '{}', which is not converted", name);
+    }
+  }
   std::vector<std::optional<PredictorTrial>> auto_trials(codecs.size());
   const auto started = std::chrono::steady_clock::now();
   for (std::size_t v = 0; v < codecs.size(); ++v) {
@@ -225,6 +238,7 @@ format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOp
   for (std::size_t v = 0; v < codecs.size(); ++v) {
     if (!(codecs[v] == m.codec)) m.variables[v].codec = codecs[v];
   }
+  m.format_version = format::version_for_codecs(m);
   m.store_id = format::compute_store_id(m);
   return m;
 }
@@ -254,7 +268,7 @@ ConvertResult convert(const ConvertOptions& options) {
   for (std::size_t v = 0; v < plan.variables.size(); ++v) {
     const format::CodecSpec& c = plan.codec_of(v);
     json entry{{"name", c.name}, {"level", c.level}, {"shuffle", c.shuffle},
-               {"predictor", c.predictor}};
+               {"predictor", c.predictor}, {"fpzip", c.fpzip}};
     for (const auto& t : trials) {
       if (t.variable == plan.variables[v].name) entry["auto"] = t.to_json();
     }

@@ -39,6 +39,10 @@ struct ConvertOptions {
   // Per-variable codecs by variable name (predictor "auto" allowed), e.g. from
   // --codec-for clw=zstd:5:byte:none.
   std::map<std::string, format::CodecSpec> codec_for;
+  // Variables whose data bricks are stored as fpzip chunks where those are smaller (store
+  // format version 3; "all" for every variable), e.g. from --fpzip clw,qr: smaller cloud
+  // fields at about ten times the decode time per brick (BENCHMARKS.md).
+  std::vector<std::string> fpzip;
   int threads = 0;  // 0 = all cores
   // Refuse (kUnsupported, before reading any data) a grid whose conversion would need
   // more memory than this (build/conversion_limits.h); 0 = the machine's memory.

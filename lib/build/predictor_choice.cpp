@@ -77,6 +77,9 @@ void sample_bricks(BoxReader& reader, const OctreeLayout& layout,
   format::CodecSpec none = codec, lorenzo3 = codec;
   none.predictor = format::kPredictorNone;
   lorenzo3.predictor = format::kPredictorLorenzo3;
+  // The trial compares the codec chain alone; fpzip, where asked for, competes with the
+  // chosen chain per brick afterwards (build/brick_encoder.cpp).
+  none.fpzip = lorenzo3.fpzip = false;
   for (std::size_t first = 0; first < nodes.size();) {
     std::size_t end = first;
     while (end < nodes.size() && nodes[end].index[2] == nodes[first].index[2]) ++end;

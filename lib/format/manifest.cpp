@@ -72,6 +72,7 @@ Axis axis_from_json(const json& j, std::string_view what) {
 json codec_json(const CodecSpec& c, std::uint32_t version) {
   json j{{"name", c.name}, {"level", c.level}, {"shuffle", c.shuffle}};
   if (version >= kManifestVersionPredictors) j["predictor"] = c.predictor;
+  if (c.fpzip) j["fpzip"] = true;
   return j;
 }
 
@@ -86,6 +87,14 @@ CodecSpec codec_from_json(const json& j, std::uint32_t version, std::string_view
   } else if (j.contains("predictor")) {
     throw make_error(ErrorCode::kCorrupt, "{}: key 'predictor' needs format version {} (this is {})",
                      what, kManifestVersionPredictors, version);
+  }
+  if (const auto it = j.find("fpzip"); it != j.end()) {
+    if (version < kManifestVersionFpzip) {
+      throw make_error(ErrorCode::kCorrupt, "{}: key 'fpzip' needs format version {} (this is {})",
+                       what, kManifestVersionFpzip, version);
+    }
+    if (!it->is_boolean()) throw make_error(ErrorCode::kCorrupt, "{}: key 'fpzip' is not a bool", what);
+    c.fpzip = it->get<bool>();
   }
   try {
     validate_codec(c);
@@ -149,6 +158,12 @@ std::size_t Manifest::variable_index(std::string_view name) const {
                    names);
 }
 
+std::uint32_t version_for_codecs(const Manifest& m) {
+  bool fpzip = m.codec.fpzip;
+  for (const StoreVariable& v : m.variables) fpzip = fpzip || (v.codec && v.codec->fpzip);
+  return fpzip ? kManifestVersionFpzip : kManifestVersionPredictors;
+}
+
 std::string step_file_name(std::uint32_t step) { return fmt::format("steps/step-{:06d}.bricks", step); }
 
 json manifest_plan_json(const Manifest& m) {
@@ -165,6 +180,11 @@ json manifest_plan_json(const Manifest& m) {
                        "a version {} manifest cannot hold predictors or per-variable codecs",
                        version);
     }
+  }
+  if ((version >= kManifestVersionFpzip) != (version_for_codecs(m) >= kManifestVersionFpzip)) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "a version {} manifest {} codecs with fpzip (version {} is for those)", version,
+                     version < kManifestVersionFpzip ? "cannot hold" : "needs", kManifestVersionFpzip);
   }
   json vars = json::array();
   for (const StoreVariable& v : m.variables) {
@@ -289,6 +309,11 @@ Manifest manifest_from_json(const json& j, std::string_view what) {
   m.brick = get<std::uint32_t>(octree, "brick", what);
   m.codec = codec_from_json(get<json>(j, "codec", what), version, what);
   m.nan_as_fill = get<bool>(j, "nan_as_fill", what);
+  if (version >= kManifestVersionFpzip && version_for_codecs(m) < kManifestVersionFpzip) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: format version {} but no codec has 'fpzip' (a writer uses version {} then)",
+                     what, version, kManifestVersionPredictors);
+  }
   for (const json& js : get<json>(j, "sources", what)) {
     m.sources.push_back(SourceRecord{
         get<std::string>(js, "path", what), get<std::uint64_t>(js, "size", what),

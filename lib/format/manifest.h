@@ -16,10 +16,13 @@
 
 namespace strielad::format {
 
-// Manifest versions this code reads (1 and 2) and writes (2): formats/store.md.
-inline constexpr std::uint32_t kManifestFormatVersion = 2;
+// Manifest versions this code reads (1 to 3) and writes (2, or 3 when a codec has fpzip):
+// formats/store.md.
+inline constexpr std::uint32_t kManifestFormatVersion = 3;
 // The first version with predictors and per-variable codecs.
 inline constexpr std::uint32_t kManifestVersionPredictors = 2;
+// The first version with fpzip chunks (CodecSpec::fpzip, IndexEntry::coding).
+inline constexpr std::uint32_t kManifestVersionFpzip = 3;
 
 // Predictors (formats/store.md, "Predictors").
 inline constexpr std::string_view kPredictorNone = "none";
@@ -34,6 +37,8 @@ struct CodecSpec {
   int level = 1;                   // 0..9
   std::string shuffle = "byte";    // none, byte, bit
   std::string predictor = "none";  // none, lorenzo3 (format version 2)
+  // Data bricks may be fpzip chunks where those are smaller (format version 3).
+  bool fpzip = false;
   friend bool operator==(const CodecSpec&, const CodecSpec&) = default;
 };
 
@@ -68,8 +73,9 @@ struct StepRecord {
 struct Manifest {
   // The version the manifest was decoded from, and is encoded as: a rewritten version-1
   // manifest (finalize of an old store) stays version 1, since its store_id and step
-  // files depend on its plan. New plans are version 2.
-  std::uint32_t format_version = kManifestFormatVersion;
+  // files depend on its plan. New plans are version 2, or 3 when a codec has fpzip
+  // (version_for_codecs).
+  std::uint32_t format_version = 2;
   std::string tool_version;
   std::uint64_t store_id = 0;
   bool complete = false;
@@ -92,6 +98,9 @@ struct Manifest {
   // Index of a variable by name; throws kNotFound listing the store's variables.
   std::size_t variable_index(std::string_view name) const;
 };
+
+// The version a new plan with these codecs is written as: 3 when any has fpzip, else 2.
+std::uint32_t version_for_codecs(const Manifest& manifest);
 
 // Path of a step file relative to the store directory: "steps/step-000042.bricks".
 std::string step_file_name(std::uint32_t step);

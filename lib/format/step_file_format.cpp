@@ -204,7 +204,8 @@ std::vector<std::byte> encode_index_section(std::span<const IndexEntry> entries,
     w.u64(e.chunk_offset);
     w.u32(e.chunk_size);
     w.u8(static_cast<std::uint8_t>(e.kind));
-    w.zeros(3);
+    w.u8(static_cast<std::uint8_t>(e.coding));
+    w.zeros(2);
     w.u64(e.chunk_checksum);
     w.u64(e.valid_count);
     w.f64(e.min);
@@ -256,7 +257,8 @@ std::vector<IndexEntry> decode_index_section(std::span<const std::byte> stored,
     e.chunk_offset = r.u64("chunk_offset");
     e.chunk_size = r.u32("chunk_size");
     const std::uint8_t kind = r.u8("kind");
-    const std::uint8_t r0 = r.u8("reserved"), r1 = r.u8("reserved"), r2 = r.u8("reserved");
+    const std::uint8_t coding = r.u8("coding");
+    const std::uint8_t r1 = r.u8("reserved"), r2 = r.u8("reserved");
     e.chunk_checksum = r.u64("chunk_checksum");
     e.valid_count = r.u64("valid_count");
     e.min = r.f64("min");
@@ -265,9 +267,14 @@ std::vector<IndexEntry> decode_index_section(std::span<const std::byte> stored,
     auto bad = [&](std::string_view why) {
       return make_error(ErrorCode::kCorrupt, "{}: index entry of node {}: {}", what, n, why);
     };
-    if (r0 | r1 | r2) throw bad("reserved bytes are not zero");
+    if (r1 | r2) throw bad("reserved bytes are not zero");
     if (kind > 2) throw bad(fmt::format("unknown brick kind {}", kind));
+    if (coding > 1) throw bad(fmt::format("unknown chunk coding {}", coding));
     e.kind = static_cast<BrickKind>(kind);
+    e.coding = static_cast<ChunkCoding>(coding);
+    if (e.coding != ChunkCoding::kCodec && e.kind != BrickKind::kData) {
+      throw bad("a brick without data has a chunk coding set");
+    }
     if (e.kind == BrickKind::kData) {
       if (e.chunk_size == 0 || e.chunk_offset < chunk_region_begin ||
           e.chunk_offset > chunk_region_end || e.chunk_size > chunk_region_end - e.chunk_offset) {

@@ -55,10 +55,15 @@ struct SectionEntry {
 
 enum class BrickKind : std::uint8_t { kEmpty = 0, kConstant = 1, kData = 2 };
 
+// How a data brick's chunk is coded (formats/store.md, "Brick kinds"): the variable's codec
+// chain (predictor + Blosc), or an fpzip chunk (store version 3, a codec with fpzip).
+enum class ChunkCoding : std::uint8_t { kCodec = 0, kFpzip = 1 };
+
 struct IndexEntry {
   std::uint64_t chunk_offset = 0;
   std::uint32_t chunk_size = 0;
   BrickKind kind = BrickKind::kEmpty;
+  ChunkCoding coding = ChunkCoding::kCodec;  // kCodec unless kind is kData
   std::uint64_t chunk_checksum = 0;
   std::uint64_t valid_count = 0;
   double min = 0, max = 0;

@@ -7,6 +7,7 @@
 #include "core/file_io.h"
 #include "store/brick_cache.h"
 #include "store/brick_codec.h"
+#include "store/fpzip_chunk.h"
 
 namespace strielad {
 
@@ -203,7 +204,17 @@ Brick Store::read_brick(std::uint32_t step, std::uint32_t variable, NodeId node)
                      what(), e.chunk_checksum, sum);
   }
   b.bytes.resize(b.sample_count() * dtype_size(b.dtype));
-  decompress_brick(chunk, b.dtype, b.dims, manifest_.codec_of(variable), b.bytes, what());
+  const format::CodecSpec& codec = manifest_.codec_of(variable);
+  if (e.coding == format::ChunkCoding::kFpzip) {
+    if (!codec.fpzip) {
+      throw make_error(ErrorCode::kCorrupt,
+                       "{}: chunk is coded with fpzip, but the variable's codec does not allow it",
+                       what());
+    }
+    decompress_brick_fpzip(chunk, b.dtype, b.dims, b.bytes, what());
+  } else {
+    decompress_brick(chunk, b.dtype, b.dims, codec, b.bytes, what());
+  }
   return b;
 }
 

@@ -60,12 +60,16 @@ void describe_store(const Store& store, std::ostream& out) {
     fmt::print(out, "  level {}  {} x {} x {} nodes, stride {} x {} x {}\n", l, s.nodes[0],
                s.nodes[1], s.nodes[2], s.stride[0], s.stride[1], s.stride[2]);
   }
-  fmt::print(out, "codec      blosc {} level {} shuffle {}, predictor {} (format version {})\n",
-             m.codec.name, m.codec.level, m.codec.shuffle, m.codec.predictor, m.format_version);
+  const auto fpzip_text = [](const format::CodecSpec& c) {
+    return c.fpzip ? std::string(", fpzip where smaller") : std::string();
+  };
+  fmt::print(out, "codec      blosc {} level {} shuffle {}, predictor {}{} (format version {})\n",
+             m.codec.name, m.codec.level, m.codec.shuffle, m.codec.predictor, fpzip_text(m.codec),
+             m.format_version);
   for (const auto& v : m.variables) {
     if (!v.codec) continue;
-    fmt::print(out, "  {:<9}blosc {} level {} shuffle {}, predictor {}\n", v.name, v.codec->name,
-               v.codec->level, v.codec->shuffle, v.codec->predictor);
+    fmt::print(out, "  {:<9}blosc {} level {} shuffle {}, predictor {}{}\n", v.name, v.codec->name,
+               v.codec->level, v.codec->shuffle, v.codec->predictor, fpzip_text(*v.codec));
   }
   fmt::print(out, "sources    {} files\n", m.sources.size());
   fmt::print(out, "size       {:.1f} MB of step files\n", step_files_bytes(store) / 1e6);

@@ -18,6 +18,9 @@ TEST(IoSuiteQuick, ReportsSaneNumbers) {
   TempDir tmp;
   bench::IoSuiteOptions options = bench::quick_io_options({});
   options.work = tmp / "work";
+  // Stores of format version 3: each brick keeps the smaller of its Blosc and fpzip chunks,
+  // so both codings are read, and the reads add a set of fpzip chunks.
+  options.fpzip = {"all"};
   const bool have_nccopy = bench::find_program("nccopy").has_value();
 
   const bench::IoSuiteReport r = bench::run_io_suite(options);
@@ -75,6 +78,10 @@ TEST(IoSuiteQuick, ReportsSaneNumbers) {
   if (have_nccopy) {
     EXPECT_NE(r.reads.find("netcdf cold, B^3 box"), nullptr);
   }
+  const auto* fpzip = r.reads.find("store cold, fpzip chunks");
+  ASSERT_NE(fpzip, nullptr);
+  EXPECT_EQ(fpzip->latency().count, options.reads);
+  EXPECT_GT(fpzip->mean_payload_bytes(), 0);
   // The same bricks through OpenVDB delayed loading, every read measured.
   const auto* vdb = r.reads.find("openvdb delayed, (B+1)^3 box");
   ASSERT_NE(vdb, nullptr);

@@ -86,7 +86,7 @@ TEST(ManifestTest, InvalidVersion) {
   auto bytes = encode_manifest(sample_manifest());
   bytes[8] = std::byte{9};
   expect_error([&] { decode_manifest(bytes, "S/MANIFEST"); }, ErrorCode::kVersionTooNew,
-               {"version 9 is newer than this reader (max 2)"});
+               {"version 9 is newer than this reader (max 3)"});
   bytes[8] = std::byte{0};
   expect_error([&] { decode_manifest(bytes, "S/MANIFEST"); }, ErrorCode::kCorrupt,
                {"version 0"});
@@ -231,6 +231,63 @@ TEST(ManifestTest, FrameAndPayloadVersionsMustAgree) {
   const auto j = manifest_to_json(sample_manifest_v1());
   expect_error([&] { decode_manifest(frame(j.dump(), 2), "M"); }, ErrorCode::kCorrupt,
                {"frame says format version 2 but the payload says 1"});
+}
+
+Manifest sample_manifest_fpzip() {
+  Manifest m = sample_manifest();
+  m.variables.push_back(m.variables[0]);
+  m.variables[1].name = "ta";
+  m.variables[0].codec = m.codec;
+  m.variables[0].codec->fpzip = true;
+  m.format_version = version_for_codecs(m);
+  m.store_id = compute_store_id(m);
+  return m;
+}
+
+TEST(ManifestTest, AnFpzipCodecMakesVersion3AndRoundTrips) {
+  EXPECT_EQ(version_for_codecs(sample_manifest()), 2u);
+  const Manifest m = sample_manifest_fpzip();
+  EXPECT_EQ(m.format_version, 3u);
+  const auto j = manifest_to_json(m);
+  EXPECT_EQ(j["variables"][0]["codec"]["fpzip"], true);
+  EXPECT_FALSE(j["codec"].contains("fpzip"));  // left out when false
+  const auto bytes = encode_manifest(m);
+  EXPECT_EQ(bytes[8], std::byte{3});
+  const Manifest back = decode_manifest(bytes, "MANIFEST");
+  EXPECT_EQ(back.format_version, 3u);
+  EXPECT_TRUE(back.codec_of(0).fpzip);
+  EXPECT_FALSE(back.codec_of(1).fpzip);
+  EXPECT_EQ(back.variables, m.variables);
+  EXPECT_EQ(encode_manifest(back), bytes);
+  // fpzip is part of the plan.
+  Manifest other = m;
+  other.variables[0].codec->fpzip = false;
+  other.format_version = version_for_codecs(other);
+  EXPECT_NE(compute_store_id(other), m.store_id);
+}
+
+TEST(ManifestTest, FpzipNeedsVersion3AndVersion3NeedsFpzip) {
+  auto j = manifest_to_json(sample_manifest_fpzip());
+  expect_error([&] { decode_manifest(frame(j.dump(), 2), "M"); }, ErrorCode::kCorrupt,
+               {"frame says format version 2 but the payload says 3"});
+  j["format_version"] = 2;
+  expect_error([&] { decode_manifest(frame(j.dump(), 2), "M"); }, ErrorCode::kCorrupt,
+               {"variable 'clw'", "'fpzip' needs format version 3"});
+  j = manifest_to_json(sample_manifest_fpzip());
+  j["variables"][0]["codec"]["fpzip"] = "yes";
+  expect_error([&] { decode_manifest(frame(j.dump(), 3), "M"); }, ErrorCode::kCorrupt,
+               {"variable 'clw'", "'fpzip' is not a bool"});
+  j = manifest_to_json(sample_manifest_fpzip());
+  j["variables"][0]["codec"]["fpzip"] = false;
+  expect_error([&] { decode_manifest(frame(j.dump(), 3), "M"); }, ErrorCode::kCorrupt,
+               {"M", "format version 3 but no codec has 'fpzip'"});
+  // A writer cannot mix them up either.
+  Manifest m = sample_manifest_fpzip();
+  m.format_version = 2;
+  expect_error([&] { encode_manifest(m); }, ErrorCode::kInvalidArgument, {"version 2", "fpzip"});
+  m = sample_manifest();
+  m.format_version = 3;
+  expect_error([&] { encode_manifest(m); }, ErrorCode::kInvalidArgument, {"version 3", "fpzip"});
 }
 
 }  // namespace

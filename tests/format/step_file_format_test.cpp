@@ -109,6 +109,27 @@ TEST(StepFileFormatTest, IndexSectionRoundTripBothCodecs) {
   }
 }
 
+TEST(StepFileFormatTest, IndexEntryChunkCodingRoundTripsAndIsChecked) {
+  auto entries = sample_entries();
+  entries[2].coding = ChunkCoding::kFpzip;
+  auto stored = encode_index_section(entries, SectionCodec::kRaw);
+  EXPECT_EQ(stored[2 * kIndexEntrySize + 13], std::byte{1});  // byte 13 of the entry
+  const auto out = decode_index_section(stored, section_for(stored, SectionCodec::kRaw), 3, 64, 200, "s");
+  EXPECT_EQ(out[2].coding, ChunkCoding::kFpzip);
+  EXPECT_EQ(out[1].coding, ChunkCoding::kCodec);
+  stored[2 * kIndexEntrySize + 13] = std::byte{2};
+  expect_error([&] { decode_index_section(stored, section_for(stored, SectionCodec::kRaw), 3, 64, 200, "s"); },
+               ErrorCode::kCorrupt, {"node 2", "unknown chunk coding 2"});
+  stored[2 * kIndexEntrySize + 13] = std::byte{1};
+  stored[1 * kIndexEntrySize + 13] = std::byte{1};  // a constant brick has no chunk
+  expect_error([&] { decode_index_section(stored, section_for(stored, SectionCodec::kRaw), 3, 64, 200, "s"); },
+               ErrorCode::kCorrupt, {"node 1", "without data has a chunk coding"});
+  stored[1 * kIndexEntrySize + 13] = std::byte{0};
+  stored[2 * kIndexEntrySize + 14] = std::byte{1};  // still reserved
+  expect_error([&] { decode_index_section(stored, section_for(stored, SectionCodec::kRaw), 3, 64, 200, "s"); },
+               ErrorCode::kCorrupt, {"node 2", "reserved bytes are not zero"});
+}
+
 TEST(StepFileFormatTest, IndexSectionCorruptChecksum) {
   auto stored = encode_index_section(sample_entries(), SectionCodec::kZstd);
   const SectionEntry s = section_for(stored, SectionCodec::kZstd);

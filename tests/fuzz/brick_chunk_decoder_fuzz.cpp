@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-// Fuzzes the brick chunk decoder behind the chunk checksum (Blosc, then the lorenzo3
-// predictor's inverse on 5x5x5 and 1x3x5 bricks): it must reject, never crash.
+// Fuzzes the brick chunk decoders behind the chunk checksum (Blosc, then the lorenzo3
+// predictor's inverse on 5x5x5 and 1x3x5 bricks; fpzip chunks as float32 and float64):
+// they must reject, never crash. An fpzip chunk's own stream checksum keeps damaged bytes
+// away from fpzip, whose decoder does not bound its reads (formats/store.md).
 #include "core/error.h"
 #include "fuzz/fuzz_target.h"
 #include "store/brick_codec.h"
+#include "store/fpzip_chunk.h"
 
 using namespace strielad;
 
@@ -24,6 +27,12 @@ std::vector<std::vector<std::uint8_t>> strielad_fuzz_seeds() {
                          reinterpret_cast<const std::uint8_t*>(p.data()) + p.size());
     }
   }
+  for (const auto& c : {compress_brick_fpzip(raw, DType::kFloat32, BrickDims{5, 5, 5}),
+                        compress_brick_fpzip(raw.first(25 * 8), DType::kFloat64, BrickDims{1, 5, 5}),
+                        compress_brick_fpzip(raw.first(15 * 4), DType::kFloat32, BrickDims{1, 3, 5})}) {
+    if (c) seeds.emplace_back(reinterpret_cast<const std::uint8_t*>(c->data()),
+                              reinterpret_cast<const std::uint8_t*>(c->data()) + c->size());
+  }
   return seeds;
 }
 
@@ -41,6 +50,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       decompress_brick(chunk, DType::kFloat32, dims, lorenzo3, bytes, "fuzz");
     } catch (const Error&) {
     }
+    try {
+      decompress_brick_fpzip(chunk, DType::kFloat32, dims, bytes, "fuzz");
+    } catch (const Error&) {
+    }
+  }
+  std::vector<std::byte> wide(1 * 5 * 5 * 8);
+  try {
+    decompress_brick_fpzip(chunk, DType::kFloat64, BrickDims{1, 5, 5}, wide, "fuzz");
+  } catch (const Error&) {
   }
   return 0;
 }

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "store/fpzip_chunk.h"
+
+#include <fpzip.h>
+#include <xxhash.h>
+
+#include <cstring>
+#include <memory>
+
+#include "core/checksum.h"
+#include "core/error.h"
+
+namespace strielad {
+namespace {
+
+// Zero bytes after a copied stream: fpzip's range decoder fetches a few bytes ahead of the
+// symbols it returns, so the copy it reads from is padded.
+constexpr std::size_t kReadPadding = 64;
+
+struct WriterClose {
+  void operator()(FPZ* f) const { fpzip_write_close(f); }
+};
+struct ReaderClose {
+  void operator()(FPZ* f) const { fpzip_read_close(f); }
+};
+
+void describe_brick(FPZ* f, DType dtype, BrickDims dims) {
+  f->type = dtype == DType::kFloat64 ? FPZIP_TYPE_DOUBLE : FPZIP_TYPE_FLOAT;
+  f->prec = 0;  // full precision: lossless
+  f->nx = static_cast<int>(dims[0]);
+  f->ny = static_cast<int>(dims[1]);
+  f->nz = static_cast<int>(dims[2]);
+  f->nf = 1;
+}
+
+// fpzip reads and writes samples as float or double: they must be 8-byte aligned.
+bool is_aligned(const void* p) { return reinterpret_cast<std::uintptr_t>(p) % 8 == 0; }
+
+std::size_t brick_bytes(DType dtype, BrickDims dims) {
+  return dims[0] * dims[1] * dims[2] * dtype_size(dtype);
+}
+
+void put_u64(std::byte* at, std::uint64_t v) {
+  for (int i = 0; i < 8; ++i) at[i] = static_cast<std::byte>(v >> (8 * i));
+}
+
+// The stream checksum is seeded with the brick's shape and type (formats/store.md), so a
+// stream is never decoded as another shape or type: fpzip would then read past it.
+std::uint64_t stream_checksum(std::span<const std::byte> stream, DType dtype, BrickDims dims) {
+  const std::uint64_t seed = std::uint64_t{dims[0]} | std::uint64_t{dims[1]} << 20 |
+                             std::uint64_t{dims[2]} << 40 |
+                             std::uint64_t{dtype == DType::kFloat64 ? 1u : 0u} << 60;
+  return XXH3_64bits_withSeed(stream.data(), stream.size(), seed);
+}
+
+std::uint64_t get_u64(const std::byte* at) {
+  std::uint64_t v = 0;
+  for (int i = 0; i < 8; ++i) v |= std::to_integer<std::uint64_t>(at[i]) << (8 * i);
+  return v;
+}
+
+}  // namespace
+
+std::optional<std::vector<std::byte>> compress_brick_fpzip(std::span<const std::byte> samples,
+                                                           DType dtype, BrickDims dims) {
+  if (samples.size() != brick_bytes(dtype, dims)) {
+    throw make_error(ErrorCode::kInternal, "compress_brick_fpzip: {} bytes for a {}x{}x{} brick of {}",
+                     samples.size(), dims[0], dims[1], dims[2], dtype_name(dtype));
+  }
+  // A chunk larger than the raw samples is of no use.
+  std::vector<std::byte> chunk(kFpzipChunkHeaderSize + samples.size());
+  std::vector<std::uint64_t> copy;
+  const void* values = samples.data();
+  if (!is_aligned(values)) {
+    copy.resize((samples.size() + 7) / 8);
+    std::memcpy(copy.data(), samples.data(), samples.size());
+    values = copy.data();
+  }
+  std::size_t n = 0;
+  {
+    std::unique_ptr<FPZ, WriterClose> f(
+        fpzip_write_to_buffer(chunk.data() + kFpzipChunkHeaderSize, samples.size()));
+    if (!f) throw make_error(ErrorCode::kInternal, "fpzip_write_to_buffer failed");
+    describe_brick(f.get(), dtype, dims);
+    n = fpzip_write(f.get(), values);
+  }
+  if (n == 0) return std::nullopt;  // did not fit: buffer overflow
+  chunk.resize(kFpzipChunkHeaderSize + n);
+  put_u64(chunk.data(), checksum64(samples));
+  put_u64(chunk.data() + 8,
+          stream_checksum(std::span(chunk).subspan(kFpzipChunkHeaderSize), dtype, dims));
+  return chunk;
+}
+
+void decompress_brick_fpzip(std::span<const std::byte> chunk, DType dtype, BrickDims dims,
+                            std::span<std::byte> out, std::string_view what) {
+  if (out.size() != brick_bytes(dtype, dims)) {
+    throw make_error(ErrorCode::kInternal,
+                     "decompress_brick_fpzip: {} bytes of output for a {}x{}x{} brick of {}",
+                     out.size(), dims[0], dims[1], dims[2], dtype_name(dtype));
+  }
+  if (chunk.size() <= kFpzipChunkHeaderSize) {
+    throw make_error(ErrorCode::kCorrupt, "{}: fpzip chunk of {} bytes is shorter than its header",
+                     what, chunk.size());
+  }
+  const std::span<const std::byte> stream = chunk.subspan(kFpzipChunkHeaderSize);
+  if (stream_checksum(stream, dtype, dims) != get_u64(chunk.data() + 8)) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: fpzip chunk's stream checksum does not match (damaged, or not a {}x{}x{} "
+                     "brick of {})",
+                     what, dims[0], dims[1], dims[2], dtype_name(dtype));
+  }
+  std::vector<std::uint64_t> padded((stream.size() + kReadPadding + 7) / 8, 0);
+  std::memcpy(padded.data(), stream.data(), stream.size());
+  std::vector<std::uint64_t> copy;
+  void* values = out.data();
+  if (!is_aligned(values)) {
+    copy.resize((out.size() + 7) / 8);
+    values = copy.data();
+  }
+  std::size_t read = 0;
+  {
+    std::unique_ptr<FPZ, ReaderClose> f(fpzip_read_from_buffer(padded.data()));
+    if (!f) throw make_error(ErrorCode::kInternal, "fpzip_read_from_buffer failed");
+    describe_brick(f.get(), dtype, dims);
+    read = fpzip_read(f.get(), values);
+  }
+  if (read == 0 || read > stream.size()) {
+    throw make_error(ErrorCode::kCorrupt, "{}: fpzip chunk does not decode ({} of {} stream bytes read)",
+                     what, read, stream.size());
+  }
+  if (!copy.empty()) std::memcpy(out.data(), copy.data(), out.size());
+  if (checksum64(out) != get_u64(chunk.data())) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: fpzip chunk decodes to other samples than were written (an fpzip build "
+                     "with other floating-point arithmetic?)",
+                     what);
+  }
+}
+
+}  // namespace strielad
