@@ -128,8 +128,9 @@ void register_io(CLI::App& app, cli::Action& action, std::string command_line) {
                   "default), none or lorenzo3")
       ->capture_default_str();
   sub->add_option("--fpzip", f->fpzip,
-                  "Variables (or 'all') converted with strielad-convert --fpzip in every converter "
-                  "run (store format version 3); adds a read set of the fpzip chunks")
+                  "Variables (or 'all') converted with strielad-convert --fpzip in the main converter "
+                  "run (store format version 3); the extra codecs, the main one included, run "
+                  "without it; adds a read set of the fpzip chunks")
       ->delimiter(',');
   sub->add_option("--threads", f->threads, "Converter threads (default: all cores)");
   sub->add_option("--seed", f->seed, "Seed of the sample data")->capture_default_str();

@@ -139,7 +139,7 @@ ConversionBench run_conversion_bench(const ConversionBenchOptions& o) {
         fmt::format("build::convert in process, brick {}, blosc {} level {} {}-shuffle, "
                     "predictor {}{}, threads {}; includes NetCDF reads, fsync and finalize",
                     o.brick, c.name, c.level, c.shuffle, c.predictor,
-                    o.fpzip.empty() ? std::string()
+                    i > 0 || o.fpzip.empty() ? std::string()
                                     : fmt::format(", fpzip where smaller for {}", fmt::join(o.fpzip, ",")),
                     threads)));
   }
@@ -178,7 +178,7 @@ ConversionBench run_conversion_bench(const ConversionBenchOptions& o) {
       co.scan.variables = o.variables;
       co.brick = o.brick;
       co.codec = codecs[i];
-      co.fpzip = o.fpzip;
+      if (i == 0) co.fpzip = o.fpzip;
       co.threads = o.threads;
       cpu0 = process_cpu_seconds();
       const Stopwatch clock;

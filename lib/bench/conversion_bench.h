@@ -40,7 +40,8 @@ struct ConversionBenchOptions {
   std::filesystem::path work;      // scratch; the kept outputs are named below
   std::uint32_t brick = 16;
   format::CodecSpec codec;
-  std::vector<std::string> fpzip;  // build::ConvertOptions::fpzip of every converter run
+  // build::ConvertOptions::fpzip of the main converter run (the extra codecs run without).
+  std::vector<std::string> fpzip;
   int threads = 0;                 // converter threads, 0 = all cores
   int repeat = 3;
   bool with_nccopy = true;

@@ -88,8 +88,9 @@ IoSuiteReport run_io_suite(const IoSuiteOptions& options) {
   co.repeat = o.repeat;
   co.with_nccopy = have_nccopy;
   co.nccopy_extra = nccopy_extra;
+  // With fpzip, the main codec without it runs too: the same run compares them.
   for (const auto& c : o.extra_codecs) {
-    if (!(c == o.codec)) co.extra_codecs.push_back(c);
+    if (!(c == o.codec) || !o.fpzip.empty()) co.extra_codecs.push_back(c);
   }
   spdlog::info("bench: conversion throughput, {} round(s)", o.repeat);
   report.conversion = run_conversion_bench(co);

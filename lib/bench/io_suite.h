@@ -42,8 +42,9 @@ struct IoSuiteOptions {
   std::uint32_t brick = build::kDefaultBrick;  // main measurements: the converter default
   // Main measurements: the converter's default (predictor chosen per variable).
   format::CodecSpec codec{.predictor = std::string(build::kPredictorAuto)};
-  // Variables converted with build::ConvertOptions::fpzip in every converter run (store
-  // format version 3); the brick reads then add a set of fpzip chunks.
+  // Variables converted with build::ConvertOptions::fpzip in the main converter run (store
+  // format version 3); the extra codecs, the main one included, then run without, and the
+  // brick reads add a set of fpzip chunks.
   std::vector<std::string> fpzip;
   bool nccopy = true;             // false: skip the NetCDF competitors
   std::vector<std::string> nccopy_extra;  // extra nccopy flags, after the cache flags

@@ -16,6 +16,7 @@
 
 #include "store/brick_codec.h"
 #include "store/lorenzo_predictor.h"
+#include "support/brick_samples.h"
 #include "support/expect_error.h"
 
 namespace strielad {
@@ -23,18 +24,10 @@ namespace {
 
 using testing::expect_error;
 
-template <typename T>
-using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
-
-constexpr DType dtype_of(float) { return DType::kFloat32; }
-constexpr DType dtype_of(double) { return DType::kFloat64; }
-
-std::size_t count(BrickDims d) { return d[0] * d[1] * d[2]; }
-
-template <typename T>
-std::span<const std::byte> bytes_of(const std::vector<T>& v) {
-  return {reinterpret_cast<const std::byte*>(v.data()), v.size() * sizeof(T)};
-}
+using testing::Bits;
+using testing::bytes_of;
+using testing::count;
+using testing::dtype_of;
 
 // Samples of every awkward kind, mixed with a smooth field so the predictor has work.
 template <typename T>

@@ -15,6 +15,7 @@
 
 #include "core/checksum.h"
 #include "store/fpzip_chunk.h"
+#include "support/brick_samples.h"
 #include "support/expect_error.h"
 
 namespace strielad {
@@ -22,18 +23,10 @@ namespace {
 
 using testing::expect_error;
 
-template <typename T>
-using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
-
-constexpr DType dtype_of(float) { return DType::kFloat32; }
-constexpr DType dtype_of(double) { return DType::kFloat64; }
-
-std::size_t count(BrickDims d) { return d[0] * d[1] * d[2]; }
-
-template <typename T>
-std::span<const std::byte> bytes_of(const std::vector<T>& v) {
-  return {reinterpret_cast<const std::byte*>(v.data()), v.size() * sizeof(T)};
-}
+using testing::Bits;
+using testing::bytes_of;
+using testing::count;
+using testing::dtype_of;
 
 template <typename T>
 std::vector<T> smooth_samples(BrickDims d) {
@@ -117,17 +110,16 @@ TEST(FpzipChunkTest, EveryFlippedByteAndEveryTruncationIsRejected) {
   const auto chunk = compress_brick_fpzip(bytes_of(samples), DType::kFloat32, d);
   ASSERT_TRUE(chunk.has_value());
   std::vector<std::byte> out(samples.size() * 4);
+  const auto expect_rejected = [&](std::span<const std::byte> bad) {
+    expect_error([&] { decompress_brick_fpzip(bad, DType::kFloat32, d, out, "f: node 3"); },
+                 ErrorCode::kCorrupt, {"f: node 3", "fpzip chunk"});
+  };
   for (std::size_t i = 0; i < chunk->size(); ++i) {
     auto bad = *chunk;
     bad[i] ^= std::byte{0x10};
-    expect_error([&] { decompress_brick_fpzip(bad, DType::kFloat32, d, out, "f: node 3"); },
-                 ErrorCode::kCorrupt, {"f: node 3", "fpzip chunk"});
+    expect_rejected(bad);
   }
-  for (std::size_t n = 0; n < chunk->size(); ++n) {
-    const std::span<const std::byte> cut(chunk->data(), n);
-    expect_error([&] { decompress_brick_fpzip(cut, DType::kFloat32, d, out, "f: node 3"); },
-                 ErrorCode::kCorrupt, {"f: node 3", "fpzip chunk"});
-  }
+  for (std::size_t n = 0; n < chunk->size(); ++n) expect_rejected({chunk->data(), n});
 }
 
 TEST(FpzipChunkTest, AChunkReadAsAnotherShapeOrTypeIsRejected) {
@@ -135,14 +127,20 @@ TEST(FpzipChunkTest, AChunkReadAsAnotherShapeOrTypeIsRejected) {
   const auto samples = smooth_samples<float>(d);
   const auto chunk = compress_brick_fpzip(bytes_of(samples), DType::kFloat32, d);
   ASSERT_TRUE(chunk.has_value());
-  // Another shape of the same sample count decodes to other samples: the samples
-  // checksum catches it.
+  // The stream checksum is seeded with the shape and type, so the stream never reaches
+  // fpzip as another shape (even of the same sample count) or type.
   std::vector<std::byte> out(samples.size() * 4);
   expect_error([&] { decompress_brick_fpzip(*chunk, DType::kFloat32, {7, 8, 9}, out, "f"); },
-               ErrorCode::kCorrupt, {"f: fpzip chunk"});
+               ErrorCode::kCorrupt, {"f: fpzip chunk's stream checksum", "not a 7x8x9 brick of float32"});
   std::vector<std::byte> wide(samples.size() * 8);
   expect_error([&] { decompress_brick_fpzip(*chunk, DType::kFloat64, d, wide, "f"); },
-               ErrorCode::kCorrupt, {"f: fpzip chunk"});
+               ErrorCode::kCorrupt, {"f: fpzip chunk's stream checksum", "float64"});
+  // Samples that differ from what was written (another fpzip build's arithmetic, here a
+  // header whose samples checksum was altered) are caught after decoding.
+  auto other = *chunk;
+  other[0] ^= std::byte{1};
+  expect_error([&] { decompress_brick_fpzip(other, DType::kFloat32, d, out, "f"); },
+               ErrorCode::kCorrupt, {"f: fpzip chunk decodes to other samples"});
   // An output of the wrong size is the caller's bug.
   std::vector<std::byte> small(16);
   expect_error([&] { decompress_brick_fpzip(*chunk, DType::kFloat32, d, small, "f"); },
