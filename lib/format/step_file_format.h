@@ -13,9 +13,11 @@
 
 namespace strielad::format {
 
-// Step files have their own version: their layout is unchanged in store format version
-// 2 (only the manifest changed: how a chunk is decoded is the variable's codec, and the
-// header's store_id ties the file to that manifest), so they are still version 1.
+// Step files have their own version: their layout is unchanged in store format versions
+// 2 and 3 (version 2 changed only the manifest: how a chunk is decoded is the variable's
+// codec, and the header's store_id ties the file to that manifest; version 3 gave the
+// reserved byte 13 of an index entry a meaning, the chunk coding, which older readers
+// reject as a non-zero reserved byte), so they are still version 1.
 inline constexpr std::uint32_t kStepFileFormatVersion = 1;
 inline constexpr std::size_t kStepHeaderSize = 64;
 inline constexpr std::size_t kStepFooterSize = 64;
