@@ -41,7 +41,7 @@ struct ConvertOptions {
   std::map<std::string, format::CodecSpec> codec_for;
   // Variables whose data bricks are stored as fpzip chunks where those are smaller (store
   // format version 3; "all" for every variable), e.g. from --fpzip clw,qr: smaller cloud
-  // fields at about ten times the decode time per brick (BENCHMARKS.md).
+  // fields at about three times the cold read time per fpzip brick (BENCHMARKS.md).
   std::vector<std::string> fpzip;
   int threads = 0;  // 0 = all cores
   // Refuse (kUnsupported, before reading any data) a grid whose conversion would need

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <memory>
 
+#include "core/byte_io.h"
 #include "core/checksum.h"
 #include "core/error.h"
 
@@ -40,10 +41,6 @@ std::size_t brick_bytes(DType dtype, BrickDims dims) {
   return dims[0] * dims[1] * dims[2] * dtype_size(dtype);
 }
 
-void put_u64(std::byte* at, std::uint64_t v) {
-  for (int i = 0; i < 8; ++i) at[i] = static_cast<std::byte>(v >> (8 * i));
-}
-
 // The stream checksum is seeded with the brick's shape and type (formats/store.md), so a
 // stream is never decoded as another shape or type: fpzip would then read past it.
 std::uint64_t stream_checksum(std::span<const std::byte> stream, DType dtype, BrickDims dims) {
@@ -51,12 +48,6 @@ std::uint64_t stream_checksum(std::span<const std::byte> stream, DType dtype, Br
                              std::uint64_t{dims[2]} << 40 |
                              std::uint64_t{dtype == DType::kFloat64 ? 1u : 0u} << 60;
   return XXH3_64bits_withSeed(stream.data(), stream.size(), seed);
-}
-
-std::uint64_t get_u64(const std::byte* at) {
-  std::uint64_t v = 0;
-  for (int i = 0; i < 8; ++i) v |= std::to_integer<std::uint64_t>(at[i]) << (8 * i);
-  return v;
 }
 
 }  // namespace
@@ -86,9 +77,10 @@ std::optional<std::vector<std::byte>> compress_brick_fpzip(std::span<const std::
   }
   if (n == 0) return std::nullopt;  // did not fit: buffer overflow
   chunk.resize(kFpzipChunkHeaderSize + n);
-  put_u64(chunk.data(), checksum64(samples));
-  put_u64(chunk.data() + 8,
-          stream_checksum(std::span(chunk).subspan(kFpzipChunkHeaderSize), dtype, dims));
+  ByteWriter header;
+  header.u64(checksum64(samples));
+  header.u64(stream_checksum(std::span(chunk).subspan(kFpzipChunkHeaderSize), dtype, dims));
+  std::memcpy(chunk.data(), header.data().data(), kFpzipChunkHeaderSize);
   return chunk;
 }
 
@@ -103,8 +95,11 @@ void decompress_brick_fpzip(std::span<const std::byte> chunk, DType dtype, Brick
     throw make_error(ErrorCode::kCorrupt, "{}: fpzip chunk of {} bytes is shorter than its header",
                      what, chunk.size());
   }
+  ByteReader header(chunk, what);
+  const std::uint64_t samples_sum = header.u64("samples_checksum");
+  const std::uint64_t stream_sum = header.u64("stream_checksum");
   const std::span<const std::byte> stream = chunk.subspan(kFpzipChunkHeaderSize);
-  if (stream_checksum(stream, dtype, dims) != get_u64(chunk.data() + 8)) {
+  if (stream_checksum(stream, dtype, dims) != stream_sum) {
     throw make_error(ErrorCode::kCorrupt,
                      "{}: fpzip chunk's stream checksum does not match (damaged, or not a {}x{}x{} "
                      "brick of {})",
@@ -130,7 +125,7 @@ void decompress_brick_fpzip(std::span<const std::byte> chunk, DType dtype, Brick
                      what, read, stream.size());
   }
   if (!copy.empty()) std::memcpy(out.data(), copy.data(), out.size());
-  if (checksum64(out) != get_u64(chunk.data())) {
+  if (checksum64(out) != samples_sum) {
     throw make_error(ErrorCode::kCorrupt,
                      "{}: fpzip chunk decodes to other samples than were written (an fpzip build "
                      "with other floating-point arithmetic?)",
