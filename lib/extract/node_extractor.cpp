@@ -310,6 +310,9 @@ struct Scratch {
   // sample, 1 the edge along the plane's first axis, 2 along its second, 3 the
   // diagonal); stamp + dims[2].
   std::array<std::vector<Slot>, 6> sides;
+  // Node-side squares of wholly inside cells, per side (1 = inside; first plane axis
+  // fastest), made into rectangles once every cell is done; all 0 between extractions.
+  std::array<std::vector<std::uint8_t>, 6> inside_squares;
   std::uint32_t stamp = 0;       // this extraction's first stamp
   std::uint32_t next_stamp = 1;  // the next extraction's
   std::vector<std::uint64_t> row_or, row_and, col_or, col_and;
@@ -324,8 +327,12 @@ struct Scratch {
     if (lattice.size() < 2 * slab * 8) lattice.resize(2 * slab * 8);
     for (int a = 0; a < 3; ++a) {
       const std::size_t plane = dims[(a + 1) % 3] * dims[(a + 2) % 3] * 4;
+      const std::size_t squares = (dims[(a + 1) % 3] - 1) * (dims[(a + 2) % 3] - 1);
       for (int s = 0; s < 2; ++s) {
         if (sides[2 * a + s].size() < plane) sides[2 * a + s].resize(plane);
+        auto& sq = inside_squares[2 * a + s];
+        if (sq.size() < squares) sq.resize(squares);
+        std::fill(sq.begin(), sq.begin() + static_cast<std::ptrdiff_t>(squares), 0);
       }
     }
     // Stamps stamp .. stamp + dims[2], all above those of earlier extractions.
@@ -456,19 +463,103 @@ class Kernel {
     return vtx;
   }
 
-  // A wholly inside cell: its faces on the node boundary.
+  // A wholly inside cell: its faces on the node boundary, kept as squares of the side
+  // for inside_rectangles().
   void inside_cell_faces() {
-    const Tables& tb = tables();
     for (int side = 0; side < 6; ++side) {
-      if (!(boundary_ & (1 << side))) continue;
-      const std::uint32_t group = side_group_ + static_cast<std::uint32_t>(side);
-      const auto& quad = tb.side_quads[side];
-      const std::uint32_t a = side_corner(side, quad[0]);
-      const std::uint32_t b = side_corner(side, quad[1]);
-      const std::uint32_t c = side_corner(side, quad[2]);
-      const std::uint32_t d = side_corner(side, quad[3]);
-      b_.triangle(group, a, b, c);
-      b_.triangle(group, a, c, d);
+      if (boundary_ & (1 << side)) mark_inside_square(side);
+    }
+  }
+
+  // The face of the current cell on node side `side` is wholly inside.
+  void mark_inside_square(int side) {
+    const int a = side / 2;
+    const int u = (a + 1) % 3, v = (a + 2) % 3;
+    const std::size_t cell[3]{x_, y_, z_};
+    s_.inside_squares[side][cell[v] * (dims_[u] - 1) + cell[u]] = 1;
+  }
+
+  // The marked squares of every node side, as few rectangles as a greedy sweep finds,
+  // each triangulated through every lattice point on its perimeter and none inside it:
+  // the triangles along a rectangle's edges are unit lattice segments, as the faces of
+  // the cut cells and rectangles beside it (and the node sides meeting it at the node's
+  // edges) have, so the mesh stays closed; a w x h rectangle takes 2 (w + h) - 2
+  // triangles instead of 2 w h. Clears the marks.
+  void inside_rectangles() {
+    for (int side = 0; side < 6; ++side) {
+      const int a = side / 2;
+      const std::size_t nu = dims_[(a + 1) % 3] - 1, nv = dims_[(a + 2) % 3] - 1;
+      std::uint8_t* sq = s_.inside_squares[side].data();
+      for (std::size_t v0 = 0; v0 < nv; ++v0) {
+        for (std::size_t u0 = 0; u0 < nu; ++u0) {
+          if (!sq[v0 * nu + u0]) continue;
+          std::size_t w = 1;
+          while (u0 + w < nu && sq[v0 * nu + u0 + w]) ++w;
+          std::size_t h = 1;
+          for (bool full = true; full && v0 + h < nv; h += full ? 1 : 0) {
+            const std::uint8_t* row = sq + (v0 + h) * nu + u0;
+            full = std::all_of(row, row + w, [](std::uint8_t b) { return b != 0; });
+          }
+          for (std::size_t dv = 0; dv < h; ++dv) std::fill_n(sq + (v0 + dv) * nu + u0, w, 0);
+          rectangle(side, u0, v0, w, h);
+        }
+      }
+    }
+  }
+
+  // Rectangle [u0, u0 + w] x [v0, v0 + h] of lattice points on node side `side` (u, v
+  // its first and second plane axes, as in side_slot()): the strip between its left and
+  // right edges, with the strip's first triangle fanned from its upper right corner
+  // through the bottom edge's points and its last fanned from its lower left corner
+  // through the top edge's points. Counter-clockwise in (u, v) is outward on an upper
+  // side.
+  void rectangle(int side, std::size_t u0, std::size_t v0, std::size_t w, std::size_t h) {
+    const int a = side / 2;
+    const int u = (a + 1) % 3, v = (a + 2) % 3;
+    const std::uint32_t group = side_group_ + static_cast<std::uint32_t>(side);
+    const bool upper = side % 2 == 1;
+    auto point = [&](std::size_t pu, std::size_t pv) {
+      std::size_t c[3];
+      c[a] = upper ? dims_[a] - 1 : 0;
+      c[u] = pu;
+      c[v] = pv;
+      x_ = c[0];
+      y_ = c[1];
+      z_ = c[2];
+      return side_corner(side, 0);
+    };
+    auto triangle = [&](std::uint32_t p, std::uint32_t q, std::uint32_t r) {
+      if (upper) {
+        b_.triangle(group, p, q, r);
+      } else {
+        b_.triangle(group, p, r, q);
+      }
+    };
+    const std::size_t u1 = u0 + w, v1 = v0 + h;
+    // Bottom edge, fanned from (u1, v0 + 1).
+    const std::uint32_t bottom_apex = point(u1, v0 + 1);
+    std::uint32_t prev = point(u0, v0);
+    for (std::size_t i = u0 + 1; i <= u1; ++i) {
+      const std::uint32_t next = point(i, v0);
+      triangle(prev, next, bottom_apex);
+      prev = next;
+    }
+    // The strip between the left and right edges; its row at the top is fanned.
+    for (std::size_t j = v0; j < v1; ++j) {
+      const std::uint32_t left = point(u0, j), left_up = point(u0, j + 1);
+      const std::uint32_t right_up = point(u1, j + 1);
+      if (j > v0) triangle(left, point(u1, j), right_up);
+      if (j + 1 < v1) {
+        triangle(left, right_up, left_up);
+      } else {
+        // Top edge, fanned from (u0, v1 - 1).
+        std::uint32_t top = left_up;
+        for (std::size_t i = u0 + 1; i <= u1; ++i) {
+          const std::uint32_t next = point(i, v1);
+          triangle(left, next, top);
+          top = next;
+        }
+      }
     }
   }
 
@@ -541,7 +632,13 @@ class Kernel {
     const Tables& tb = tables();
     for (int side = 0; side < 6; ++side) {
       if (!(boundary_ & (1 << side))) continue;
-      for (const std::array<int, 3>& tri : Tables::side_triangles(tb.side_quads[side])) {
+      const auto& quad = tb.side_quads[side];
+      const int face_bits = (1 << quad[0]) | (1 << quad[1]) | (1 << quad[2]) | (1 << quad[3]);
+      if ((bits & face_bits) == face_bits) {  // the whole face
+        mark_inside_square(side);
+        continue;
+      }
+      for (const std::array<int, 3>& tri : Tables::side_triangles(quad)) {
         const std::array<bool, 3> in{((bits >> tri[0]) & 1) != 0, ((bits >> tri[1]) & 1) != 0,
                                      ((bits >> tri[2]) & 1) != 0};
         side_triangle_part(side, c, tri, in, false);
@@ -845,6 +942,8 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
       }
     }
   }
+
+  kernel.inside_rectangles();
 
   // Lattice to axis coordinates, normals, attributes: once per vertex.
   builder.drop_unused_vertices();

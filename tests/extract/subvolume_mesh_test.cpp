@@ -161,6 +161,67 @@ TEST(SubvolumeMesh, ConstantInsideGivesTheNodeBoxAndOutsideGivesNothing) {
   EXPECT_TRUE(stats.empty_by_condition);
 }
 
+std::size_t node_face_triangles(const Mesh& mesh) {
+  std::size_t n = 0;
+  for (auto k : mesh.face_kinds) n += k == FaceKind::kNodeBoundary || k == FaceKind::kGridBoundary ? 1 : 0;
+  return n;
+}
+
+TEST(SubvolumeMesh, WhollyInsideNodeFacesBecomeRectanglesThroughTheirPerimeter) {
+  // A node wholly inside on uneven axes: each side is one rectangle of w x h cells,
+  // triangulated through its 2 (w + h) lattice points on the perimeter and none
+  // inside: 2 (w + h) - 2 triangles instead of 2 w h.
+  const NodeSamples s = sampled({axis(9, 0, 8, 1.7), axis(6, -1, 4), axis(4, 0, 3, 0.5)},
+                                {[](double, double, double) { return 1.0; }});
+  ExtractRequest r;
+  r.limits = {{0, 0.5, kUnbounded}};
+  const Mesh box = extract_node_mesh(s, r);
+  expect_clean(box);
+  EXPECT_NEAR(enclosed_volume(box), 8.0 * 5.0 * 3.0, 1e-9);
+  const std::size_t w = 8, h = 5, d = 3;
+  EXPECT_EQ(box.triangles.size(), 2 * ((2 * (w + h) - 2) + (2 * (h + d) - 2) + (2 * (w + d) - 2)));
+  EXPECT_EQ(box.positions.size(), 8 * (w + h + d));  // each side's perimeter points (a group per side)
+  // Points strictly inside a side are left out: every vertex lies on a node edge.
+  for (const auto& p : box.positions) {
+    int on_bounds = 0;
+    on_bounds += p[0] == 0.0f || p[0] == 8.0f ? 1 : 0;
+    on_bounds += p[1] == -1.0f || p[1] == 4.0f ? 1 : 0;
+    on_bounds += p[2] == 0.0f || p[2] == 3.0f ? 1 : 0;
+    EXPECT_GE(on_bounds, 2) << p[0] << " " << p[1] << " " << p[2];
+  }
+
+  // A half-filled node: the inside squares of each side become a few rectangles that
+  // meet the cut cells' faces on unit lattice segments, so the mesh stays closed and
+  // has far fewer node-face triangles than two per inside square.
+  const NodeSamples half = sampled({axis(25, 0, 1), axis(25, 0, 1), axis(25, 0, 1, 1.4)},
+                                   {[](double x, double y, double z) { return z - 0.3 * x - 0.2 * y; }});
+  ExtractRequest below;
+  below.limits = {{0, -kUnbounded, 0.4}};
+  const Mesh m = extract_node_mesh(half, below);
+  expect_clean(m);
+  // z <= 0.4 + 0.3 x + 0.2 y over the unit square (below 1 everywhere); the field is
+  // linear, so its trilinear interpolant and the mesh are exact.
+  EXPECT_NEAR(enclosed_volume(m), 0.4 + 0.15 + 0.1, 1e-6);
+  // Squares of the node's sides whose four corners are inside: two triangles each
+  // before.
+  const auto& f = half.fields[0];
+  auto inside = [&](std::size_t x, std::size_t y, std::size_t z) {
+    return f[(z * 25 + y) * 25 + x] <= 0.4f;
+  };
+  std::size_t squares = 0;
+  for (std::size_t i = 0; i + 1 < 25; ++i) {
+    for (std::size_t j = 0; j + 1 < 25; ++j) {
+      for (std::size_t e : {std::size_t{0}, std::size_t{24}}) {
+        squares += inside(e, i, j) && inside(e, i + 1, j) && inside(e, i, j + 1) && inside(e, i + 1, j + 1);
+        squares += inside(i, e, j) && inside(i + 1, e, j) && inside(i, e, j + 1) && inside(i + 1, e, j + 1);
+        squares += inside(i, j, e) && inside(i + 1, j, e) && inside(i, j + 1, e) && inside(i + 1, j + 1, e);
+      }
+    }
+  }
+  const std::size_t faces = node_face_triangles(m);
+  EXPECT_LT(faces, squares) << squares << " inside squares";  // under half of two per square
+}
+
 TEST(SubvolumeMesh, ThresholdsExactlyOnSampleValuesGiveNoDegenerateTriangles) {
   // Integer-valued fields, thresholds at integers: crossings fall on samples.
   const NodeSamples s = sampled({axis(9, 0, 8), axis(9, 0, 8), axis(9, 0, 8)},
