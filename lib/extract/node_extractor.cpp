@@ -1034,19 +1034,23 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
       const double f = p[a] - static_cast<double>(i);
       cp.f[a] = f;
       // The sample's own coordinate at either end of the cell (exact, as the
-      // neighbouring node computes it), interpolated inside (chosen without branches:
+      // neighbouring node computes it), interpolated inside (selects, not branches:
       // which case applies varies from vertex to vertex).
       const auto& c = samples.coords[a];
-      const double choice[3]{c[i] + f * (c[i + 1] - c[i]), c[i], c[i + 1]};
-      position[a] = choice[static_cast<int>(f == 0.0) + 2 * static_cast<int>(f == 1.0)];
-      rounded_onto_sample |= (f != 0.0) & (f != 1.0) & ((choice[0] == c[i]) | (choice[0] == c[i + 1]));
+      const double c0 = c[i], c1 = c[i + 1];
+      const double inner = c0 + f * (c1 - c0);
+      double at = f == 0.0 ? c0 : inner;
+      at = f == 1.0 ? c1 : at;
+      position[a] = at;
+      rounded_onto_sample |= (f != 0.0) & (f != 1.0) & ((inner == c0) | (inner == c1));
     }
     cp.index = (cell[2] * dims[1] + cell[1]) * dims[0] + cell[0];
     cp.cell = {static_cast<std::uint32_t>(cell[0]), static_cast<std::uint32_t>(cell[1]),
                static_cast<std::uint32_t>(cell[2])};
   }
-  // Pass 2: normals as covectors in axis coordinates (lattice gradient / spacing).
-  scratch.normals.resize(nv);
+  // Pass 2: normals as covectors in axis coordinates (lattice gradient / spacing), unit
+  // length (face normals where the gradient is zero or undefined, below).
+  mesh.normals.resize(nv);
   for (std::size_t v = 0; v < nv; ++v) {
     const CellPoint& cp = scratch.cells[v];
     const GroupNormal& gn = group_normal[builder.vertex_groups[v]];
@@ -1058,12 +1062,6 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
       const double value = gn.sign * scratch.inverse_spacing[gn.axis][cp.cell[gn.axis]];
       for (int a = 0; a < 3; ++a) n[a] = a == gn.axis ? value : 0.0;  // no indexed store
     }
-    scratch.normals[v] = n;
-  }
-  // Pass 3: unit normals (face normals where the gradient is zero or undefined).
-  mesh.normals.resize(nv);
-  for (std::size_t v = 0; v < nv; ++v) {
-    const Vec3& n = scratch.normals[v];
     const double len = std::sqrt(dot(n, n));
     if (!(len > 0) || !std::isfinite(len)) {
       scratch.needs_fallback[v] = 1;
