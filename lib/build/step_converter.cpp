@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "build/step_converter.h"
 
+#include <sys/mman.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <mutex>
+#include <new>
 #include <vector>
 
 #include "build/brick_encoder.h"
@@ -22,7 +25,11 @@ namespace {
 // Plane buffers reused across slabs and variables. A fresh allocation of a slab (tens of
 // MB) per layer is a new mapping every time: page faults, zeroing and unmapping in the
 // kernel took a quarter of the conversion's CPU time (perf, 715 x 778 x 150). The pool
-// holds no more buffers than the pipeline has slabs alive at once.
+// holds no more buffers than the pipeline has slabs alive at once. Buffers are 2 MiB
+// aligned and ask for transparent huge pages: the kernel's copy of the input into them
+// (read(2)) was a quarter of the converter's CPU samples on the full paper step with
+// 4 KiB pages and 3% with huge pages, and a whole conversion took about 10% less time
+// (perf and A/B runs, 2026-11-23).
 class PlaneBufferPool {
  public:
   // A buffer of at least `count` values; it returns to the pool when the last copy of the
@@ -40,19 +47,35 @@ class PlaneBufferPool {
         free_.erase(it);
       }
     }
-    if (!buffer.data) buffer = Buffer{std::make_unique_for_overwrite<std::byte[]>(bytes), bytes};
+    if (!buffer.data) buffer = Buffer{allocate_huge(bytes), bytes};
     T* values = reinterpret_cast<T*>(buffer.data.release());
     return std::shared_ptr<T[]>(values, [this, bytes = buffer.bytes](T* p) {
       std::lock_guard lock(mutex_);
-      free_.push_back(Buffer{std::unique_ptr<std::byte[]>(reinterpret_cast<std::byte*>(p)), bytes});
+      free_.push_back(Buffer{Memory(reinterpret_cast<std::byte*>(p)), bytes});
     });
   }
 
  private:
+  struct FreeMemory {
+    void operator()(std::byte* p) const { std::free(p); }
+  };
+  using Memory = std::unique_ptr<std::byte[], FreeMemory>;
   struct Buffer {
-    std::unique_ptr<std::byte[]> data;
+    Memory data;
     std::size_t bytes = 0;
   };
+
+  // `bytes` rounded up to whole 2 MiB pages, not zero-filled.
+  static Memory allocate_huge(std::size_t bytes) {
+    constexpr std::size_t kHuge = std::size_t{2} << 20;
+    const std::size_t rounded = (std::max<std::size_t>(bytes, 1) + kHuge - 1) / kHuge * kHuge;
+    auto* p = static_cast<std::byte*>(std::aligned_alloc(kHuge, rounded));
+    if (p == nullptr) throw std::bad_alloc();
+#ifdef MADV_HUGEPAGE
+    madvise(p, rounded, MADV_HUGEPAGE);  // a hint: without huge pages it works the same
+#endif
+    return Memory(p);
+  }
   std::mutex mutex_;
   std::vector<Buffer> free_;
 };
