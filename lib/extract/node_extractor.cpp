@@ -311,14 +311,14 @@ struct Scratch {
   // diagonal); stamp + dims[2].
   std::array<std::vector<Slot>, 6> sides;
   // Node-side squares of wholly inside cells, per side (1 = inside; first plane axis
-  // fastest), made into rectangles once every cell is done; all 0 between extractions.
+  // fastest), made into rectangles once every cell is done; cleared by begin().
   std::array<std::vector<std::uint8_t>, 6> inside_squares;
   std::uint32_t stamp = 0;       // this extraction's first stamp
   std::uint32_t next_stamp = 1;  // the next extraction's
   std::vector<std::uint64_t> row_or, row_and, col_or, col_and;
   std::vector<std::uint8_t> needs_fallback;
   std::vector<std::uint8_t> multi;  // per cell: crossed by several conditions
-  std::vector<Vec3> fallback, normals;
+  std::vector<Vec3> fallback;
   std::vector<CellPoint> cells;
   std::array<std::vector<double>, 3> inverse_spacing;
 
@@ -518,6 +518,8 @@ class Kernel {
     const int u = (a + 1) % 3, v = (a + 2) % 3;
     const std::uint32_t group = side_group_ + static_cast<std::uint32_t>(side);
     const bool upper = side % 2 == 1;
+    // The side's vertex at lattice point (pu, pv), through side_corner() of a cell placed
+    // there (the cell loop is over, so its current cell is free to move).
     auto point = [&](std::size_t pu, std::size_t pv) {
       std::size_t c[3];
       c[a] = upper ? dims_[a] - 1 : 0;
@@ -1072,7 +1074,7 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
                          static_cast<float>(n[2] * inv)};
     }
   }
-  // Pass 4: attributes.
+  // Pass 3: attributes.
   for (std::size_t a = 0; a < attribute_data.size(); ++a) {
     auto& out = mesh.attributes[a];
     out.resize(nv);
