@@ -124,28 +124,40 @@ ConversionBench run_conversion_bench(const ConversionBenchOptions& o) {
 
   ContenderRuns read = contender("read", fmt::format("read(2) every input file to the end, {} MiB buffer",
                                          kCopyBufferBytes >> 20));
+  ContenderRuns direct_read = contender(
+      "read (O_DIRECT)", fmt::format("O_DIRECT reads of every input file to the end, {} MiB each, "
+                                     "as the converter reads raw netCDF-4 input",
+                                     kDirectPieceBytes >> 20));
+  bool direct_read_ran = false;
   ContenderRuns copy = contender("read+copy",
                      fmt::format("read(2) + write(2) a copy of every input file, {} MiB buffer, "
                                  "fsync", kCopyBufferBytes >> 20));
   // The main converter run (kept store) first, then one per extra codec.
+  // Runs 0 and (buffered_input_run) 1 are the main codec, the second reading buffered.
   std::vector<format::CodecSpec> codecs = {o.codec};
+  if (o.buffered_input_run) codecs.push_back(o.codec);
+  const std::size_t main_runs = codecs.size();
   codecs.insert(codecs.end(), o.extra_codecs.begin(), o.extra_codecs.end());
   std::vector<ContenderRuns> converts;
   for (std::size_t i = 0; i < codecs.size(); ++i) {
     const auto& c = codecs[i];
+    const bool buffered = o.buffered_input_run && i == 1;
     converts.push_back(contender(
         i == 0 ? std::string("strielad-convert")
-               : fmt::format("strielad-convert ({})", codec_label(c)),
+               : buffered ? std::string("strielad-convert (buffered input)")
+                          : fmt::format("strielad-convert ({})", codec_label(c)),
         fmt::format("build::convert in process, brick {}, blosc {} level {} {}-shuffle, "
-                    "predictor {}{}, threads {}; includes NetCDF reads, fsync and finalize",
+                    "predictor {}{}, threads {}; includes NetCDF reads ({}), fsync and finalize",
                     o.brick, c.name, c.level, c.shuffle, c.predictor,
-                    i > 0 || o.fpzip.empty() ? std::string()
+                    i >= main_runs || o.fpzip.empty() ? std::string()
                                     : fmt::format(", fpzip where smaller for {}", fmt::join(o.fpzip, ",")),
-                    threads)));
+                    threads,
+                    buffered ? "every read through netCDF and the page cache"
+                             : "raw netCDF-4 planes with O_DIRECT")));
   }
   ContenderRuns nccopy =
       contender("nccopy", shell_command(bench.nccopy_argv) + " (+ fsync of the output)");
-  for (auto* c : {&read, &copy, &nccopy}) c->input_bytes = input_bytes;
+  for (auto* c : {&read, &direct_read, &copy, &nccopy}) c->input_bytes = input_bytes;
   for (auto& c : converts) c.input_bytes = input_bytes;
 
   for (int round = 0; round < std::max(1, o.repeat); ++round) {
@@ -156,6 +168,15 @@ ConversionBench run_conversion_bench(const ConversionBenchOptions& o) {
     read.cpu_seconds.push_back(process_cpu_seconds() - cpu0);
     read.seconds.push_back(r.seconds);
     read.output_bytes = 0;
+
+    // read with O_DIRECT
+    direct_read.max_resident_before = std::max(direct_read.max_resident_before, evict_inputs(o.inputs));
+    cpu0 = process_cpu_seconds();
+    if (const auto d = read_files_direct(o.inputs)) {
+      direct_read.cpu_seconds.push_back(process_cpu_seconds() - cpu0);
+      direct_read.seconds.push_back(d->seconds);
+      direct_read_ran = true;
+    }
 
     // read + copy
     copy.max_resident_before = std::max(copy.max_resident_before, evict_inputs(o.inputs));
@@ -178,7 +199,8 @@ ConversionBench run_conversion_bench(const ConversionBenchOptions& o) {
       co.scan.variables = o.variables;
       co.brick = o.brick;
       co.codec = codecs[i];
-      if (i == 0) co.fpzip = o.fpzip;
+      if (i < main_runs) co.fpzip = o.fpzip;
+      co.scan.direct_input = !(o.buffered_input_run && i == 1);
       co.threads = o.threads;
       cpu0 = process_cpu_seconds();
       const Stopwatch clock;
@@ -228,6 +250,7 @@ ConversionBench run_conversion_bench(const ConversionBenchOptions& o) {
   if (o.with_nccopy) bench.contenders.push_back(std::move(nccopy));
   bench.contenders.push_back(std::move(copy));
   bench.contenders.push_back(std::move(read));
+  if (direct_read_ran) bench.contenders.push_back(std::move(direct_read));
   return bench;
 }
 

@@ -48,10 +48,14 @@ struct ConversionBenchOptions {
   std::vector<std::string> nccopy_extra;  // extra nccopy flags (cache sizes), before the files
   // More converter runs per round with these codecs ("strielad-convert (lz4 5 byte)").
   std::vector<format::CodecSpec> extra_codecs;
+  // One more run per round like the main one but reading through netCDF and the page
+  // cache ("strielad-convert (buffered input)"): what direct input reads are worth.
+  bool buffered_input_run = true;
 };
 
 struct ConversionBench {
-  // strielad-convert, its extra codecs, nccopy (if run), read+copy, read
+  // strielad-convert, its buffered-input and extra-codec runs, nccopy (if run), read+copy,
+  // read, read (O_DIRECT) (if the file system allows it)
   std::vector<ContenderRuns> contenders;
   std::filesystem::path store;            // the last converted store (kept)
   std::filesystem::path nccopy_output;    // the last nccopy output (kept; empty if none)

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bench/stopwatch.h"
+#include "core/direct_read_file.h"
 #include "core/error.h"
 
 namespace strielad::bench {
@@ -53,6 +54,23 @@ CopyResult read_files(std::span<const std::filesystem::path> files, std::size_t 
   for (const auto& path : files) {
     const Fd in(path, O_RDONLY);
     while (const std::size_t n = read_some(in.get(), buf, path)) r.bytes += n;
+  }
+  r.seconds = clock.seconds();
+  return r;
+}
+
+std::optional<CopyResult> read_files_direct(std::span<const std::filesystem::path> files,
+                                            std::size_t piece_bytes) {
+  CopyResult r;
+  const Stopwatch clock;
+  for (const auto& path : files) {
+    const auto file = DirectReadFile::open(path);
+    if (!file) return std::nullopt;
+    for (std::uint64_t offset = 0; offset < file->size(); offset += piece_bytes) {
+      const std::size_t n =
+          static_cast<std::size_t>(std::min<std::uint64_t>(piece_bytes, file->size() - offset));
+      r.bytes += file->read_view(offset, n).size();
+    }
   }
   r.seconds = clock.seconds();
   return r;

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 
 namespace strielad::bench {
@@ -20,6 +21,13 @@ struct CopyResult {
 // Reads every file to the end with read(2) into one buffer. Throws kIo.
 CopyResult read_files(std::span<const std::filesystem::path> files,
                       std::size_t buffer_bytes = kCopyBufferBytes);
+
+// Reads every file to the end with O_DIRECT (DirectReadFile, reads of `piece_bytes`),
+// as the converter reads raw netCDF-4 input: the disk's own speed, without the page
+// cache. nullopt when a file's file system refuses O_DIRECT. Throws kIo.
+inline constexpr std::size_t kDirectPieceBytes = std::size_t{16} << 20;  // the converter's
+std::optional<CopyResult> read_files_direct(std::span<const std::filesystem::path> files,
+                                            std::size_t piece_bytes = kDirectPieceBytes);
 
 // Copies each file into `out_dir` (same file name) with read(2)/write(2), fsyncs every
 // copy before the clock stops. Throws kIo.

@@ -75,6 +75,7 @@ json ConvertResult::to_json() const {
   return json{{"steps_converted", steps_converted},
               {"steps_skipped", steps_skipped},
               {"input_bytes", input_bytes},
+              {"direct_input_bytes", direct_input_bytes},
               {"written_bytes", written_bytes},
               {"bricks", {{"empty", empty}, {"constant", constant}, {"data", data}}},
               {"seconds", seconds},
@@ -334,6 +335,7 @@ ConvertResult convert(const ConvertOptions& options) {
     result.constant += c.constant;
     result.data += c.data;
   }
+  result.direct_input_bytes = reader.direct_bytes();
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 

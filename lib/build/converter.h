@@ -58,6 +58,7 @@ struct ConvertResult {
   std::uint32_t steps_converted = 0;
   std::uint32_t steps_skipped = 0;  // already present from an earlier run
   std::uint64_t input_bytes = 0;    // source bytes read by this run
+  std::uint64_t direct_input_bytes = 0;  // of which read with O_DIRECT (ScanOptions)
   std::uint64_t written_bytes = 0;  // step-file bytes written by this run
   std::uint64_t empty = 0, constant = 0, data = 0;
   double seconds = 0;

@@ -61,23 +61,36 @@ DirectReadFile::~DirectReadFile() {
 }
 
 std::uint64_t DirectReadFile::read_at(std::uint64_t offset, std::span<std::byte> out) const {
-  if (offset > size_ || out.size() > size_ - offset) {
+  std::uint64_t device_bytes = 0;
+  const std::span<const std::byte> view = read_blocks(offset, out.size(), &device_bytes);
+  if (!view.empty()) std::memcpy(out.data(), view.data(), view.size());
+  return device_bytes;
+}
+
+std::span<const std::byte> DirectReadFile::read_view(std::uint64_t offset, std::size_t bytes) const {
+  return read_blocks(offset, bytes, nullptr);
+}
+
+std::span<const std::byte> DirectReadFile::read_blocks(std::uint64_t offset, std::size_t bytes,
+                                                       std::uint64_t* device_bytes) const {
+  if (offset > size_ || bytes > size_ - offset) {
     throw make_error(ErrorCode::kTruncated,
                      "{}: need {} bytes at offset {} but the file has only {} bytes",
-                     path_.string(), out.size(), offset, size_);
+                     path_.string(), bytes, offset, size_);
   }
-  if (out.empty()) return 0;
+  if (device_bytes) *device_bytes = 0;
+  if (bytes == 0) return {};
   for (;;) {
     const std::uint64_t align = alignment();
     const std::uint64_t begin = offset / align * align;
-    const std::uint64_t end = (offset + out.size() + align - 1) / align * align;
+    const std::uint64_t end = (offset + bytes + align - 1) / align * align;
     const std::size_t length = static_cast<std::size_t>(end - begin);
     std::byte* buffer = aligned_buffer(length);
     std::size_t done = 0;
     bool retry_aligned = false;
     // The last block may lie past the end of the file: the read then stops short at the
     // end, which is fine once it covers the requested bytes.
-    while (begin + done < offset + out.size()) {
+    while (begin + done < offset + bytes) {
       const ssize_t n = ::pread(fd_, buffer + done, length - done, static_cast<off_t>(begin + done));
       if (n < 0) {
         if (errno == EINTR) continue;
@@ -90,7 +103,7 @@ std::uint64_t DirectReadFile::read_at(std::uint64_t offset, std::span<std::byte>
       if (n == 0) {
         throw make_error(ErrorCode::kTruncated,
                          "{}: file ended at offset {} while reading {} bytes at offset {}",
-                         path_.string(), begin + done, out.size(), offset);
+                         path_.string(), begin + done, bytes, offset);
       }
       done += static_cast<std::size_t>(n);
     }
@@ -98,8 +111,8 @@ std::uint64_t DirectReadFile::read_at(std::uint64_t offset, std::span<std::byte>
       alignment_.store(kMemoryAlignment, std::memory_order_relaxed);
       continue;
     }
-    std::memcpy(out.data(), buffer + (offset - begin), out.size());
-    return length;
+    if (device_bytes) *device_bytes = length;
+    return {buffer + (offset - begin), bytes};
   }
 }
 

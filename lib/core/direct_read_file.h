@@ -30,6 +30,11 @@ class DirectReadFile {
   // requested from the device. A read that ends early is kTruncated.
   std::uint64_t read_at(std::uint64_t offset, std::span<std::byte> out) const;
 
+  // The same read without the copy: the `bytes` bytes at `offset` as they lie in the
+  // calling thread's aligned buffer, valid until this thread's next read of any
+  // DirectReadFile. For callers that transform the bytes anyway (the converter's input).
+  std::span<const std::byte> read_view(std::uint64_t offset, std::size_t bytes) const;
+
   // Current alignment of offsets and lengths: 512, raised to 4096 once the device
   // refuses a 512-byte-aligned read.
   std::size_t alignment() const { return alignment_.load(std::memory_order_relaxed); }
@@ -38,6 +43,10 @@ class DirectReadFile {
 
  private:
   DirectReadFile(std::filesystem::path path, int fd, std::uint64_t size);
+  // One aligned pread of the blocks `bytes` at `offset` span; the bytes in the thread's
+  // buffer. `device_bytes` (optional) gets the length requested from the device.
+  std::span<const std::byte> read_blocks(std::uint64_t offset, std::size_t bytes,
+                                         std::uint64_t* device_bytes) const;
 
   std::filesystem::path path_;
   int fd_ = -1;

@@ -24,6 +24,9 @@ struct ScanOptions {
   std::optional<std::size_t> first_step, last_step;
   // Treat NaN/Inf samples as missing instead of rejecting the input.
   bool nan_as_fill = false;
+  // SlabReader reads netCDF-4 planes that HDF5 keeps as raw bytes (Hdf5PlaneLayout)
+  // with O_DIRECT, bypassing the page cache; false: every read through netCDF.
+  bool direct_input = true;
 };
 
 struct SourceFile {
@@ -75,7 +78,14 @@ InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
 // samples outside valid_min/valid_max (or valid_range) set to NaN. NaN/Inf in the data
 // throws kInvalidInput naming file, variable, step and sample index unless
 // ScanOptions::nan_as_fill. Safe to call from several threads (netCDF calls are
-// serialized); keeps files open between calls.
+// serialized; direct reads run in parallel); keeps files open between calls.
+//
+// With ScanOptions::direct_input, planes of a netCDF-4 variable that HDF5 stores as raw
+// little-endian samples (no filters; contiguous, or chunks of whole planes) are read
+// with O_DIRECT in pieces and converted from there: an input that is read once costs
+// no page-cache work (on a 2-core VM, reading 5.3 GB buffered took 15 s of system
+// time against 0.4 s direct). Anything else, and file systems without O_DIRECT, read
+// through netCDF. The result is the same either way.
 class SlabReader {
  public:
   SlabReader(const InputCatalog& catalog, const ScanOptions& options);
@@ -87,6 +97,9 @@ class SlabReader {
             std::span<float> out);
   void read(std::size_t variable, std::size_t step, std::size_t z0, std::size_t z1,
             std::span<double> out);
+
+  // Input bytes read so far with O_DIRECT (the rest went through netCDF).
+  std::uint64_t direct_bytes() const;
 
  private:
   struct Impl;

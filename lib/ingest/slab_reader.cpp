@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-// SlabReader: one nc_get_vara per slab under netcdf_mutex(), conversion outside it.
-// Files stay open between calls (at most kMaxOpenFiles, least recently used closed).
+// SlabReader: one nc_get_vara per slab under netcdf_mutex(), conversion outside it; or,
+// for raw netCDF-4 planes, the planes' byte ranges looked up under the mutex and read
+// with O_DIRECT outside it. Files stay open between calls (at most kMaxOpenFiles, least
+// recently used closed).
 #include <netcdf.h>
 
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -11,7 +14,11 @@
 #include <mutex>
 #include <system_error>
 
+#include <spdlog/spdlog.h>
+
+#include "core/direct_read_file.h"
 #include "core/error.h"
+#include "ingest/hdf5_plane_layout.h"
 #include "ingest/input_catalog.h"
 #include "ingest/netcdf_call.h"
 #include "ingest/netcdf_file.h"
@@ -23,18 +30,38 @@ namespace {
 
 constexpr std::size_t kMaxOpenFiles = 64;
 
+// Direct reads go in pieces of at most this many bytes: the per-thread aligned buffer
+// stays small, and each piece is converted while it is still in cache.
+constexpr std::size_t kDirectPieceBytes = std::size_t{16} << 20;
+
+// Misaligned direct-read samples are copied into an aligned block of this many
+// samples (of at most 8 bytes) before conversion.
+constexpr std::size_t kAlignedBlockSamples = std::size_t{1} << 15;
+constexpr std::size_t kCacheLine = 64;
+
+std::byte* aligned_block() {
+  struct Block {
+    alignas(kCacheLine) std::byte bytes[kAlignedBlockSamples * 8];
+  };
+  static thread_local std::unique_ptr<Block> block = std::make_unique<Block>();
+  return block->bytes;
+}
+
 struct VariableHandle {
   int grpid = -1;
   int varid = -1;
   bool has_time = false;
   std::size_t time_length = 0;
   CfValueAttributes attrs;
+  std::shared_ptr<const Hdf5PlaneLayout> planes;  // null: read through netCDF
 };
 
 struct OpenFile {
   NcFile file;
   std::uint64_t last_use = 0;
   std::map<std::size_t, VariableHandle> variables;
+  // The file opened with O_DIRECT, when it is netCDF-4 and its file system allows it.
+  std::shared_ptr<const DirectReadFile> direct;
 };
 
 }  // namespace
@@ -45,12 +72,19 @@ struct SlabReader::Impl {
   // Guarded by netcdf_mutex(), like the netCDF calls that use them.
   std::map<std::size_t, OpenFile> open;
   std::uint64_t clock = 0;
+  std::atomic<std::uint64_t> direct_bytes{0};
 
   OpenFile& open_file(std::size_t index);
   const VariableHandle& variable(OpenFile& of, std::size_t file, std::size_t v);
 
   template <typename Out>
   void read(std::size_t v, std::size_t t, std::size_t z0, std::size_t z1, std::span<Out> out);
+
+  // The samples in `ranges` (raw, of attrs.type), read piece by piece with O_DIRECT and
+  // converted into `out`.
+  template <typename Out>
+  ConversionResult read_direct(const DirectReadFile& file, const std::vector<FileRange>& ranges,
+                               const CfValueAttributes& attrs, std::span<Out> out);
 };
 
 OpenFile& SlabReader::Impl::open_file(std::size_t index) {
@@ -81,6 +115,12 @@ OpenFile& SlabReader::Impl::open_file(std::size_t index) {
   OpenFile of;
   of.file = NcFile(source.path);
   of.last_use = ++clock;
+  if (options.direct_input && of.file.format() == NC_FORMAT_NETCDF4) {
+    of.direct = DirectReadFile::open(source.path);
+    if (!of.direct) {
+      spdlog::debug("{}: the file system refuses O_DIRECT; reading through netCDF", source.path);
+    }
+  }
   return open.emplace(index, std::move(of)).first->second;
 }
 
@@ -125,6 +165,13 @@ const VariableHandle& SlabReader::Impl::variable(OpenFile& of, std::size_t file,
     throw make_error(ErrorCode::kInvalidInput, "{}: variable '{}' has non-numeric type {}", path,
                      name, nc_type_name(h.attrs.type));
   }
+  if (of.direct) {
+    std::string why_not;
+    h.planes = Hdf5PlaneLayout::open(path, name, h.attrs.type, h.has_time, dims, &why_not);
+    if (!h.planes) {
+      spdlog::debug("{}: variable '{}' read through netCDF: {}", path, name, why_not);
+    }
+  }
   return of.variables.emplace(v, std::move(h)).first->second;
 }
 
@@ -162,6 +209,54 @@ ConversionResult convert_any(int type, const std::byte* buffer, std::size_t coun
 }  // namespace
 
 template <typename Out>
+ConversionResult SlabReader::Impl::read_direct(const DirectReadFile& file,
+                                              const std::vector<FileRange>& ranges,
+                                              const CfValueAttributes& attrs, std::span<Out> out) {
+  const std::size_t sample = nc_type_size(attrs.type);
+  const std::size_t piece_samples = kDirectPieceBytes / sample;
+  ConversionResult result;
+  std::size_t done = 0;  // samples of `out` filled
+  for (const FileRange& range : ranges) {
+    const std::size_t samples = static_cast<std::size_t>(range.bytes / sample);
+    for (std::size_t i = 0; i < samples; i += piece_samples) {
+      const std::size_t n = std::min(piece_samples, samples - i);
+      if (done + n > out.size()) {
+        throw make_error(ErrorCode::kInternal, "{}: direct read ranges exceed the slab",
+                         file.path().string());
+      }
+      const std::byte* bytes = file.read_view(range.offset + i * sample, n * sample).data();
+      // HDF5 places data at any byte offset, so the samples may be misaligned for
+      // their type: they are then converted from an aligned copy, block by block while
+      // the block is in cache.
+      const bool aligned = reinterpret_cast<std::uintptr_t>(bytes) % kCacheLine == 0;
+      for (std::size_t j = 0; j < n; j += kAlignedBlockSamples) {
+        const std::size_t m = std::min(kAlignedBlockSamples, n - j);
+        const std::byte* raw = bytes + j * sample;
+        if (!aligned) raw = static_cast<const std::byte*>(std::memcpy(aligned_block(), raw, m * sample));
+        const ConversionResult r = convert_any<Out>(attrs.type, raw, m, attrs, options.nan_as_fill,
+                                                    out.subspan(done, m));
+        if (r.first_non_finite && !result.first_non_finite) {
+          result.first_non_finite = done + *r.first_non_finite;
+          result.non_finite_value = r.non_finite_value;
+        }
+        if (r.first_overflow && !result.first_overflow) {
+          result.first_overflow = done + *r.first_overflow;
+          result.overflow_raw = r.overflow_raw;
+          result.overflow_value = r.overflow_value;
+        }
+        done += m;
+      }
+    }
+  }
+  if (done != out.size()) {
+    throw make_error(ErrorCode::kInternal, "{}: direct read ranges cover {} of {} samples",
+                     file.path().string(), done, out.size());
+  }
+  direct_bytes.fetch_add(done * sample, std::memory_order_relaxed);
+  return result;
+}
+
+template <typename Out>
 void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::size_t z1,
                             std::span<Out> out) {
   if (v >= catalog.variables.size()) {
@@ -197,6 +292,8 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
   static thread_local std::size_t buffer_size = 0;
   std::byte* raw = nullptr;
   CfValueAttributes attrs;
+  std::shared_ptr<const DirectReadFile> direct;
+  std::optional<std::vector<FileRange>> ranges;
   {
     std::lock_guard lock(netcdf_mutex());
     OpenFile& of = open_file(loc.file);
@@ -207,32 +304,38 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
                        context, loc.time_in_file);
     }
     attrs = h.attrs;
-    if (attrs.type == (sizeof(Out) == 4 ? NC_FLOAT : NC_DOUBLE)) {
-      raw = reinterpret_cast<std::byte*>(out.data());
+    if (h.planes) ranges = h.planes->planes(loc.time_in_file, z0, z1);
+    if (ranges) {
+      direct = of.direct;  // kept alive should another thread close the file
     } else {
-      const std::size_t bytes = count * nc_type_size(attrs.type);
-      if (buffer_size < bytes) {
-        buffer.reset(new std::byte[bytes]);
-        buffer_size = bytes;
+      if (attrs.type == (sizeof(Out) == 4 ? NC_FLOAT : NC_DOUBLE)) {
+        raw = reinterpret_cast<std::byte*>(out.data());
+      } else {
+        const std::size_t bytes = count * nc_type_size(attrs.type);
+        if (buffer_size < bytes) {
+          buffer.reset(new std::byte[bytes]);
+          buffer_size = bytes;
+        }
+        raw = buffer.get();
       }
-      raw = buffer.get();
+      std::array<std::size_t, 4> start{}, edge{};
+      std::size_t d = 0;
+      if (h.has_time) {
+        start[d] = loc.time_in_file;
+        edge[d++] = 1;
+      }
+      start[d] = z0;
+      edge[d++] = z1 - z0;
+      start[d] = 0;
+      edge[d++] = dims.y;
+      start[d] = 0;
+      edge[d++] = dims.x;
+      nc_check(nc_get_vara(h.grpid, h.varid, start.data(), edge.data(), raw), context);
     }
-    std::array<std::size_t, 4> start{}, edge{};
-    std::size_t d = 0;
-    if (h.has_time) {
-      start[d] = loc.time_in_file;
-      edge[d++] = 1;
-    }
-    start[d] = z0;
-    edge[d++] = z1 - z0;
-    start[d] = 0;
-    edge[d++] = dims.y;
-    start[d] = 0;
-    edge[d++] = dims.x;
-    nc_check(nc_get_vara(h.grpid, h.varid, start.data(), edge.data(), raw), context);
   }
-
-  const ConversionResult r = convert_any<Out>(attrs.type, raw, count, attrs, options.nan_as_fill, out);
+  const ConversionResult r =
+      ranges ? read_direct(*direct, *ranges, attrs, out)
+             : convert_any<Out>(attrs.type, raw, count, attrs, options.nan_as_fill, out);
   if (r.first_non_finite) {
     const std::size_t i = *r.first_non_finite;
     const std::size_t plane = dims.x * dims.y;
@@ -266,6 +369,10 @@ SlabReader::SlabReader(const InputCatalog& catalog, const ScanOptions& options)
                        catalog.variables[v].name);
     }
   }
+}
+
+std::uint64_t SlabReader::direct_bytes() const {
+  return impl_->direct_bytes.load(std::memory_order_relaxed);
 }
 
 SlabReader::~SlabReader() {

@@ -74,14 +74,14 @@ NetcdfFixture& NetcdfFixture::coordinate(const std::string& name, std::vector<do
                                          std::vector<NcAttr> attrs, int type, bool unlimited) {
   dimension(name, values.size(), unlimited);
   const std::string dim = split(name).second;
-  vars_.push_back({name, type, {dim}, std::move(values), std::move(attrs)});
+  vars_.push_back({name, type, {dim}, std::move(values), std::move(attrs), {}});
   return *this;
 }
 
 NetcdfFixture& NetcdfFixture::variable(const std::string& name, int type,
                                        std::vector<std::string> dims, std::vector<double> data,
-                                       std::vector<NcAttr> attrs) {
-  vars_.push_back({name, type, std::move(dims), std::move(data), std::move(attrs)});
+                                       std::vector<NcAttr> attrs, VarStorage storage) {
+  vars_.push_back({name, type, std::move(dims), std::move(data), std::move(attrs), std::move(storage)});
   return *this;
 }
 
@@ -155,6 +155,17 @@ void NetcdfFixture::write(const std::filesystem::path& path) const {
     check(nc_def_var(grp, name.c_str(), v.type, static_cast<int>(dimids.size()), dimids.data(),
                      &varid),
           "nc_def_var " + v.name);
+    const VarStorage& st = v.storage;
+    if (st.contiguous) {
+      check(nc_def_var_chunking(grp, varid, NC_CONTIGUOUS, nullptr), "contiguous " + v.name);
+    } else if (!st.chunks.empty()) {
+      check(nc_def_var_chunking(grp, varid, NC_CHUNKED, st.chunks.data()), "chunking " + v.name);
+    }
+    if (st.deflate_level > 0) {
+      check(nc_def_var_deflate(grp, varid, 0, 1, st.deflate_level), "deflate " + v.name);
+    }
+    if (st.endian != NC_ENDIAN_NATIVE) check(nc_def_var_endian(grp, varid, st.endian), "endian " + v.name);
+    if (st.no_fill) check(nc_def_var_fill(grp, varid, NC_NOFILL, nullptr), "no fill " + v.name);
     for (const auto& a : v.attrs) put_attribute(grp, varid, a);
     defined.push_back({grp, varid, count});
   }

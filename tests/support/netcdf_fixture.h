@@ -48,6 +48,16 @@ struct SimpleGrid {
   std::vector<std::string> dims() const;
 };
 
+// How a netCDF-4 variable is stored (nc_def_var_chunking, _deflate, _endian); the
+// default leaves netCDF's choice.
+struct VarStorage {
+  bool contiguous = false;
+  std::vector<std::size_t> chunks;  // chunk shape, one per dimension (empty: netCDF's)
+  int deflate_level = 0;            // 0: no deflate filter
+  int endian = 0;                   // NC_ENDIAN_NATIVE, NC_ENDIAN_LITTLE or NC_ENDIAN_BIG
+  bool no_fill = false;             // nc_def_var_fill(NC_NOFILL)
+};
+
 class NetcdfFixture {
  public:
   // cmode for nc_create: NC_CLASSIC_MODEL, NC_64BIT_OFFSET, NC_NETCDF4, NC_64BIT_DATA...
@@ -61,7 +71,8 @@ class NetcdfFixture {
                             std::vector<NcAttr> attrs = {}, int type = NC_DOUBLE,
                             bool unlimited = false);
   NetcdfFixture& variable(const std::string& name, int type, std::vector<std::string> dims,
-                          std::vector<double> data, std::vector<NcAttr> attrs = {});
+                          std::vector<double> data, std::vector<NcAttr> attrs = {},
+                          VarStorage storage = {});
   NetcdfFixture& global_attribute(NcAttr attr);
   NetcdfFixture& grid(const SimpleGrid& grid);
 
@@ -80,6 +91,7 @@ class NetcdfFixture {
     std::vector<std::string> dims;
     std::vector<double> data;
     std::vector<NcAttr> attrs;
+    VarStorage storage;
   };
   int cmode_;
   std::vector<Dim> dims_;
