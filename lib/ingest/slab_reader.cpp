@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <set>
 #include <memory>
 #include <mutex>
 #include <system_error>
@@ -73,6 +74,7 @@ struct SlabReader::Impl {
   std::map<std::size_t, OpenFile> open;
   std::uint64_t clock = 0;
   std::atomic<std::uint64_t> direct_bytes{0};
+  std::set<std::size_t> direct_failed{};  // files whose direct reads failed: netCDF only
 
   OpenFile& open_file(std::size_t index);
   const VariableHandle& variable(OpenFile& of, std::size_t file, std::size_t v);
@@ -115,7 +117,8 @@ OpenFile& SlabReader::Impl::open_file(std::size_t index) {
   OpenFile of;
   of.file = NcFile(source.path);
   of.last_use = ++clock;
-  if (options.direct_input && of.file.format() == NC_FORMAT_NETCDF4) {
+  if (options.direct_input && !direct_failed.contains(index) &&
+      of.file.format() == NC_FORMAT_NETCDF4) {
     of.direct = DirectReadFile::open(source.path);
     if (!of.direct) {
       spdlog::debug("{}: the file system refuses O_DIRECT; reading through netCDF", source.path);
@@ -294,48 +297,66 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
   CfValueAttributes attrs;
   std::shared_ptr<const DirectReadFile> direct;
   std::optional<std::vector<FileRange>> ranges;
-  {
-    std::lock_guard lock(netcdf_mutex());
-    OpenFile& of = open_file(loc.file);
-    const VariableHandle& h = variable(of, loc.file, v);
-    if (h.has_time ? loc.time_in_file >= h.time_length : loc.time_in_file != 0) {
-      throw make_error(ErrorCode::kInvalidInput,
-                       "{}: time index {} not in the file (file changed since it was scanned?)",
-                       context, loc.time_in_file);
-    }
-    attrs = h.attrs;
-    if (h.planes) ranges = h.planes->planes(loc.time_in_file, z0, z1);
-    if (ranges) {
-      direct = of.direct;  // kept alive should another thread close the file
-    } else {
-      if (attrs.type == (sizeof(Out) == 4 ? NC_FLOAT : NC_DOUBLE)) {
-        raw = reinterpret_cast<std::byte*>(out.data());
+  ConversionResult r;
+  for (;;) {
+    {
+      std::lock_guard lock(netcdf_mutex());
+      OpenFile& of = open_file(loc.file);
+      const VariableHandle& h = variable(of, loc.file, v);
+      if (h.has_time ? loc.time_in_file >= h.time_length : loc.time_in_file != 0) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: time index {} not in the file (file changed since it was scanned?)",
+                         context, loc.time_in_file);
+      }
+      attrs = h.attrs;
+      if (h.planes && of.direct) ranges = h.planes->planes(loc.time_in_file, z0, z1);
+      if (ranges) {
+        direct = of.direct;  // kept alive should another thread close the file
       } else {
-        const std::size_t bytes = count * nc_type_size(attrs.type);
-        if (buffer_size < bytes) {
-          buffer.reset(new std::byte[bytes]);
-          buffer_size = bytes;
+        if (attrs.type == (sizeof(Out) == 4 ? NC_FLOAT : NC_DOUBLE)) {
+          raw = reinterpret_cast<std::byte*>(out.data());
+        } else {
+          const std::size_t bytes = count * nc_type_size(attrs.type);
+          if (buffer_size < bytes) {
+            buffer.reset(new std::byte[bytes]);
+            buffer_size = bytes;
+          }
+          raw = buffer.get();
         }
-        raw = buffer.get();
+        std::array<std::size_t, 4> start{}, edge{};
+        std::size_t d = 0;
+        if (h.has_time) {
+          start[d] = loc.time_in_file;
+          edge[d++] = 1;
+        }
+        start[d] = z0;
+        edge[d++] = z1 - z0;
+        start[d] = 0;
+        edge[d++] = dims.y;
+        start[d] = 0;
+        edge[d++] = dims.x;
+        nc_check(nc_get_vara(h.grpid, h.varid, start.data(), edge.data(), raw), context);
       }
-      std::array<std::size_t, 4> start{}, edge{};
-      std::size_t d = 0;
-      if (h.has_time) {
-        start[d] = loc.time_in_file;
-        edge[d++] = 1;
-      }
-      start[d] = z0;
-      edge[d++] = z1 - z0;
-      start[d] = 0;
-      edge[d++] = dims.y;
-      start[d] = 0;
-      edge[d++] = dims.x;
-      nc_check(nc_get_vara(h.grpid, h.varid, start.data(), edge.data(), raw), context);
+    }
+    if (!ranges) {
+      r = convert_any<Out>(attrs.type, raw, count, attrs, options.nan_as_fill, out);
+      break;
+    }
+    try {
+      r = read_direct(*direct, *ranges, attrs, out);
+      break;
+    } catch (const Error& e) {
+      // A file system that opens files with O_DIRECT but refuses the reads (alignment
+      // beyond 4 KiB, a device error): this file is read through netCDF from now on,
+      // and netCDF reports what is really wrong with it, if anything.
+      spdlog::warn("{}: direct read failed ({}); reading the file through netCDF", path, e.what());
+      std::lock_guard lock(netcdf_mutex());
+      direct_failed.insert(loc.file);
+      if (auto it = open.find(loc.file); it != open.end()) it->second.direct.reset();
+      ranges.reset();
+      direct.reset();
     }
   }
-  const ConversionResult r =
-      ranges ? read_direct(*direct, *ranges, attrs, out)
-             : convert_any<Out>(attrs.type, raw, count, attrs, options.nan_as_fill, out);
   if (r.first_non_finite) {
     const std::size_t i = *r.first_non_finite;
     const std::size_t plane = dims.x * dims.y;
