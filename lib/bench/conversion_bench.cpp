@@ -16,6 +16,7 @@
 #include "bench/stopwatch.h"
 #include "build/converter.h"
 #include "core/error.h"
+#include "ingest/input_catalog.h"
 
 namespace strielad::bench {
 namespace {
@@ -127,7 +128,7 @@ ConversionBench run_conversion_bench(const ConversionBenchOptions& o) {
   ContenderRuns direct_read = contender(
       "read (O_DIRECT)", fmt::format("O_DIRECT reads of every input file to the end, {} MiB each, "
                                      "as the converter reads raw netCDF-4 input",
-                                     kDirectPieceBytes >> 20));
+                                     ingest::SlabReader::kDirectPieceBytes >> 20));
   bool direct_read_ran = false;
   ContenderRuns copy = contender("read+copy",
                      fmt::format("read(2) + write(2) a copy of every input file, {} MiB buffer, "
@@ -172,7 +173,7 @@ ConversionBench run_conversion_bench(const ConversionBenchOptions& o) {
     // read with O_DIRECT
     direct_read.max_resident_before = std::max(direct_read.max_resident_before, evict_inputs(o.inputs));
     cpu0 = process_cpu_seconds();
-    if (const auto d = read_files_direct(o.inputs)) {
+    if (const auto d = read_files_direct(o.inputs, ingest::SlabReader::kDirectPieceBytes)) {
       direct_read.cpu_seconds.push_back(process_cpu_seconds() - cpu0);
       direct_read.seconds.push_back(d->seconds);
       direct_read_ran = true;

@@ -22,12 +22,12 @@ struct CopyResult {
 CopyResult read_files(std::span<const std::filesystem::path> files,
                       std::size_t buffer_bytes = kCopyBufferBytes);
 
-// Reads every file to the end with O_DIRECT (DirectReadFile, reads of `piece_bytes`),
-// as the converter reads raw netCDF-4 input: the disk's own speed, without the page
-// cache. nullopt when a file's file system refuses O_DIRECT. Throws kIo.
-inline constexpr std::size_t kDirectPieceBytes = std::size_t{16} << 20;  // the converter's
+// Reads every file to the end with O_DIRECT (DirectReadFile, reads of `piece_bytes`;
+// by default the converter's, ingest::SlabReader::kDirectPieceBytes): the disk's own
+// speed, without the page cache. nullopt when a file's file system refuses O_DIRECT.
+// Throws kIo.
 std::optional<CopyResult> read_files_direct(std::span<const std::filesystem::path> files,
-                                            std::size_t piece_bytes = kDirectPieceBytes);
+                                            std::size_t piece_bytes);
 
 // Copies each file into `out_dir` (same file name) with read(2)/write(2), fsyncs every
 // copy before the clock stops. Throws kIo.

@@ -71,7 +71,7 @@ std::unique_ptr<Hdf5PlaneLayout> Hdf5PlaneLayout::open(const std::string& path,
     if (type.id < 0 || H5Tequal(type.id, wanted_type) <= 0) {
       return refuse("samples are not little-endian in the variable's own type");
     }
-    layout->sample_bytes_ = H5Tget_size(type.id);
+    const std::size_t sample_bytes = H5Tget_size(type.id);
 
     const int rank = has_time ? 4 : 3;
     Id<H5Sclose> space(H5Dget_space(dataset.id));
@@ -109,7 +109,7 @@ std::unique_ptr<Hdf5PlaneLayout> Hdf5PlaneLayout::open(const std::string& path,
     layout->dataset_ = dataset.release();
     layout->has_time_ = has_time;
     layout->nz_ = dims.z;
-    layout->plane_bytes_ = std::uint64_t{dims.x} * dims.y * layout->sample_bytes_;
+    layout->plane_bytes_ = std::uint64_t{dims.x} * dims.y * sample_bytes;
     return std::move(layout);
   };
   // HDF5 reports failures (e.g. a dataset stored under another name) on its error stack,

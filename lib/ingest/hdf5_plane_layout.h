@@ -44,8 +44,6 @@ class Hdf5PlaneLayout {
   std::optional<std::vector<FileRange>> planes(std::size_t t, std::size_t z0,
                                                std::size_t z1) const;
 
-  std::size_t sample_bytes() const { return sample_bytes_; }
-
  private:
   Hdf5PlaneLayout() = default;
 
@@ -56,7 +54,6 @@ class Hdf5PlaneLayout {
   std::uint64_t contiguous_offset_ = 0;
   std::size_t chunk_time_ = 1, chunk_z_ = 1;  // planes per chunk along time and z
   std::size_t nz_ = 0;
-  std::size_t sample_bytes_ = 0;
   std::uint64_t plane_bytes_ = 0;
 };
 

@@ -98,6 +98,10 @@ class SlabReader {
   void read(std::size_t variable, std::size_t step, std::size_t z0, std::size_t z1,
             std::span<double> out);
 
+  // Direct reads go in pieces of at most this many bytes: the per-thread aligned buffer
+  // stays small, and each piece is converted while it is still in cache.
+  static constexpr std::size_t kDirectPieceBytes = std::size_t{16} << 20;
+
   // Input bytes read so far with O_DIRECT (the rest went through netCDF).
   std::uint64_t direct_bytes() const;
 

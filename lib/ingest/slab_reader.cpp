@@ -10,9 +10,9 @@
 #include <cmath>
 #include <cstring>
 #include <map>
-#include <set>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <system_error>
 
 #include <spdlog/spdlog.h>
@@ -30,10 +30,6 @@ namespace strielad::ingest {
 namespace {
 
 constexpr std::size_t kMaxOpenFiles = 64;
-
-// Direct reads go in pieces of at most this many bytes: the per-thread aligned buffer
-// stays small, and each piece is converted while it is still in cache.
-constexpr std::size_t kDirectPieceBytes = std::size_t{16} << 20;
 
 // Misaligned direct-read samples are copied into an aligned block of this many
 // samples (of at most 8 bytes) before conversion.
@@ -216,7 +212,7 @@ ConversionResult SlabReader::Impl::read_direct(const DirectReadFile& file,
                                               const std::vector<FileRange>& ranges,
                                               const CfValueAttributes& attrs, std::span<Out> out) {
   const std::size_t sample = nc_type_size(attrs.type);
-  const std::size_t piece_samples = kDirectPieceBytes / sample;
+  const std::size_t piece_samples = SlabReader::kDirectPieceBytes / sample;
   ConversionResult result;
   std::size_t done = 0;  // samples of `out` filled
   for (const FileRange& range : ranges) {

@@ -165,7 +165,6 @@ void NetcdfFixture::write(const std::filesystem::path& path) const {
       check(nc_def_var_deflate(grp, varid, 0, 1, st.deflate_level), "deflate " + v.name);
     }
     if (st.endian != NC_ENDIAN_NATIVE) check(nc_def_var_endian(grp, varid, st.endian), "endian " + v.name);
-    if (st.no_fill) check(nc_def_var_fill(grp, varid, NC_NOFILL, nullptr), "no fill " + v.name);
     for (const auto& a : v.attrs) put_attribute(grp, varid, a);
     defined.push_back({grp, varid, count});
   }

@@ -55,7 +55,6 @@ struct VarStorage {
   std::vector<std::size_t> chunks;  // chunk shape, one per dimension (empty: netCDF's)
   int deflate_level = 0;            // 0: no deflate filter
   int endian = 0;                   // NC_ENDIAN_NATIVE, NC_ENDIAN_LITTLE or NC_ENDIAN_BIG
-  bool no_fill = false;             // nc_def_var_fill(NC_NOFILL)
 };
 
 class NetcdfFixture {
