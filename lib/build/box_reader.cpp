@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "build/box_reader.h"
 
+#include <fcntl.h>
 #include <netcdf.h>
+#include <unistd.h>
 #include <netcdf_filter.h>
 
 #include <array>
@@ -27,12 +29,20 @@ struct BoxReader::Impl {
   bool filtered = false;
   bool nan_as_fill = false;
   ingest::CfValueAttributes attrs;
+  // The planes' file offsets and a descriptor for prefetching (unfiltered netCDF-4 only).
+  std::unique_ptr<ingest::Hdf5PlaneLayout> planes;
+  int prefetch_fd = -1;
+  Dims3 dims{};
   // Raw samples of the last read; grown on demand, never zero-filled (netCDF fills it).
   std::unique_ptr<std::byte[]> buffer;
   std::size_t buffer_size = 0;
 
   template <typename Out>
   void read(const IndexBox& box, std::span<Out> out);
+
+  ~Impl() {
+    if (prefetch_fd >= 0) ::close(prefetch_fd);
+  }
 };
 
 namespace {
@@ -129,7 +139,38 @@ void BoxReader::open_variable(Impl& m, Dims3 dims) {
       nc_inq_var_deflate(m.grpid, m.varid, &shuffle, &deflate, &level) == NC_NOERR &&
       (shuffle != 0 || deflate != 0);
   m.filtered = has_filters || has_shuffle;
-  if (!m.filtered) nc_set_var_chunk_cache(m.grpid, m.varid, 0, 0, 0.75f);
+  if (m.filtered) return;
+  nc_set_var_chunk_cache(m.grpid, m.varid, 0, 0, 0.75f);
+  std::string why_not;
+  m.planes = ingest::Hdf5PlaneLayout::open(m.path, m.name, m.attrs.type, m.has_time, dims, &why_not);
+  if (m.planes) {
+    m.dims = dims;
+    m.prefetch_fd = ::open(m.path.c_str(), O_RDONLY | O_CLOEXEC);  // -1: no prefetching
+  }
+}
+
+std::vector<ingest::FileRange> BoxReader::prefetch_ranges(const IndexBox& box) const {
+  const Impl& m = *impl_;
+  std::vector<ingest::FileRange> out;
+  if (m.prefetch_fd < 0) return out;
+  const std::uint64_t sample = ingest::nc_type_size(m.attrs.type);
+  const std::uint64_t nx = m.dims.x;
+  const std::uint64_t first = (box.lo[1] * nx + box.lo[0]) * sample;
+  const std::uint64_t bytes = ((box.hi[1] - box.lo[1]) * nx + box.extent(0)) * sample;
+  std::lock_guard lock(ingest::netcdf_mutex());
+  for (std::size_t z = box.lo[2]; z <= box.hi[2]; ++z) {
+    const auto plane = m.planes->planes(m.time_index, z, z + 1);
+    if (!plane || plane->size() != 1) continue;  // never written: netCDF supplies the fill
+    out.push_back({plane->front().offset + first, bytes});
+  }
+  return out;
+}
+
+void BoxReader::prefetch(const IndexBox& box) {
+  for (const ingest::FileRange& r : prefetch_ranges(box)) {
+    ::posix_fadvise(impl_->prefetch_fd, static_cast<off_t>(r.offset), static_cast<off_t>(r.bytes),
+                    POSIX_FADV_WILLNEED);
+  }
 }
 
 BoxReader::~BoxReader() {

@@ -33,6 +33,11 @@ void read_layer(BoxReader& reader, const OctreeLayout& layout, const std::vector
   const bool whole_layer = reader.filtered();
   std::unique_ptr<T[]> region;  // not zero-filled: the reader writes all of it
   std::size_t region_size = 0;
+  struct Group {
+    std::size_t begin, end;
+    IndexBox region;
+  };
+  std::vector<Group> groups;
   for (std::size_t g = first; g < end;) {
     std::size_t g_end = g;  // nodes come z-major, then y: a row of bricks is contiguous
     while (g_end < end && (whole_layer || nodes[g_end].index[1] == nodes[g].index[1])) ++g_end;
@@ -43,6 +48,11 @@ void read_layer(BoxReader& reader, const OctreeLayout& layout, const std::vector
     } else {
       r.hi[0] = boxes[g_end - 1].hi[0];
     }
+    groups.push_back({g, g_end, r});
+    g = g_end;
+  }
+  for (const Group& group : groups) reader.prefetch(group.region);
+  for (const auto& [g, g_end, r] : groups) {
     if (region_size < r.count()) {
       region.reset(new T[r.count()]);
       region_size = r.count();
@@ -60,7 +70,6 @@ void read_layer(BoxReader& reader, const OctreeLayout& layout, const std::vector
           std::copy(src, src + b.extent(0), dst);
         }
     }
-    g = g_end;
   }
 }
 
