@@ -92,6 +92,46 @@ std::uint64_t count_valid(const T* row, std::size_t n) {
   return static_cast<std::uint64_t>(valid);
 }
 
+// Samples equal to zero (either sign), in integer bits so that it vectorizes.
+template <typename T>
+std::size_t count_zeros(std::span<const T> samples) {
+  using K = SignedBits<T>;
+  std::size_t zeros = 0;
+  for (const T v : samples) {
+    zeros += (std::bit_cast<K>(v) & std::numeric_limits<K>::max()) == 0 ? 1 : 0;
+  }
+  return zeros;
+}
+
+// The chunk of a data brick of a variable with fpzip on: fpzip, the Blosc chain, or the
+// smaller of both. Trying both on every brick costs about 4x the Blosc chain's time
+// (fpzip codes ~130 MB/s per core), so the brick's share of zeros decides which to try
+// (BENCHMARKS.md, "fpzip trials by share of zeros"): where few samples are zero fpzip
+// nearly always wins and is kept alone when it halves the brick at least; where most
+// are zero the Blosc chain's runs nearly always win; in between both are tried.
+template <typename T>
+std::vector<std::byte> encode_fpzip_or_blosc(std::span<const T> samples, const BrickDims& dims,
+                                             const format::CodecSpec& codec,
+                                             format::ChunkCoding& coding) {
+  const std::span<const std::byte> raw(reinterpret_cast<const std::byte*>(samples.data()),
+                                       samples.size_bytes());
+  const DType dtype = sizeof(T) == 4 ? DType::kFloat32 : DType::kFloat64;
+  const double zero_share = static_cast<double>(count_zeros(samples)) / static_cast<double>(samples.size());
+  coding = format::ChunkCoding::kCodec;
+  if (zero_share >= kFpzipTriedBelowZeroShare) return compress_brick(raw, dtype, dims, codec);
+  auto f = compress_brick_fpzip(raw, dtype, dims);
+  if (f && zero_share < kFpzipAloneBelowZeroShare && 2 * f->size() <= raw.size()) {
+    coding = format::ChunkCoding::kFpzip;
+    return std::move(*f);
+  }
+  std::vector<std::byte> blosc = compress_brick(raw, dtype, dims, codec);
+  if (f && f->size() < blosc.size()) {
+    coding = format::ChunkCoding::kFpzip;
+    return std::move(*f);
+  }
+  return blosc;
+}
+
 }  // namespace
 
 template <typename T>
@@ -159,18 +199,13 @@ EncodedBrick encode_brick(const PlaneBlock<T>& planes, const IndexBox& box, cons
     out.entry.constant = static_cast<double>(samples.front());
   } else {
     out.entry.kind = format::BrickKind::kData;
-    const std::span<const std::byte> raw(reinterpret_cast<const std::byte*>(samples.data()),
-                                         samples.size() * sizeof(T));
-    const DType dtype = sizeof(T) == 4 ? DType::kFloat32 : DType::kFloat64;
     const BrickDims dims{box.extent(0), box.extent(1), box.extent(2)};
-    out.chunk = compress_brick(raw, dtype, dims, codec);
-    // fpzip (store version 3): whichever chunk is smaller, per brick. fpzip wins on smooth
-    // full-resolution fields and loses on the coarse levels (BENCHMARKS.md).
-    if (codec.fpzip) {
-      if (auto f = compress_brick_fpzip(raw, dtype, dims); f && f->size() < out.chunk.size()) {
-        out.chunk = std::move(*f);
-        out.entry.coding = format::ChunkCoding::kFpzip;
-      }
+    if (codec.fpzip) {  // store version 3
+      out.chunk = encode_fpzip_or_blosc<T>(samples, dims, codec, out.entry.coding);
+    } else {
+      const std::span<const std::byte> raw(reinterpret_cast<const std::byte*>(samples.data()),
+                                           samples.size_bytes());
+      out.chunk = compress_brick(raw, sizeof(T) == 4 ? DType::kFloat32 : DType::kFloat64, dims, codec);
     }
     out.entry.chunk_size = static_cast<std::uint32_t>(out.chunk.size());
     out.entry.chunk_checksum = checksum64(out.chunk);

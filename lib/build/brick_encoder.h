@@ -27,6 +27,13 @@ struct NodeStats {
   void merge(const NodeStats& other);
 };
 
+// For a variable with fpzip on, which coder a data brick tries depends on its share of
+// zero samples (either sign): below the first, fpzip alone when it at least halves the
+// brick; below the second, fpzip and the Blosc chain, the smaller kept; from the second
+// up, the Blosc chain alone.
+inline constexpr double kFpzipAloneBelowZeroShare = 0.5;
+inline constexpr double kFpzipTriedBelowZeroShare = 0.8;
+
 // Encodes the brick `box` (inclusive, level-grid indices) held in `planes`. When
 // `owned` is given (level 0) the statistics are computed from the samples: min/max over
 // `box`, valid_count over `owned`; otherwise (coarse levels) `stats`, the merged

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // strielad-convert --fpzip (store format version 3): every brick of every level reads back
-// bit for bit what the default store holds, fpzip chunks are used only where they are
-// smaller, the store verifies, and a damaged fpzip chunk is an error for that node only.
+// bit for bit what the default store holds, fpzip makes temperature smaller (which
+// bricks try it: fpzip_trials_follow_zero_share_test.cpp), the store verifies, and a
+// damaged fpzip chunk is an error for that node only.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -48,7 +49,7 @@ class FpzipStoreTest : public ::testing::Test {
   std::vector<std::filesystem::path> inputs_;
 };
 
-TEST_F(FpzipStoreTest, EveryBrickReadsBackLikeTheDefaultStoreAndFpzipIsKeptOnlyWhereSmaller) {
+TEST_F(FpzipStoreTest, EveryBrickReadsBackLikeTheDefaultStoreAndFpzipMakesTemperatureSmaller) {
   const auto plain = Store::open(dir_ / "plain");
   const auto fpzip = Store::open(dir_ / "fpzip");
   EXPECT_EQ(plain->manifest().format_version, 2u);
@@ -64,7 +65,9 @@ TEST_F(FpzipStoreTest, EveryBrickReadsBackLikeTheDefaultStoreAndFpzipIsKeptOnlyW
       ASSERT_EQ(pe.size(), fe.size());
       for (NodeId n = 0; n < fe.size(); ++n) {
         EXPECT_EQ(pe[n].kind, fe[n].kind);
-        EXPECT_LE(fe[n].chunk_size, pe[n].chunk_size) << name << " node " << n;
+        if (fe[n].coding == format::ChunkCoding::kCodec) {  // the same chain, the same chunk
+          EXPECT_EQ(fe[n].chunk_size, pe[n].chunk_size) << name << " node " << n;
+        }
         plain_bytes += pe[n].chunk_size;
         fpzip_bytes += fe[n].chunk_size;
         if (fe[n].coding == format::ChunkCoding::kFpzip) {
@@ -77,9 +80,9 @@ TEST_F(FpzipStoreTest, EveryBrickReadsBackLikeTheDefaultStoreAndFpzipIsKeptOnlyW
             << name << " step " << t << " node " << n;
       }
     }
-    if (name != "qr") {
-      EXPECT_LT(fpzip_bytes, plain_bytes) << name;
-    }
+    // This small sample's cloud water bricks are all mostly zeros: fpzip is not tried there.
+    if (name == "ta") EXPECT_LT(fpzip_bytes, plain_bytes) << name;
+    if (name == "clw") EXPECT_LE(fpzip_bytes, plain_bytes) << name;
   }
   EXPECT_GT(fpzip_chunks, 0u);
   const VerifyReport report = verify_store(dir_ / "fpzip");
