@@ -151,7 +151,7 @@ ConversionBench run_conversion_bench(const ConversionBenchOptions& o) {
                     "predictor {}{}, threads {}; includes NetCDF reads ({}), fsync and finalize",
                     o.brick, c.name, c.level, c.shuffle, c.predictor,
                     i >= main_runs || o.fpzip.empty() ? std::string()
-                                    : fmt::format(", fpzip where smaller for {}", fmt::join(o.fpzip, ",")),
+                                    : fmt::format(", fpzip where it pays for {}", fmt::join(o.fpzip, ",")),
                     threads,
                     buffered ? "every read through netCDF and the page cache"
                              : "raw netCDF-4 planes with O_DIRECT")));

@@ -88,7 +88,7 @@ Table size_table(const IoSuiteReport& r) {
                       codec_text(r.options.codec),
                       r.options.fpzip.empty()
                           ? std::string()
-                          : fmt::format("; fpzip where smaller for {}", fmt::join(r.options.fpzip, ","))),
+                          : fmt::format("; fpzip where it pays for {}", fmt::join(r.options.fpzip, ","))),
           {"variable", "raw MB", "store MB", "raw/store", "deflate1 MB", "store/deflate1",
            "level-0 MB", "level-0/deflate1", "data bricks", "constant", "empty", "index KB"},
           {},

@@ -61,7 +61,7 @@ void describe_store(const Store& store, std::ostream& out) {
                s.nodes[1], s.nodes[2], s.stride[0], s.stride[1], s.stride[2]);
   }
   const auto fpzip_text = [](const format::CodecSpec& c) {
-    return c.fpzip ? std::string(", fpzip where smaller") : std::string();
+    return c.fpzip ? std::string(", fpzip where it pays") : std::string();
   };
   fmt::print(out, "codec      blosc {} level {} shuffle {}, predictor {}{} (format version {})\n",
              m.codec.name, m.codec.level, m.codec.shuffle, m.codec.predictor, fpzip_text(m.codec),
