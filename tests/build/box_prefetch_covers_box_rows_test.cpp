@@ -56,9 +56,13 @@ TEST(BoxPrefetch, RangesStartAtTheBoxsFirstSampleAndEndAtItsLastPerPlane) {
     const char* name;
     VarStorage storage;
   };
-  const Case cases[] = {{"contiguous", {.contiguous = true}},
-                        {"one plane per chunk", {.chunks = {1, 1, 30, 40}}},
-                        {"three planes per chunk", {.chunks = {1, 3, 30, 40}}}};
+  VarStorage contiguous, one_plane, three_planes;
+  contiguous.contiguous = true;
+  one_plane.chunks = {1, 1, 30, 40};
+  three_planes.chunks = {1, 3, 30, 40};
+  const Case cases[] = {{"contiguous", contiguous},
+                        {"one plane per chunk", one_plane},
+                        {"three planes per chunk", three_planes}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
     TempDir dir;
@@ -89,8 +93,11 @@ TEST(BoxPrefetch, RangesStartAtTheBoxsFirstSampleAndEndAtItsLastPerPlane) {
 }
 
 TEST(BoxPrefetch, StorageThatIsNotRawPlanesGetsNoRanges) {
-  const VarStorage cases[] = {{.chunks = {1, 6, 30, 40}, .deflate_level = 1},
-                                      {.chunks = {1, 6, 10, 40}}};
+  VarStorage deflated, sub_plane_chunks;
+  deflated.chunks = {1, 6, 30, 40};
+  deflated.deflate_level = 1;
+  sub_plane_chunks.chunks = {1, 6, 10, 40};
+  const VarStorage cases[] = {deflated, sub_plane_chunks};
   for (const auto& storage : cases) {
     TempDir dir;
     const auto file = write_input(dir.path(), storage);

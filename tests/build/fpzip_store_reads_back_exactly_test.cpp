@@ -81,8 +81,12 @@ TEST_F(FpzipStoreTest, EveryBrickReadsBackLikeTheDefaultStoreAndFpzipMakesTemper
       }
     }
     // This small sample's cloud water bricks are all mostly zeros: fpzip is not tried there.
-    if (name == "ta") EXPECT_LT(fpzip_bytes, plain_bytes) << name;
-    if (name == "clw") EXPECT_LE(fpzip_bytes, plain_bytes) << name;
+    if (name == "ta") {
+      EXPECT_LT(fpzip_bytes, plain_bytes) << name;
+    }
+    if (name == "clw") {
+      EXPECT_LE(fpzip_bytes, plain_bytes) << name;
+    }
   }
   EXPECT_GT(fpzip_chunks, 0u);
   const VerifyReport report = verify_store(dir_ / "fpzip");

@@ -27,7 +27,8 @@ std::map<NodeId, protocol::NodeResult> collect_results(
 
 // `rounds` generations in quick succession, alternating SetScene(scene) and SetTime
 // (steps 1 and 0), each followed by the whole cut `nodes`; every result read meanwhile
-// must be of the newest generation. Returns the last generation.
+// must be of the newest generation. Returns the last generation, none of whose results
+// it has read.
 std::uint32_t change_generations_rapidly(client::ServerClient& c, const Scene& scene,
                                          const std::vector<protocol::NodePriority>& nodes,
                                          int rounds);
