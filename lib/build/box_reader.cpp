@@ -3,8 +3,8 @@
 
 #include <fcntl.h>
 #include <netcdf.h>
-#include <unistd.h>
 #include <netcdf_filter.h>
+#include <unistd.h>
 
 #include <array>
 #include <mutex>

@@ -92,6 +92,9 @@ std::uint64_t count_valid(const T* row, std::size_t n) {
   return static_cast<std::uint64_t>(valid);
 }
 
+template <typename T>
+constexpr DType kDType = sizeof(T) == 4 ? DType::kFloat32 : DType::kFloat64;
+
 // Samples equal to zero (either sign), in integer bits so that it vectorizes.
 template <typename T>
 std::size_t count_zeros(std::span<const T> samples) {
@@ -106,16 +109,15 @@ std::size_t count_zeros(std::span<const T> samples) {
 // The chunk of a data brick of a variable with fpzip on: fpzip, the Blosc chain, or the
 // smaller of both. Trying both on every brick costs about 4x the Blosc chain's time
 // (fpzip codes ~130 MB/s per core), so the brick's share of zeros decides which to try
-// (BENCHMARKS.md, "fpzip trials by share of zeros"): where few samples are zero fpzip
+// (BENCHMARKS.md, "fpzip trials by a brick's share of zeros"): where few samples are zero fpzip
 // nearly always wins and is kept alone when it halves the brick at least; where most
 // are zero the Blosc chain's runs nearly always win; in between both are tried.
 template <typename T>
 std::vector<std::byte> encode_fpzip_or_blosc(std::span<const T> samples, const BrickDims& dims,
                                              const format::CodecSpec& codec,
                                              format::ChunkCoding& coding) {
-  const std::span<const std::byte> raw(reinterpret_cast<const std::byte*>(samples.data()),
-                                       samples.size_bytes());
-  const DType dtype = sizeof(T) == 4 ? DType::kFloat32 : DType::kFloat64;
+  const std::span<const std::byte> raw = std::as_bytes(samples);
+  constexpr DType dtype = kDType<T>;
   const double zero_share = static_cast<double>(count_zeros(samples)) / static_cast<double>(samples.size());
   coding = format::ChunkCoding::kCodec;
   if (zero_share >= kFpzipTriedBelowZeroShare) return compress_brick(raw, dtype, dims, codec);
@@ -200,13 +202,9 @@ EncodedBrick encode_brick(const PlaneBlock<T>& planes, const IndexBox& box, cons
   } else {
     out.entry.kind = format::BrickKind::kData;
     const BrickDims dims{box.extent(0), box.extent(1), box.extent(2)};
-    if (codec.fpzip) {  // store version 3
-      out.chunk = encode_fpzip_or_blosc<T>(samples, dims, codec, out.entry.coding);
-    } else {
-      const std::span<const std::byte> raw(reinterpret_cast<const std::byte*>(samples.data()),
-                                           samples.size_bytes());
-      out.chunk = compress_brick(raw, sizeof(T) == 4 ? DType::kFloat32 : DType::kFloat64, dims, codec);
-    }
+    out.chunk = codec.fpzip  // store version 3
+                    ? encode_fpzip_or_blosc<T>(samples, dims, codec, out.entry.coding)
+                    : compress_brick(std::as_bytes(samples), kDType<T>, dims, codec);
     out.entry.chunk_size = static_cast<std::uint32_t>(out.chunk.size());
     out.entry.chunk_checksum = checksum64(out.chunk);
   }

@@ -27,9 +27,9 @@ namespace {
 // kernel took a quarter of the conversion's CPU time (perf, 715 x 778 x 150). The pool
 // holds no more buffers than the pipeline has slabs alive at once. Buffers are 2 MiB
 // aligned and ask for transparent huge pages: the kernel's copy of the input into them
-// (read(2), for input read through netCDF) was a quarter of the converter's CPU samples on the full paper step with
-// 4 KiB pages and 3% with huge pages, and a whole conversion took about 10% less time
-// (perf and A/B runs, 2026-11-23).
+// (read(2), for input read through netCDF) was a quarter of the converter's CPU samples
+// on the full paper step with 4 KiB pages and 3% with huge pages, and a whole conversion
+// took about 10% less time (perf and A/B runs, 2026-11-23).
 class PlaneBufferPool {
  public:
   // A buffer of at least `count` values; it returns to the pool when the last copy of the

@@ -212,7 +212,7 @@ ConversionResult SlabReader::Impl::read_direct(const DirectReadFile& file,
                                               const std::vector<FileRange>& ranges,
                                               const CfValueAttributes& attrs, std::span<Out> out) {
   const std::size_t sample = nc_type_size(attrs.type);
-  const std::size_t piece_samples = SlabReader::kDirectPieceBytes / sample;
+  const std::size_t piece_samples = kDirectPieceBytes / sample;
   ConversionResult result;
   std::size_t done = 0;  // samples of `out` filled
   for (const FileRange& range : ranges) {
