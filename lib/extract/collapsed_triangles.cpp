@@ -5,7 +5,6 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
-#include <unordered_map>
 #include <vector>
 
 #include "extract/position_hash.h"
@@ -69,17 +68,35 @@ std::size_t remove_collapsed_triangles(Mesh& mesh, bool look_for_sheets) {
   }
   if (!any && !look_for_sheets) return 0;
   {
-    // Opposite pairs over the same three positions.
-    std::unordered_map<Position, std::uint32_t, PositionBitsHash> ids;
-    ids.reserve(mesh.positions.size());
-    std::vector<std::uint32_t> id(mesh.positions.size());
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-      id[v] = ids.try_emplace(mesh.positions[v], static_cast<std::uint32_t>(ids.size())).first->second;
+    // Opposite pairs over the same three positions: position ids, then per key (the
+    // ids rotated smallest first, the other two ascending) how many triangles of each
+    // orientation; of a key with both, the first min(count) of each in order go. Open
+    // addressing in flat tables (this pass runs on every node where a crossing met a
+    // sample, so it must cost about as much as the mesh, not a map node per triangle).
+    const std::size_t nv = mesh.positions.size();
+    std::size_t cap = 16;
+    while (cap < 2 * nv) cap *= 2;
+    constexpr std::uint32_t kEmpty = UINT32_MAX;
+    std::vector<std::uint32_t> first_at(cap, kEmpty);  // first vertex at a position
+    std::vector<std::uint32_t> id(nv);
+    for (std::size_t v = 0; v < nv; ++v) {
+      std::size_t i = PositionBitsHash{}(mesh.positions[v]) & (cap - 1);
+      while (first_at[i] != kEmpty && !same(mesh.positions[first_at[i]], mesh.positions[v])) {
+        i = (i + 1) & (cap - 1);
+      }
+      if (first_at[i] == kEmpty) first_at[i] = static_cast<std::uint32_t>(v);
+      id[v] = first_at[i];
     }
-    // Key: the sorted position ids; value: triangles of each orientation, in order.
-    std::unordered_map<std::array<std::uint32_t, 3>, std::array<std::vector<std::uint32_t>, 2>,
-                       TripleHash>
-        by_key;
+    struct KeyCount {
+      std::array<std::uint32_t, 3> key{kEmpty, kEmpty, kEmpty};
+      std::array<std::uint32_t, 2> count{};
+      std::array<std::uint32_t, 2> removed{};
+    };
+    std::size_t key_cap = 16;
+    while (key_cap < 2 * before) key_cap *= 2;
+    std::vector<KeyCount> keys(key_cap);
+    std::vector<std::uint32_t> slot_of(before);
+    std::vector<std::uint8_t> orientation_of(before);
     for (std::size_t t = 0; t < before; ++t) {
       if (!keep[t]) continue;
       std::array<std::uint32_t, 3> k{id[mesh.triangles[t][0]], id[mesh.triangles[t][1]],
@@ -89,13 +106,21 @@ std::size_t remove_collapsed_triangles(Mesh& mesh, bool look_for_sheets) {
       std::rotate(k.begin(), k.begin() + first, k.end());
       const int orientation = k[1] < k[2] ? 0 : 1;
       if (orientation == 1) std::swap(k[1], k[2]);
-      by_key[k][orientation].push_back(static_cast<std::uint32_t>(t));
+      std::size_t i = TripleHash{}(k) & (key_cap - 1);
+      while (keys[i].key[0] != kEmpty && keys[i].key != k) i = (i + 1) & (key_cap - 1);
+      keys[i].key = k;
+      ++keys[i].count[orientation];
+      slot_of[t] = static_cast<std::uint32_t>(i);
+      orientation_of[t] = static_cast<std::uint8_t>(orientation);
     }
-    for (auto& [key, sides] : by_key) {
-      const std::size_t pairs = std::min(sides[0].size(), sides[1].size());
-      for (std::size_t i = 0; i < pairs; ++i) {
-        keep[sides[0][i]] = 0;
-        keep[sides[1][i]] = 0;
+    for (std::size_t t = 0; t < before; ++t) {
+      if (!keep[t]) continue;
+      KeyCount& kc = keys[slot_of[t]];
+      const std::uint32_t pairs = std::min(kc.count[0], kc.count[1]);
+      std::uint32_t& removed = kc.removed[orientation_of[t]];
+      if (removed < pairs) {
+        ++removed;
+        keep[t] = 0;
       }
     }
   }
