@@ -92,9 +92,6 @@ std::uint64_t count_valid(const T* row, std::size_t n) {
   return static_cast<std::uint64_t>(valid);
 }
 
-template <typename T>
-constexpr DType kDType = sizeof(T) == 4 ? DType::kFloat32 : DType::kFloat64;
-
 // Samples equal to zero (either sign), in integer bits so that it vectorizes.
 template <typename T>
 std::size_t count_zeros(std::span<const T> samples) {
@@ -117,7 +114,7 @@ std::vector<std::byte> encode_fpzip_or_blosc(std::span<const T> samples, const B
                                              const format::CodecSpec& codec,
                                              format::ChunkCoding& coding) {
   const std::span<const std::byte> raw = std::as_bytes(samples);
-  constexpr DType dtype = kDType<T>;
+  constexpr DType dtype = kDTypeOf<T>;
   const double zero_share = static_cast<double>(count_zeros(samples)) / static_cast<double>(samples.size());
   coding = format::ChunkCoding::kCodec;
   if (zero_share >= kFpzipTriedBelowZeroShare) return compress_brick(raw, dtype, dims, codec);
@@ -204,7 +201,7 @@ EncodedBrick encode_brick(const PlaneBlock<T>& planes, const IndexBox& box, cons
     const BrickDims dims{box.extent(0), box.extent(1), box.extent(2)};
     out.chunk = codec.fpzip  // store version 3
                     ? encode_fpzip_or_blosc<T>(samples, dims, codec, out.entry.coding)
-                    : compress_brick(std::as_bytes(samples), kDType<T>, dims, codec);
+                    : compress_brick(std::as_bytes(samples), kDTypeOf<T>, dims, codec);
     out.entry.chunk_size = static_cast<std::uint32_t>(out.chunk.size());
     out.entry.chunk_checksum = checksum64(out.chunk);
   }

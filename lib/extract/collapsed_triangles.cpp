@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -74,8 +75,7 @@ std::size_t remove_collapsed_triangles(Mesh& mesh, bool look_for_sheets) {
     // addressing in flat tables (this pass runs on every node where a crossing met a
     // sample, so it must cost about as much as the mesh, not a map node per triangle).
     const std::size_t nv = mesh.positions.size();
-    std::size_t cap = 16;
-    while (cap < 2 * nv) cap *= 2;
+    const std::size_t cap = std::bit_ceil(std::max<std::size_t>(16, 2 * nv));
     constexpr std::uint32_t kEmpty = UINT32_MAX;
     std::vector<std::uint32_t> first_at(cap, kEmpty);  // first vertex at a position
     std::vector<std::uint32_t> id(nv);
@@ -92,8 +92,7 @@ std::size_t remove_collapsed_triangles(Mesh& mesh, bool look_for_sheets) {
       std::array<std::uint32_t, 2> count{};
       std::array<std::uint32_t, 2> removed{};
     };
-    std::size_t key_cap = 16;
-    while (key_cap < 2 * before) key_cap *= 2;
+    const std::size_t key_cap = std::bit_ceil(std::max<std::size_t>(16, 2 * before));
     std::vector<KeyCount> keys(key_cap);
     std::vector<std::uint32_t> slot_of(before);
     std::vector<std::uint8_t> orientation_of(before);

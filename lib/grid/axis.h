@@ -62,6 +62,10 @@ struct TimeAxis {
 
 enum class DType { kFloat32, kFloat64 };
 
+// The DType of a sample type (float or double).
+template <typename T>
+inline constexpr DType kDTypeOf = sizeof(T) == 4 ? DType::kFloat32 : DType::kFloat64;
+
 std::string_view dtype_name(DType type) noexcept;
 DType dtype_from_name(std::string_view name);  // throws kCorrupt
 inline std::size_t dtype_size(DType type) noexcept { return type == DType::kFloat32 ? 4 : 8; }

@@ -50,7 +50,7 @@ struct Brick {
   std::vector<T> to_vector() const {
     std::vector<T> out(sample_count());
     if (kind == format::BrickKind::kData &&
-        dtype == (sizeof(T) == 4 ? DType::kFloat32 : DType::kFloat64)) {
+        dtype == kDTypeOf<T>) {
       std::memcpy(out.data(), bytes.data(), bytes.size());
     } else {
       for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<T>(sample(i));
