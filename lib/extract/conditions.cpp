@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "core/error.h"
 
@@ -49,32 +50,37 @@ class Builder {
   template <class In>
   bool add(Condition condition, In in) {
     const std::size_t index = set_.conditions.size();
-    std::uint64_t* inside = set_.inside.data();
     std::size_t count_in = 0;
-    if (index == 0) {
-      for (std::size_t i = 0; i < n_; ++i) {
-        const std::uint64_t b = in(i) ? 1 : 0;
-        inside[i] = b;
-        count_in += b;
+    with_masks([&](auto* inside) {
+      using Mask = std::remove_pointer_t<decltype(inside)>;
+      if (index == 0) {
+        for (std::size_t i = 0; i < n_; ++i) {
+          const Mask b = in(i) ? 1 : 0;
+          inside[i] = b;
+          count_in += b;
+        }
+      } else if (index < kBits<Mask>) {
+        for (std::size_t i = 0; i < n_; ++i) {
+          const Mask b = in(i) ? 1 : 0;
+          inside[i] |= static_cast<Mask>(b << index);
+          count_in += b;
+        }
+      } else {
+        for (std::size_t i = 0; i < n_; ++i) count_in += in(i) ? 1 : 0;
       }
-    } else if (index < 64) {
-      for (std::size_t i = 0; i < n_; ++i) {
-        const std::uint64_t b = in(i) ? 1 : 0;
-        inside[i] |= b << index;
-        count_in += b;
-      }
-    } else {
-      for (std::size_t i = 0; i < n_; ++i) count_in += in(i) ? 1 : 0;
-    }
+    });
     return finish(std::move(condition), index, count_in);
   }
 
   // Keeps the condition unless it holds nowhere or everywhere (then its bit goes).
   bool finish(Condition condition, std::size_t index, std::size_t count_in) {
-    if (count_in == n_ && index < 64) {
-      std::uint64_t* inside = set_.inside.data();
-      const std::uint64_t bit = std::uint64_t{1} << index;
-      for (std::size_t i = 0; i < n_; ++i) inside[i] &= ~bit;
+    if (count_in == n_) {
+      with_masks([&](auto* inside) {
+        using Mask = std::remove_pointer_t<decltype(inside)>;
+        if (index >= kBits<Mask>) return;
+        const auto keep = static_cast<Mask>(~(Mask{1} << index));
+        for (std::size_t i = 0; i < n_; ++i) inside[i] &= keep;
+      });
     }
     if (count_in != 0 && count_in != n_) {
       set_.conditions.push_back(std::move(condition));
@@ -98,7 +104,6 @@ class Builder {
     const std::size_t index = set_.conditions.size();
     const float* f = condition.samples;
     const float t = is_min ? float_at_or_above(condition.bound) : float_at_or_below(condition.bound);
-    std::uint64_t* inside = set_.inside.data();
     constexpr float kMax = std::numeric_limits<float>::max();
     const std::size_t n = n_;  // a local: stores to inside[] could alias n_
     std::size_t count_in = 0, count_missing = 0;
@@ -107,23 +112,39 @@ class Builder {
         const float v = f[i];
         const auto absent = static_cast<unsigned>(!(std::fabs(v) <= kMax));
         const auto in = absent | static_cast<unsigned>(is_min ? v >= t : v <= t);
-        op(i, static_cast<std::uint64_t>(in));
+        op(i, in);
         count_in += in;
         count_missing += absent;
       }
     };
-    if (index == 0) {
-      run([&](std::size_t i, std::uint64_t in) { inside[i] = in; });
-    } else if (index < 64) {
-      run([&](std::size_t i, std::uint64_t in) { inside[i] |= in << index; });
-    } else {
-      run([](std::size_t, std::uint64_t) {});
-    }
+    with_masks([&](auto* inside) {
+      using Mask = std::remove_pointer_t<decltype(inside)>;
+      if (index == 0) {
+        run([&](std::size_t i, unsigned in) { inside[i] = static_cast<Mask>(in); });
+      } else if (index < kBits<Mask>) {
+        run([&](std::size_t i, unsigned in) { inside[i] |= static_cast<Mask>(static_cast<Mask>(in) << index); });
+      } else {
+        run([](std::size_t, unsigned) {});
+      }
+    });
     missing = missing || count_missing != 0;
     return finish(std::move(condition), index, count_in);
   }
 
  private:
+  template <class Mask>
+  static constexpr std::size_t kBits = 8 * sizeof(Mask);
+
+  // Calls op with the set's mask array (narrow or wide).
+  template <class Op>
+  void with_masks(Op op) {
+    if (set_.narrow) {
+      op(set_.inside16.data());
+    } else {
+      op(set_.inside64.data());
+    }
+  }
+
   // The smallest float >= t: for every float v, v >= it exactly when v >= t.
   static float float_at_or_above(double t) {
     constexpr double kMax = std::numeric_limits<float>::max();
@@ -167,7 +188,19 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
   set.conditions.clear();
   set.empty = false;
   set.all = 0;
-  set.inside.resize(n);
+  // At most two conditions per limit, one validity condition and two per bounded box
+  // axis.
+  std::size_t most = 1;
+  for (const ExtractLimit& limit : request.limits) {
+    most += (limit.min > -kUnbounded ? 1 : 0) + (limit.max < kUnbounded ? 1 : 0);
+  }
+  for (const auto& [lo, hi] : request.box) most += lo == -kUnbounded && hi == kUnbounded ? 0 : 2;
+  set.narrow = most <= kNarrowMaskConditions;
+  if (set.narrow) {
+    set.inside16.resize(n);
+  } else {
+    set.inside64.resize(n);
+  }
   Builder builder(set, n);
 
   for (const ExtractLimit& limit : request.limits) {
@@ -278,7 +311,8 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
     return;
   }
   if (set.conditions.empty()) {  // every condition holds everywhere
-    std::fill(set.inside.begin(), set.inside.end(), 0);
+    std::fill_n(set.inside16.begin(), set.narrow ? n : 0, 0);
+    std::fill_n(set.inside64.begin(), set.narrow ? 0 : n, 0);
     return;
   }
   set.all = set.conditions.size() >= 64 ? ~std::uint64_t{0}

@@ -40,10 +40,17 @@ struct Condition {
 
 inline constexpr std::size_t kMaxConditions = 60;
 
+// Per sample, one bit per condition: narrow masks when the request can make at most 16
+// conditions (every scene of a few limits and a domain box), a quarter of the memory
+// the kernel streams through; 64-bit masks otherwise.
+inline constexpr std::size_t kNarrowMaskConditions = 16;
+
 struct ConditionSet {
   std::vector<Condition> conditions;  // only conditions not met everywhere
   bool empty = false;                 // a condition excludes every sample
-  std::vector<std::uint64_t> inside;  // per sample: bit c set iff condition c holds
+  bool narrow = false;                // masks in inside16, else in inside64
+  std::vector<std::uint16_t> inside16;  // per sample: bit c set iff condition c holds
+  std::vector<std::uint64_t> inside64;
   std::uint64_t all = 0;              // bits of every condition
   // Value buffers of earlier builds, reused by the next build into this set.
   std::vector<std::vector<double>> spare;

@@ -733,57 +733,24 @@ class Kernel {
   std::array<std::uint32_t, 2> slab_stamp_{};  // tags (without group) of slabs z, z + 1
 };
 
-}  // namespace
-
-Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request,
-                       ExtractStats* stats) {
-  const auto dims = samples.dims();
-  const std::uint64_t corner_crossings_before = corner_crossings;
-  thread_local Scratch scratch;
-  ConditionSet& set = scratch.set;
-  build_conditions(samples, request, set);
-  if (request.attribute_fields.size() != request.attribute_names.size()) {
-    throw make_error(ErrorCode::kInvalidArgument,
-                     "sub-volume {}: {} attribute fields but {} names", request.subvolume_id,
-                     request.attribute_fields.size(), request.attribute_names.size());
-  }
-  for (std::uint32_t f : request.attribute_fields) {
-    if (f >= samples.fields.size() || samples.fields[f].size() != samples.sample_count()) {
-      throw make_error(ErrorCode::kInvalidArgument, "sub-volume {}: attribute field {} missing",
-                       request.subvolume_id, f);
-    }
-  }
-  Mesh mesh;
-  mesh.subvolume_id = request.subvolume_id;
-  mesh.attribute_names = request.attribute_names;
-  mesh.attributes.resize(request.attribute_fields.size());
-  ExtractStats local;
-  local.cells = (dims[0] - 1) * (dims[1] - 1) * (dims[2] - 1);
-  local.conditions = set.conditions.size();
-  local.empty_by_condition = set.empty;
-  if (set.empty) {
-    if (stats) *stats = local;
-    return mesh;
-  }
-
-  const std::size_t c_count = set.conditions.size();
-  const std::uint32_t side_group = static_cast<std::uint32_t>(c_count);  // + 2 * axis + side
-  scratch.begin(samples.sample_count(), dims);
-  MeshBuilder& builder = scratch.builder;
-  Kernel kernel(scratch, set, dims, side_group);
-
+// Every cell of the node through the kernel, over masks of one width: rows of cells
+// skipped or taken whole by their sample rows' summaries, cells crossed by several
+// conditions found first, then each cut cell by table or per tetrahedron.
+template <class Mask>
+void extract_cells(const Mask* inside, const ConditionSet& set,
+                   const std::array<std::size_t, 3>& dims, Scratch& scratch, Kernel& kernel,
+                   ExtractStats& local) {
   const std::size_t sy = dims[0], sz = dims[0] * dims[1];
   const std::uint64_t all = set.all;
   const auto& cell_loops = tables().loops;
-  const std::uint64_t* inside = set.inside.data();
 
   // Per row of samples (y, z): the conditions that hold somewhere and everywhere on it.
   const std::size_t rows = dims[1] * dims[2];
   scratch.row_or.resize(rows);
   scratch.row_and.resize(rows);
   for (std::size_t r = 0; r < rows; ++r) {
-    const std::uint64_t* row = inside + r * dims[0];
-    std::uint64_t o = 0, a = all;
+    const Mask* row = inside + r * dims[0];
+    Mask o = 0, a = static_cast<Mask>(all);  // narrow masks: all fits
     for (std::size_t x = 0; x < dims[0]; ++x) {
       o |= row[x];
       a &= row[x];
@@ -796,10 +763,10 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
   std::uint64_t* col_or = scratch.col_or.data();
   std::uint64_t* col_and = scratch.col_and.data();
   auto fill_columns = [&](std::size_t r0) {
-    const std::uint64_t* s0 = inside + r0 * dims[0];
-    const std::uint64_t* s1 = s0 + sy;
-    const std::uint64_t* s2 = s0 + sz;
-    const std::uint64_t* s3 = s0 + sz + sy;
+    const Mask* s0 = inside + r0 * dims[0];
+    const Mask* s1 = s0 + sy;
+    const Mask* s2 = s0 + sz;
+    const Mask* s3 = s0 + sz + sy;
     for (std::size_t x = 0; x < dims[0]; ++x) {
       col_or[x] = s0[x] | s1[x] | s2[x] | s3[x];
       col_and[x] = s0[x] & s1[x] & s2[x] & s3[x];
@@ -866,10 +833,10 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
         }
         continue;
       }
-      const std::uint64_t* s0 = inside + r0 * dims[0];
-      const std::uint64_t* s1 = s0 + sy;
-      const std::uint64_t* s2 = s0 + sz;
-      const std::uint64_t* s3 = s0 + sz + sy;
+      const Mask* s0 = inside + r0 * dims[0];
+      const Mask* s1 = s0 + sy;
+      const Mask* s2 = s0 + sz;
+      const Mask* s3 = s0 + sz + sy;
       fill_columns(r0);
       for (std::size_t x = 0; x + 1 < dims[0]; ++x) {
         if (((col_or[x] | col_or[x + 1]) & all) != all) continue;  // a condition fails at every corner
@@ -945,6 +912,52 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
     }
   }
 
+}
+
+}  // namespace
+
+Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request,
+                       ExtractStats* stats) {
+  const auto dims = samples.dims();
+  const std::uint64_t corner_crossings_before = corner_crossings;
+  thread_local Scratch scratch;
+  ConditionSet& set = scratch.set;
+  build_conditions(samples, request, set);
+  if (request.attribute_fields.size() != request.attribute_names.size()) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "sub-volume {}: {} attribute fields but {} names", request.subvolume_id,
+                     request.attribute_fields.size(), request.attribute_names.size());
+  }
+  for (std::uint32_t f : request.attribute_fields) {
+    if (f >= samples.fields.size() || samples.fields[f].size() != samples.sample_count()) {
+      throw make_error(ErrorCode::kInvalidArgument, "sub-volume {}: attribute field {} missing",
+                       request.subvolume_id, f);
+    }
+  }
+  Mesh mesh;
+  mesh.subvolume_id = request.subvolume_id;
+  mesh.attribute_names = request.attribute_names;
+  mesh.attributes.resize(request.attribute_fields.size());
+  ExtractStats local;
+  local.cells = (dims[0] - 1) * (dims[1] - 1) * (dims[2] - 1);
+  local.conditions = set.conditions.size();
+  local.empty_by_condition = set.empty;
+  if (set.empty) {
+    if (stats) *stats = local;
+    return mesh;
+  }
+
+  const std::size_t c_count = set.conditions.size();
+  const std::uint32_t side_group = static_cast<std::uint32_t>(c_count);  // + 2 * axis + side
+  scratch.begin(samples.sample_count(), dims);
+  MeshBuilder& builder = scratch.builder;
+  Kernel kernel(scratch, set, dims, side_group);
+
+  if (set.narrow) {
+    extract_cells(set.inside16.data(), set, dims, scratch, kernel, local);
+  } else {
+    extract_cells(set.inside64.data(), set, dims, scratch, kernel, local);
+  }
   kernel.inside_rectangles();
 
   // Lattice to axis coordinates, normals, attributes: once per vertex.
