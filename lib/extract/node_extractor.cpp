@@ -518,17 +518,17 @@ class Kernel {
     const int u = (a + 1) % 3, v = (a + 2) % 3;
     const std::uint32_t group = side_group_ + static_cast<std::uint32_t>(side);
     const bool upper = side % 2 == 1;
-    // The side's vertex at lattice point (pu, pv), through side_corner() of a cell placed
-    // there (the cell loop is over, so its current cell is free to move).
+    // The side's vertex at lattice point (pu, pv): the slot side_slot() gives a cell
+    // corner there (pv * dims[u] + pu in every side's plane).
     auto point = [&](std::size_t pu, std::size_t pv) {
-      std::size_t c[3];
-      c[a] = upper ? dims_[a] - 1 : 0;
-      c[u] = pu;
-      c[v] = pv;
-      x_ = c[0];
-      y_ = c[1];
-      z_ = c[2];
-      return side_corner(side, 0);
+      Slot& slot = s_.sides[side][(pv * dims_[u] + pu) * 4];
+      return lookup(slot, side_stamp_, group, [&] {
+        Vec3 p;
+        p[a] = upper ? static_cast<double>(dims_[a] - 1) : 0.0;
+        p[u] = static_cast<double>(pu);
+        p[v] = static_cast<double>(pv);
+        return p;
+      });
     };
     auto triangle = [&](std::uint32_t p, std::uint32_t q, std::uint32_t r) {
       if (upper) {
@@ -711,9 +711,16 @@ class Kernel {
 
   // The vertex of `group` at cell corner k, remembered in `slot`.
   std::uint32_t lookup(Slot& slot, std::uint32_t stamp, std::uint32_t group, int k) {
+    return lookup(slot, stamp, group, [&] { return corner_pos(k); });
+  }
+
+  // The same at the lattice point position() gives (called only when the slot does not
+  // hold the vertex).
+  template <class Position>
+  std::uint32_t lookup(Slot& slot, std::uint32_t stamp, std::uint32_t group, Position position) {
     if (slot.tag == (stamp | group)) return slot.vertex;
-    if ((slot.tag & ~0xFFu) == stamp) return b_.vertex(group, corner_pos(k));  // another group's
-    const std::uint32_t v = b_.add_vertex(group, corner_pos(k));
+    if ((slot.tag & ~0xFFu) == stamp) return b_.vertex(group, position());  // another group's
+    const std::uint32_t v = b_.add_vertex(group, position());
     slot = Slot{stamp | group, v};
     return v;
   }
