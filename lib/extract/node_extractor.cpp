@@ -315,12 +315,25 @@ struct Scratch {
   std::array<std::vector<std::uint8_t>, 6> inside_squares;
   std::uint32_t stamp = 0;       // this extraction's first stamp
   std::uint32_t next_stamp = 1;  // the next extraction's
-  std::vector<std::uint64_t> row_or, row_and, col_or, col_and;
+  std::vector<std::uint64_t> row_or, row_and;
+  // Per column of samples of the current row of cells: the conditions that hold at one
+  // of its four samples and at all four, in the masks' width.
+  std::vector<std::uint16_t> col_or16, col_and16;
+  std::vector<std::uint64_t> col_or64, col_and64;
   std::vector<std::uint8_t> needs_fallback;
   std::vector<std::uint8_t> multi;  // per cell: crossed by several conditions
   std::vector<Vec3> fallback;
   std::vector<CellPoint> cells;
   std::array<std::vector<double>, 3> inverse_spacing;
+
+  template <class Mask>
+  std::pair<std::vector<Mask>&, std::vector<Mask>&> columns() {
+    if constexpr (sizeof(Mask) == sizeof(std::uint16_t)) {
+      return {col_or16, col_and16};
+    } else {
+      return {col_or64, col_and64};
+    }
+  }
 
   void begin(std::size_t samples, const std::array<std::size_t, 3>& dims) {
     const std::size_t slab = samples / dims[2];
@@ -765,10 +778,11 @@ void extract_cells(const Mask* inside, const ConditionSet& set,
     scratch.row_or[r] = o;
     scratch.row_and[r] = a;
   }
-  scratch.col_or.resize(dims[0]);
-  scratch.col_and.resize(dims[0]);
-  std::uint64_t* col_or = scratch.col_or.data();
-  std::uint64_t* col_and = scratch.col_and.data();
+  auto [col_or_buffer, col_and_buffer] = scratch.columns<Mask>();
+  col_or_buffer.resize(dims[0]);
+  col_and_buffer.resize(dims[0]);
+  Mask* col_or = col_or_buffer.data();
+  Mask* col_and = col_and_buffer.data();
   auto fill_columns = [&](std::size_t r0) {
     const Mask* s0 = inside + r0 * dims[0];
     const Mask* s1 = s0 + sy;
