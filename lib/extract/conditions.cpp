@@ -50,31 +50,39 @@ class Builder {
   template <class In>
   bool add(Condition condition, In in) {
     const std::size_t index = set_.conditions.size();
-    std::size_t count_in = 0;
+    unsigned some = 0, every = 1;  // holds at some sample, at every sample
     with_masks([&](auto* inside) {
       using Mask = std::remove_pointer_t<decltype(inside)>;
       if (index == 0) {
         for (std::size_t i = 0; i < n_; ++i) {
           const Mask b = in(i) ? 1 : 0;
           inside[i] = b;
-          count_in += b;
+          some |= b;
+          every &= b;
         }
       } else if (index < kBits<Mask>) {
         for (std::size_t i = 0; i < n_; ++i) {
           const Mask b = in(i) ? 1 : 0;
           inside[i] |= static_cast<Mask>(b << index);
-          count_in += b;
+          some |= b;
+          every &= b;
         }
       } else {
-        for (std::size_t i = 0; i < n_; ++i) count_in += in(i) ? 1 : 0;
+        for (std::size_t i = 0; i < n_; ++i) {
+          const unsigned b = in(i) ? 1 : 0;
+          some |= b;
+          every &= b;
+        }
       }
     });
-    return finish(std::move(condition), index, count_in);
+    return finish(std::move(condition), index, some != 0, every != 0);
   }
 
   // Keeps the condition unless it holds nowhere or everywhere (then its bit goes).
-  bool finish(Condition condition, std::size_t index, std::size_t count_in) {
-    if (count_in == n_) {
+  // (Whether it holds somewhere and everywhere, as OR and AND over the samples: no
+  // counters, whose 64-bit sums would cost the vectorized loops a widening each.)
+  bool finish(Condition condition, std::size_t index, bool somewhere, bool everywhere) {
+    if (everywhere) {
       with_masks([&](auto* inside) {
         using Mask = std::remove_pointer_t<decltype(inside)>;
         if (index >= kBits<Mask>) return;
@@ -82,12 +90,12 @@ class Builder {
         for (std::size_t i = 0; i < n_; ++i) inside[i] &= keep;
       });
     }
-    if (count_in != 0 && count_in != n_) {
+    if (somewhere && !everywhere) {
       set_.conditions.push_back(std::move(condition));
     } else if (!condition.values.empty()) {
       set_.spare.push_back(std::move(condition.values));
     }
-    return count_in != 0;
+    return somewhere;
   }
 
   bool add(Condition condition) {
@@ -106,15 +114,16 @@ class Builder {
     const float t = is_min ? float_at_or_above(condition.bound) : float_at_or_below(condition.bound);
     constexpr float kMax = std::numeric_limits<float>::max();
     const std::size_t n = n_;  // a local: stores to inside[] could alias n_
-    std::size_t count_in = 0, count_missing = 0;
+    unsigned some = 0, every = 1, any_absent = 0;
     auto run = [&](auto op) {
       for (std::size_t i = 0; i < n; ++i) {
         const float v = f[i];
         const auto absent = static_cast<unsigned>(!(std::fabs(v) <= kMax));
         const auto in = absent | static_cast<unsigned>(is_min ? v >= t : v <= t);
         op(i, in);
-        count_in += in;
-        count_missing += absent;
+        some |= in;
+        every &= in;
+        any_absent |= absent;
       }
     };
     with_masks([&](auto* inside) {
@@ -127,8 +136,8 @@ class Builder {
         run([](std::size_t, unsigned) {});
       }
     });
-    missing = missing || count_missing != 0;
-    return finish(std::move(condition), index, count_in);
+    missing = missing || any_absent != 0;
+    return finish(std::move(condition), index, some != 0, every != 0);
   }
 
  private:
