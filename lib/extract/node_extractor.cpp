@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <type_traits>
 
 #include "core/error.h"
 #include "extract/collapsed_triangles.h"
@@ -1019,11 +1020,30 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
   bool any_fallback = false;
   // Per axis and cell: the spacing's inverse (normals are covectors: the lattice
   // gradient divided by the spacing).
+  //
+  // And whether a point strictly inside a cell may round onto one of the cell's ends
+  // in axis coordinates (c0 + f (c1 - c0) equal to c0 or c1 for 0 < f < 1), which the
+  // mapping below then checks vertex by vertex. Every vertex but the general clipper's
+  // is a lattice point or a crossing on a lattice edge, whose fraction of its cell along
+  // each axis is 0, 1, or at least kCrossingSnap (2^-30) away from both (edge_crossing
+  // snaps nearer crossings to the corner; computing f = p - i costs far less than
+  // 2^-31 on any lattice under 2^20 samples a side). Rounding onto an end then needs a
+  // spacing below 2^-21 of the coordinates' magnitude (|f (c1 - c0)| must be under
+  // half an ulp of c0); an axis whose every spacing is at least 2^-18 of it is safe
+  // with room to spare (degrees, metres and pascals on any model grid are, by many
+  // orders of magnitude).
+  static_assert(kCrossingSnap >= 0x1p-30);
+  bool may_round = local.clipped_tets > 0;
   for (int a = 0; a < 3; ++a) {
     auto& inv = scratch.inverse_spacing[a];
     const auto& c = samples.coords[a];
     inv.resize(dims[a] - 1);
-    for (std::size_t i = 0; i + 1 < dims[a]; ++i) inv[i] = 1.0 / (c[i + 1] - c[i]);
+    for (std::size_t i = 0; i + 1 < dims[a]; ++i) {
+      const double spacing = c[i + 1] - c[i];
+      inv[i] = 1.0 / spacing;
+      const double magnitude = std::max(std::fabs(c[i]), std::fabs(c[i + 1]));
+      may_round = may_round || !(std::fabs(spacing) >= 0x1p-18 * magnitude);
+    }
   }
   // Per group: the limit field whose gradient gives the normal (with its sign), or
   // the fixed lattice normal of a box or node side (unit along one axis).
@@ -1055,34 +1075,44 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
   scratch.cells.resize(nv);
   mesh.positions.resize(nv);
   // Whether a point strictly inside a cell rounded onto the cell's end: only then can two
-  // lattice-distinct vertices share an axis position (collapsed_triangles.h).
+  // lattice-distinct vertices share an axis position (collapsed_triangles.h). Checked
+  // only where it may happen (above): the check is half of this loop's instructions.
   bool rounded_onto_sample = false;
-  for (std::size_t v = 0; v < nv; ++v) {
-    const Vec3& p = builder.points[v];
-    CellPoint& cp = scratch.cells[v];
-    std::size_t cell[3];
-    auto& position = mesh.positions[v];
-    for (int a = 0; a < 3; ++a) {
-      const double lo = p[a] > 0 ? p[a] : 0.0;  // truncation = floor here
-      std::size_t i = static_cast<std::size_t>(lo);
-      if (i > dims[a] - 2) i = dims[a] - 2;
-      cell[a] = i;
-      const double f = p[a] - static_cast<double>(i);
-      cp.f[a] = f;
-      // The sample's own coordinate at either end of the cell (exact, as the
-      // neighbouring node computes it), interpolated inside (selects, not branches:
-      // which case applies varies from vertex to vertex).
-      const auto& c = samples.coords[a];
-      const double c0 = c[i], c1 = c[i + 1];
-      const double inner = c0 + f * (c1 - c0);
-      double at = f == 0.0 ? c0 : inner;
-      at = f == 1.0 ? c1 : at;
-      position[a] = at;
-      rounded_onto_sample |= (f != 0.0) & (f != 1.0) & ((inner == c0) | (inner == c1));
+  auto map_vertices = [&](auto check_rounding) {
+    for (std::size_t v = 0; v < nv; ++v) {
+      const Vec3& p = builder.points[v];
+      CellPoint& cp = scratch.cells[v];
+      std::size_t cell[3];
+      auto& position = mesh.positions[v];
+      for (int a = 0; a < 3; ++a) {
+        const double lo = p[a] > 0 ? p[a] : 0.0;  // truncation = floor here
+        std::size_t i = static_cast<std::size_t>(lo);
+        if (i > dims[a] - 2) i = dims[a] - 2;
+        cell[a] = i;
+        const double f = p[a] - static_cast<double>(i);
+        cp.f[a] = f;
+        // The sample's own coordinate at either end of the cell (exact, as the
+        // neighbouring node computes it), interpolated inside (selects, not branches:
+        // which case applies varies from vertex to vertex).
+        const auto& c = samples.coords[a];
+        const double c0 = c[i], c1 = c[i + 1];
+        const double inner = c0 + f * (c1 - c0);
+        double at = f == 0.0 ? c0 : inner;
+        at = f == 1.0 ? c1 : at;
+        position[a] = at;
+        if constexpr (decltype(check_rounding)::value) {
+          rounded_onto_sample |= (f != 0.0) & (f != 1.0) & ((inner == c0) | (inner == c1));
+        }
+      }
+      cp.index = (cell[2] * dims[1] + cell[1]) * dims[0] + cell[0];
+      cp.cell = {static_cast<std::uint32_t>(cell[0]), static_cast<std::uint32_t>(cell[1]),
+                 static_cast<std::uint32_t>(cell[2])};
     }
-    cp.index = (cell[2] * dims[1] + cell[1]) * dims[0] + cell[0];
-    cp.cell = {static_cast<std::uint32_t>(cell[0]), static_cast<std::uint32_t>(cell[1]),
-               static_cast<std::uint32_t>(cell[2])};
+  };
+  if (may_round) {
+    map_vertices(std::true_type{});
+  } else {
+    map_vertices(std::false_type{});
   }
   // Pass 2: normals as covectors in axis coordinates (lattice gradient / spacing), unit
   // length (face normals where the gradient is zero or undefined, below).
