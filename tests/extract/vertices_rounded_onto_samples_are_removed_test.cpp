@@ -58,12 +58,12 @@ std::size_t triangles_with_coincident_vertices(const Mesh& mesh) {
   return n;
 }
 
+// Closed and oriented, every edge in exactly two triangles, unit normals.
 void expect_closed(const Mesh& mesh) {
   const MeshCheck c = check_mesh(mesh);
-  EXPECT_EQ(c.open_edges, 0u);
-  EXPECT_EQ(c.nonmanifold_edges, 0u);
-  EXPECT_EQ(c.misoriented_edges, 0u);
-  EXPECT_EQ(c.bad_normals, 0u);
+  EXPECT_TRUE(c.closed() && c.nonmanifold_edges == 0 && c.bad_normals == 0)
+      << c.open_edges << " open, " << c.nonmanifold_edges << " non-manifold, "
+      << c.misoriented_edges << " misoriented edges, " << c.bad_normals << " bad normals";
   EXPECT_GT(mesh.triangles.size(), 0u);
 }
 
