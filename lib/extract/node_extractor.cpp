@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "extract/collapsed_triangles.h"
+#include "extract/collinear_slivers.h"
 #include "extract/conditions.h"
 #include "extract/mesh_builder.h"
 #include "extract/tet_clipper.h"
@@ -1182,6 +1183,8 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
   for (const ExtractLimit& limit : request.limits) equal_bounds = equal_bounds || limit.min == limit.max;
   const bool sheets = equal_bounds || corner_crossings != corner_crossings_before;
   if (sheets || rounded_onto_sample) remove_collapsed_triangles(mesh, sheets);
+  // Rounding onto samples can also leave three distinct vertices on one line.
+  if (rounded_onto_sample) split_collinear_slivers(mesh);
   if (stats) *stats = local;
   return mesh;
 }

@@ -3,9 +3,8 @@
 // axis coordinates c0 + f (c1 - c0) it can round onto the sample itself when the axis'
 // spacing is tiny against its values. The kernel looks for that only on axes where it
 // can happen (spacing under 2^-18 of the values) and for the general clipper's points;
-// where it happens, the triangles with two vertices at one position must go and the
-// mesh must stay closed. (Slivers whose three distinct vertices end up on one line stay:
-// docs/robustness.md, "Limits of what is checked".)
+// where it happens, the triangles with two vertices at one position and those whose
+// three distinct vertices end up on one line must go, and the mesh must stay closed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -74,10 +73,15 @@ TEST(VerticesRoundedOntoSamples, CollapsedSliversOnATightlySpacedAxisAreRemoved)
     SCOPED_TRACE(origin);
     const NodeSamples s = sliver_node(origin, spacing);
     const Mesh mesh = extract_node_mesh(s, below_the_crossing());
-    // Without the check: 36 such triangles and 36 edges with four triangles.
+    // Without the check: 36 such triangles and 36 edges with four triangles; without
+    // splitting the collinear slivers: 18 zero-area triangles.
     EXPECT_EQ(triangles_with_coincident_vertices(mesh), 0u);
     expect_closed(mesh);
+    EXPECT_EQ(check_mesh(mesh).degenerate_triangles, 0u);
     for (const auto& p : mesh.positions) EXPECT_LE(p[0], s.coords[0][3]);
+    // The sliver's volume went with it: the box up to index 3.
+    const double box = (s.coords[0][3] - s.coords[0][0]) * 5.0 * 40.0;
+    EXPECT_NEAR(enclosed_volume(mesh), box, 1e-9 * box);
   }
 }
 
