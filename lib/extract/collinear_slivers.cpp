@@ -17,7 +17,9 @@ using Position = std::array<double, 3>;
 // so chains of slivers along one line resolve from their ends.
 constexpr int kMaxRounds = 16;
 
-Position minus(const Position& a, const Position& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Position minus(const Position& a, const Position& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 
 // check_mesh's zero-area test: the edges from the first vertex have a zero cross product.
 bool zero_area(const Position& a, const Position& b, const Position& c) {

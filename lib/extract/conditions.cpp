@@ -131,7 +131,9 @@ class Builder {
       if (index == 0) {
         run([&](std::size_t i, unsigned in) { inside[i] = static_cast<Mask>(in); });
       } else if (index < kBits<Mask>) {
-        run([&](std::size_t i, unsigned in) { inside[i] |= static_cast<Mask>(static_cast<Mask>(in) << index); });
+        run([&](std::size_t i, unsigned in) {
+          inside[i] |= static_cast<Mask>(static_cast<Mask>(in) << index);
+        });
       } else {
         run([](std::size_t, unsigned) {});
       }
@@ -166,9 +168,6 @@ class Builder {
   // The largest float <= t.
   static float float_at_or_below(double t) { return -float_at_or_above(-t); }
 
- public:
-
- private:
   ConditionSet& set_;
   std::size_t n_;
 };

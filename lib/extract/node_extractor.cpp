@@ -934,7 +934,6 @@ void extract_cells(const Mask* inside, const ConditionSet& set,
       }
     }
   }
-
 }
 
 }  // namespace
