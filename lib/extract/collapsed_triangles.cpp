@@ -74,19 +74,8 @@ std::size_t remove_collapsed_triangles(Mesh& mesh, bool look_for_sheets) {
     // orientation; of a key with both, the first min(count) of each in order go. Open
     // addressing in flat tables (this pass runs on every node where a crossing met a
     // sample, so it must cost about as much as the mesh, not a map node per triangle).
-    const std::size_t nv = mesh.positions.size();
-    const std::size_t cap = std::bit_ceil(std::max<std::size_t>(16, 2 * nv));
     constexpr std::uint32_t kEmpty = UINT32_MAX;
-    std::vector<std::uint32_t> first_at(cap, kEmpty);  // first vertex at a position
-    std::vector<std::uint32_t> id(nv);
-    for (std::size_t v = 0; v < nv; ++v) {
-      std::size_t i = PositionBitsHash{}(mesh.positions[v]) & (cap - 1);
-      while (first_at[i] != kEmpty && !same(mesh.positions[first_at[i]], mesh.positions[v])) {
-        i = (i + 1) & (cap - 1);
-      }
-      if (first_at[i] == kEmpty) first_at[i] = static_cast<std::uint32_t>(v);
-      id[v] = first_at[i];
-    }
+    const std::vector<std::uint32_t> id = first_vertex_at_each_position(mesh.positions);
     struct KeyCount {
       std::array<std::uint32_t, 3> key{kEmpty, kEmpty, kEmpty};
       std::array<std::uint32_t, 2> count{};

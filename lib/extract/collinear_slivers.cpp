@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "extract/mesh_metrics.h"
 #include "extract/position_hash.h"
 
 namespace strielad {
@@ -21,26 +22,14 @@ Position minus(const Position& a, const Position& b) {
   return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
 }
 
-// check_mesh's zero-area test: the edges from the first vertex have a zero cross product.
-bool zero_area(const Position& a, const Position& b, const Position& c) {
-  const Position e1 = minus(b, a), e2 = minus(c, a);
-  return e1[1] * e2[2] - e1[2] * e2[1] == 0 && e1[2] * e2[0] - e1[0] * e2[2] == 0 &&
-         e1[0] * e2[1] - e1[1] * e2[0] == 0;
-}
-
 std::uint64_t edge_key(std::uint32_t from, std::uint32_t to) {
   return (std::uint64_t{from} << 32) | to;
 }
 
 class SliverSplitter {
  public:
-  explicit SliverSplitter(Mesh& mesh) : mesh_(mesh), position_id_(mesh.positions.size()) {
-    std::unordered_map<Position, std::uint32_t, PositionBitsHash> first_at;
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-      position_id_[v] = first_at.try_emplace(mesh.positions[v], static_cast<std::uint32_t>(v))
-                            .first->second;
-    }
-  }
+  explicit SliverSplitter(Mesh& mesh)
+      : mesh_(mesh), position_id_(first_vertex_at_each_position(mesh.positions)) {}
 
   // One round; returns the slivers removed.
   std::size_t round() {

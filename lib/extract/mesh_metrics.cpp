@@ -20,6 +20,13 @@ const P& d3(const P& p) { return p; }
 
 }  // namespace
 
+bool zero_area(const P& a, const P& b, const P& c) {
+  const P e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const P e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  return e1[1] * e2[2] - e1[2] * e2[1] == 0 && e1[2] * e2[0] - e1[0] * e2[2] == 0 &&
+         e1[0] * e2[1] - e1[1] * e2[0] == 0;
+}
+
 MeshCheck check_mesh(const Mesh& mesh) {
   MeshCheck check;
   std::unordered_map<P, std::uint32_t, PositionBitsHash> ids;
@@ -38,13 +45,8 @@ MeshCheck check_mesh(const Mesh& mesh) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::array<std::uint32_t, 2>> edges;
   for (const auto& t : mesh.triangles) {
     const std::array<std::uint32_t, 3> v{id_of[t[0]], id_of[t[1]], id_of[t[2]]};
-    const auto a = d3(mesh.positions[t[0]]), b = d3(mesh.positions[t[1]]),
-               c = d3(mesh.positions[t[2]]);
-    const std::array<double, 3> e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    const std::array<double, 3> e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const std::array<double, 3> n{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                                  e1[0] * e2[1] - e1[1] * e2[0]};
-    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2] || (n[0] == 0 && n[1] == 0 && n[2] == 0)) {
+    if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2] ||
+        zero_area(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]])) {
       ++check.degenerate_triangles;
     }
     for (int i = 0; i < 3; ++i) {

@@ -3,6 +3,7 @@
 // enclosed volume, closedness and orientation, degenerate elements.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "extract/mesh.h"
@@ -25,6 +26,11 @@ struct MeshCheck {
     return closed() && degenerate_triangles == 0 && bad_normals == 0 && bad_positions == 0;
   }
 };
+
+// Whether triangle a, b, c has zero area as check_mesh counts it: the cross product of
+// its edges from a is exactly 0 in double (coincident or collinear points).
+bool zero_area(const std::array<double, 3>& a, const std::array<double, 3>& b,
+               const std::array<double, 3>& c);
 
 // Vertices are identified by exact position (a mesh may duplicate a position with
 // different normals where surfaces meet at a crease).
