@@ -213,6 +213,15 @@ double trilinear_region_volume(const NodeSamples& samples, const ExtractRequest&
   return volume;
 }
 
+NodeSamples no_surface_samples(const NodeSamples& samples, std::size_t field, double iso,
+                               bool region_is_above) {
+  NodeSamples out = samples;
+  const double step = std::fabs(iso) + 1;
+  std::fill(out.fields.at(field).begin(), out.fields.at(field).end(),
+            static_cast<float>(region_is_above ? iso - step : iso + step));
+  return out;
+}
+
 BrickGroup run_brick_group(const Store& store, const ExtractCase& c,
                            const BrickGroupOptions& options) {
   const Stopwatch clock;
@@ -249,6 +258,19 @@ BrickGroup run_brick_group(const Store& store, const ExtractCase& c,
     run.cells = std::uint64_t(dims[0] - 1) * (dims[1] - 1) * (dims[2] - 1);
     run.node_volume = in.node_volume;
     run.rounds.assign(n_contenders, {});
+    // Kernel and FlyingEdges also on the brick with nothing to extract, right after their
+    // own turn.
+    const bool with_no_surface = g.index_of(kFlyingEdges) != std::string::npos;
+    const NodeSamples empty = with_no_surface
+                                  ? no_surface_samples(in.samples, in.select_field, iso, region_is_above)
+                                  : NodeSamples{};
+    std::vector<std::vector<double>> no_surface_rounds(n_contenders);
+    auto expect_nothing = [&](const Mesh& m, const std::string& who) {
+      if (m.triangle_count() != 0) {
+        throw make_error(ErrorCode::kInternal, "bench: {} made {} triangles on node {} with nothing to extract",
+                         who, m.triangle_count(), nodes[b]);
+      }
+    };
     run.triangles.assign(n_contenders, 0);
     run.limit_triangles.assign(n_contenders, 0);
     run.volume.assign(n_contenders, std::numeric_limits<double>::quiet_NaN());
@@ -268,6 +290,12 @@ BrickGroup run_brick_group(const Store& store, const ExtractCase& c,
             run.kernel_stats = stats;
             kernel_mesh = std::move(m);
           }
+          if (with_no_surface) {
+            const Stopwatch e;
+            const Mesh none = extract_node_mesh(empty, in.request, nullptr);
+            no_surface_rounds[i].push_back(e.seconds());
+            if (r == 0) expect_nothing(none, who);
+          }
         } else if (who == kPaper) {
           peers::PeerResult p = peers::run_paper_pipeline(in.samples, in.request, paper_options);
           seconds = p.seconds;
@@ -276,6 +304,9 @@ BrickGroup run_brick_group(const Store& store, const ExtractCase& c,
           peers::PeerResult p = peers::run_flying_edges(in.samples, in.select_field, iso, {1});
           seconds = p.seconds;
           if (r == 0) fe_mesh = std::move(p.mesh);
+          const peers::PeerResult none = peers::run_flying_edges(empty, in.select_field, iso, {1});
+          no_surface_rounds[i].push_back(none.seconds);
+          if (r == 0) expect_nothing(none.mesh, who);
         } else {
           peers::PeerResult p =
               peers::run_openvdb_volume_to_mesh(in.samples, in.select_field, iso, {.threads = 1});
@@ -285,7 +316,12 @@ BrickGroup run_brick_group(const Store& store, const ExtractCase& c,
         run.rounds[i].push_back(seconds);
       }
     }
-    for (std::size_t i = 0; i < n_contenders; ++i) run.seconds.push_back(median(run.rounds[i]));
+    for (std::size_t i = 0; i < n_contenders; ++i) {
+      run.seconds.push_back(median(run.rounds[i]));
+      run.no_surface_seconds.push_back(no_surface_rounds[i].empty()
+                                           ? std::numeric_limits<double>::quiet_NaN()
+                                           : median(no_surface_rounds[i]));
+    }
     const std::size_t ik = g.index_of(kKernel), ip = g.index_of(kPaper);
     run.triangles[ik] = kernel_mesh.triangle_count();
     run.volume[ik] = enclosed_volume(kernel_mesh);

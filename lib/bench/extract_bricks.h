@@ -66,6 +66,12 @@ struct BrickRun {
   std::uint64_t cells = 0;      // (nx-1)(ny-1)(nz-1)
   double node_volume = 0;       // of the node's box, in axis units (for per-brick errors)
   std::vector<double> seconds;  // median over rounds
+  // The same on the same brick with nothing to extract (the case's field set to one
+  // value outside the region: see no_surface_samples), for the kernel and
+  // vtkFlyingEdges3D on one-limit cases; NaN for the other contenders. What a contender
+  // costs before it makes a triangle (FlyingEdges: building its vtkImageData and
+  // classifying every edge).
+  std::vector<double> no_surface_seconds;
   std::vector<std::vector<double>> rounds;  // every round's seconds
   std::vector<std::uint64_t> triangles;
   std::vector<std::uint64_t> limit_triangles;  // on the limit surface (no node faces)
@@ -100,6 +106,12 @@ struct BrickGroupOptions {
   std::uint64_t seed = 42;
   bool openvdb = true;
 };
+
+// `samples` with field `field` set to one value on the far side of `iso` from the region
+// (region_is_above: the region is field >= iso), so that no cell is cut and nothing is
+// inside.
+NodeSamples no_surface_samples(const NodeSamples& samples, std::size_t field, double iso,
+                               bool region_is_above);
 
 // The volume of the region where every limit of `request` holds on the trilinear
 // interpolant of the samples (missing samples: outside), by the midpoint rule on

@@ -25,6 +25,10 @@ struct ContenderSummary {
   double triangles = kNaN;              // mean per brick
   double limit_triangles = kNaN;        // mean per brick, on the limit surface
   double ns_per_triangle = kNaN;        // total seconds / total triangles
+  double no_surface_p50_ms = kNaN;      // over bricks, with nothing to extract (kernel, FE)
+  // (total seconds - total seconds with nothing to extract) / total triangles: what each
+  // triangle costs beyond the contender's fixed cost.
+  double marginal_ns_per_triangle = kNaN;
   double volume = kNaN;                 // sum over bricks (NaN if any is NaN)
   double volume_vs_paper = kNaN;        // (volume - paper's) / paper's
   double volume_vs_reference = kNaN;    // (volume - trilinear region's) / trilinear region's
@@ -38,13 +42,16 @@ ContenderSummary summarize_contender(const BrickGroup& g, std::size_t i) {
   s.bricks = g.runs.size();
   if (g.runs.empty()) return s;
   const std::size_t ip = g.index_of(kPaper);
-  std::vector<double> ms, spreads;
+  std::vector<double> ms, spreads, no_surface_ms;
+  double no_surface_total_s = 0;
   double tris = 0, limit_tris = 0, volume = 0, paper_volume = 0, reference = 0, max_dv = 0,
          cells = 0, cut = 0;
   std::size_t clean = 0;
   for (const BrickRun& r : g.runs) {
     ms.push_back(r.seconds[i] * 1e3);
     s.total_s += r.seconds[i];
+    no_surface_ms.push_back(r.no_surface_seconds[i] * 1e3);
+    no_surface_total_s += r.no_surface_seconds[i];
     const Summary rounds = summarize(r.rounds[i]);
     spreads.push_back(rounds.p50 > 0 ? (rounds.max - rounds.min) / rounds.p50 : 0);
     tris += static_cast<double>(r.triangles[i]);
@@ -65,6 +72,10 @@ ContenderSummary summarize_contender(const BrickGroup& g, std::size_t i) {
   s.triangles = tris / static_cast<double>(s.bricks);
   s.limit_triangles = limit_tris / static_cast<double>(s.bricks);
   s.ns_per_triangle = ratio(s.total_s * 1e9, tris);
+  if (std::isfinite(no_surface_total_s)) {
+    s.no_surface_p50_ms = summarize(no_surface_ms).p50;
+    s.marginal_ns_per_triangle = ratio((s.total_s - no_surface_total_s) * 1e9, tris);
+  }
   s.volume = volume;
   s.volume_vs_paper = std::isnan(volume) ? kNaN : (volume - paper_volume) / paper_volume;
   s.volume_vs_reference = std::isnan(volume) ? kNaN : (volume - reference) / reference;
@@ -86,7 +97,7 @@ Table brick_table(const ExtractSuiteReport& r, const ExtractCase& c) {
                       "median of {} round(s) per brick",
                       c.label, r.options.repeat),
           {"B / contender", "bricks", "ms p50", "ms p90", "spread %", "Mcells/s", "tris/brick",
-           "limit tris", "ns/tri", "volume", "dV vs paper %", "max dV/node %", "dV vs trilinear %",
+           "limit tris", "ns/tri", "ms no surface", "ns/tri beyond", "volume", "dV vs paper %", "max dV/node %", "dV vs trilinear %",
            "clean %", "cut cells %", "x paper", "x FlyingEdges"},
           {},
           {}};
@@ -94,7 +105,8 @@ Table brick_table(const ExtractSuiteReport& r, const ExtractCase& c) {
     if (g.extract_case.name != c.name) continue;
     if (g.runs.empty()) {
       t.add({fmt::format("B={} (no brick cut by {})", g.brick, c.label), Cell::integer(0), kNaN,
-             kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN});
+             kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN,
+             kNaN});
       continue;
     }
     const ContenderSummary paper = summarize_contender(g, g.index_of(kPaper));
@@ -107,7 +119,8 @@ Table brick_table(const ExtractSuiteReport& r, const ExtractCase& c) {
       t.add({fmt::format("B={} {}", g.brick, g.contenders[i]),
              Cell::integer(static_cast<double>(s.bricks)), Cell(s.p50_ms, 3), Cell(s.p90_ms, 3),
              Cell(s.spread * 100, 0), Cell(s.mcells_per_s, 2), Cell(s.triangles, 0),
-             Cell(s.limit_triangles, 0), Cell(s.ns_per_triangle, 0), Cell(s.volume, 3),
+             Cell(s.limit_triangles, 0), Cell(s.ns_per_triangle, 0), Cell(s.no_surface_p50_ms, 3),
+             Cell(s.marginal_ns_per_triangle, 0), Cell(s.volume, 3),
              Cell(is_paper ? kNaN : s.volume_vs_paper * 100, 4),
              Cell(is_paper ? kNaN : s.max_brick_dv * 100, 4), Cell(s.volume_vs_reference * 100, 3),
              Cell(s.clean * 100, 1), Cell(s.cut_cells * 100, 1),
@@ -148,7 +161,10 @@ Table brick_table(const ExtractSuiteReport& r, const ExtractCase& c) {
       "(B)^3 cells / ms p50 (one core); x paper, x FlyingEdges = their ms p50 / this row's ms p50; "
       "tris/brick = mean triangles per brick, limit tris = those on the limit surface (the kernel "
       "and the paper pipeline also close the mesh on the node's faces); ns/tri = all bricks' "
-      "median seconds / all their triangles");
+      "median seconds / all their triangles; ms no surface = the same contender on the same brick "
+      "with the case's field set to one value outside the region (nothing to extract; kernel and "
+      "vtkFlyingEdges3D, taking the same turns): its cost before the first triangle; ns/tri beyond "
+      "= (all bricks' median seconds - the same with no surface) / all their triangles");
   t.notes.push_back(
       "volume = sum over bricks of the enclosed volume (deg x deg x m); kernel and paper meshes "
       "are "
@@ -366,8 +382,10 @@ nlohmann::json extract_report_json(const ExtractSuiteReport& r, const std::vecto
   for (const BrickGroup& g : r.groups) {
     nlohmann::json nodes = nlohmann::json::array(), reference = nlohmann::json::array();
     nlohmann::json seconds = nlohmann::json::object(), volume = nlohmann::json::object();
+    nlohmann::json no_surface = nlohmann::json::object();
     for (const auto& c : g.contenders) {
       seconds[c] = nlohmann::json::array();
+      no_surface[c] = nlohmann::json::array();
       volume[c] = nlohmann::json::array();
     }
     for (const BrickRun& run : g.runs) {
@@ -375,6 +393,7 @@ nlohmann::json extract_report_json(const ExtractSuiteReport& r, const std::vecto
       reference.push_back(run.reference_volume);
       for (std::size_t i = 0; i < g.contenders.size(); ++i) {
         seconds[g.contenders[i]].push_back(run.seconds[i]);
+        no_surface[g.contenders[i]].push_back(finite_or_null(run.no_surface_seconds[i]));
         volume[g.contenders[i]].push_back(finite_or_null(run.volume[i]));
       }
     }
@@ -385,6 +404,7 @@ nlohmann::json extract_report_json(const ExtractSuiteReport& r, const std::vecto
                       {"group_seconds", g.seconds},
                       {"nodes", nodes},
                       {"median_seconds", seconds},
+                      {"no_surface_median_seconds", no_surface},
                       {"volume", volume},
                       {"trilinear_volume", reference}});
   }

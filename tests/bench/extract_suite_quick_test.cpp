@@ -54,6 +54,27 @@ TEST(ExtractSurfaceDistance, IsTheExactDistanceToTheNearestTriangle) {
   }
 }
 
+// The brick with nothing to extract: the case's field on the far side of the threshold
+// everywhere, the other fields and the axes as they were.
+TEST(NoSurfaceSamples, PutTheFieldOnTheFarSideOfTheThreshold) {
+  NodeSamples s;
+  s.coords = {std::vector<double>{0, 1, 2}, {0, 1}, {5, 4}};
+  s.fields = {{0, 1e-4f, 2e-5f, 0, 0, 3e-3f, 0, 1e-6f, 0, 0, 0, 0},
+              {250, 260, 270, 280, 255, 265, 275, 285, 250, 260, 270, 280}};
+  const NodeSamples above = bench::no_surface_samples(s, 0, 1e-5, true);
+  const NodeSamples below = bench::no_surface_samples(s, 1, 260, false);
+  for (float v : above.fields[0]) EXPECT_LT(v, 1e-5f);
+  for (float v : below.fields[1]) EXPECT_GT(v, 260.0f);
+  EXPECT_EQ(above.fields[1], s.fields[1]);
+  EXPECT_EQ(below.fields[0], s.fields[0]);
+  EXPECT_EQ(above.coords, s.coords);
+  // Negative and large thresholds too.
+  const NodeSamples far_below = bench::no_surface_samples(s, 1, -1e30, true);
+  const NodeSamples above_negative = bench::no_surface_samples(s, 1, -3, false);
+  for (float v : far_below.fields[1]) EXPECT_LT(v, -1e30f);
+  for (float v : above_negative.fields[1]) EXPECT_GT(v, -3.0f);
+}
+
 TEST(ExtractSuiteQuick, MeasuresEveryContenderWithEqualVolumes) {
   TempDir tmp;
   bench::ExtractSuiteOptions options = bench::quick_extract_options({});
@@ -79,8 +100,16 @@ TEST(ExtractSuiteQuick, MeasuresEveryContenderWithEqualVolumes) {
     for (const bench::BrickRun& run : g.runs) {
       EXPECT_EQ(run.cells, std::uint64_t{g.brick} * g.brick * g.brick);
       ASSERT_EQ(run.seconds.size(), g.contenders.size());
+      ASSERT_EQ(run.no_surface_seconds.size(), g.contenders.size());
       for (std::size_t i = 0; i < g.contenders.size(); ++i) {
         EXPECT_GT(run.seconds[i], 0) << g.contenders[i];
+        // Kernel and FlyingEdges are also timed with nothing to extract (one-limit cases).
+        const bool fixed_cost = g.extract_case.one_limit() && (g.contenders[i] == bench::kKernel ||
+                                                               g.contenders[i] == bench::kFlyingEdges);
+        EXPECT_EQ(std::isfinite(run.no_surface_seconds[i]), fixed_cost) << g.contenders[i];
+        if (fixed_cost) {
+          EXPECT_GT(run.no_surface_seconds[i], 0) << g.contenders[i];
+        }
         EXPECT_EQ(run.rounds[i].size(), static_cast<std::size_t>(options.repeat))
             << g.contenders[i];
         // The selecting limit cuts the brick; with three limits the others may empty it.
