@@ -261,14 +261,15 @@ BrickGroup run_brick_group(const Store& store, const ExtractCase& c,
     // Kernel and FlyingEdges also on the brick with nothing to extract, right after their
     // own turn.
     const bool with_no_surface = g.index_of(kFlyingEdges) != std::string::npos;
-    const NodeSamples empty = with_no_surface
-                                  ? no_surface_samples(in.samples, in.select_field, iso, region_is_above)
-                                  : NodeSamples{};
+    const NodeSamples empty =
+        with_no_surface ? no_surface_samples(in.samples, in.select_field, iso, region_is_above)
+                        : NodeSamples{};
     std::vector<std::vector<double>> no_surface_rounds(n_contenders);
     auto expect_nothing = [&](const Mesh& m, const std::string& who) {
       if (m.triangle_count() != 0) {
-        throw make_error(ErrorCode::kInternal, "bench: {} made {} triangles on node {} with nothing to extract",
-                         who, m.triangle_count(), nodes[b]);
+        throw make_error(ErrorCode::kInternal,
+                         "bench: {} made {} triangles on node {} with nothing to extract", who,
+                         m.triangle_count(), nodes[b]);
       }
     };
     run.triangles.assign(n_contenders, 0);

@@ -97,16 +97,17 @@ Table brick_table(const ExtractSuiteReport& r, const ExtractCase& c) {
                       "median of {} round(s) per brick",
                       c.label, r.options.repeat),
           {"B / contender", "bricks", "ms p50", "ms p90", "spread %", "Mcells/s", "tris/brick",
-           "limit tris", "ns/tri", "ms no surface", "ns/tri beyond", "volume", "dV vs paper %", "max dV/node %", "dV vs trilinear %",
-           "clean %", "cut cells %", "x paper", "x FlyingEdges"},
+           "limit tris", "ns/tri", "ms no surface", "ns/tri beyond", "volume", "dV vs paper %",
+           "max dV/node %", "dV vs trilinear %", "clean %", "cut cells %", "x paper",
+           "x FlyingEdges"},
           {},
           {}};
   for (const BrickGroup& g : r.groups) {
     if (g.extract_case.name != c.name) continue;
     if (g.runs.empty()) {
       t.add({fmt::format("B={} (no brick cut by {})", g.brick, c.label), Cell::integer(0), kNaN,
-             kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN,
-             kNaN});
+             kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN,
+             kNaN, kNaN});
       continue;
     }
     const ContenderSummary paper = summarize_contender(g, g.index_of(kPaper));

@@ -104,8 +104,9 @@ TEST(ExtractSuiteQuick, MeasuresEveryContenderWithEqualVolumes) {
       for (std::size_t i = 0; i < g.contenders.size(); ++i) {
         EXPECT_GT(run.seconds[i], 0) << g.contenders[i];
         // Kernel and FlyingEdges are also timed with nothing to extract (one-limit cases).
-        const bool fixed_cost = g.extract_case.one_limit() && (g.contenders[i] == bench::kKernel ||
-                                                               g.contenders[i] == bench::kFlyingEdges);
+        const bool fixed_cost =
+            g.extract_case.one_limit() &&
+            (g.contenders[i] == bench::kKernel || g.contenders[i] == bench::kFlyingEdges);
         EXPECT_EQ(std::isfinite(run.no_surface_seconds[i]), fixed_cost) << g.contenders[i];
         if (fixed_cost) {
           EXPECT_GT(run.no_surface_seconds[i], 0) << g.contenders[i];
