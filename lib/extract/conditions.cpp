@@ -196,6 +196,7 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
   set.conditions.clear();
   set.empty = false;
   set.all = 0;
+  set.box_sides = 0;
   // At most two conditions per limit, one validity condition and two per bounded box
   // axis.
   std::size_t most = 1;
@@ -286,6 +287,11 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
       empty = true;
       continue;
     }
+    // A bound exactly on the node's first or last sample plane: the region ends on the
+    // node's face there (fractional_index gives exactly 0 or the last index only for a
+    // bound equal to that sample's coordinate).
+    if (i_first == 0.0) set.box_sides |= static_cast<std::uint8_t>(1u << (2 * a));
+    if (i_last == last_sample) set.box_sides |= static_cast<std::uint8_t>(1u << (2 * a + 1));
     for (int side = 0; side < 2 && !empty; ++side) {
       Condition c;
       c.kind = ConditionKind::kBox;

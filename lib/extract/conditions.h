@@ -52,6 +52,12 @@ struct ConditionSet {
   std::vector<std::uint16_t> inside16;  // per sample: bit c set iff condition c holds
   std::vector<std::uint64_t> inside64;
   std::uint64_t all = 0;              // bits of every condition
+  // Node sides (bit 2 * axis + side, as NodeSamples::grid_edge) on which a domain box
+  // bound lies exactly, with the box's inside towards the node: the box condition holds
+  // everywhere and is dropped, but the region ends there, so the node's face on that
+  // side is a domain-box face, not one shared with the neighbouring node (whose part of
+  // the box is empty).
+  std::uint8_t box_sides = 0;
   // Value buffers of earlier builds, reused by the next build into this set.
   std::vector<std::vector<double>> spare;
 };

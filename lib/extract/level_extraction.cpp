@@ -67,4 +67,25 @@ LevelExtraction extract_level(const Store& store, const ResolvedScene& scene,
   return out;
 }
 
+Mesh seamless_union(const LevelExtraction& level, std::uint32_t subvolume_id) {
+  Mesh joined;
+  joined.subvolume_id = subvolume_id;
+  for (const NodeExtraction& n : level.nodes) {
+    for (const SubVolumeResult& r : n.results) {
+      if (r.subvolume_id != subvolume_id || r.outcome != NodeOutcome::kMesh) continue;
+      const auto offset = static_cast<std::uint32_t>(joined.positions.size());
+      joined.positions.insert(joined.positions.end(), r.mesh.positions.begin(),
+                              r.mesh.positions.end());
+      joined.normals.insert(joined.normals.end(), r.mesh.normals.begin(), r.mesh.normals.end());
+      for (std::size_t t = 0; t < r.mesh.triangles.size(); ++t) {
+        if (r.mesh.face_kinds[t] == FaceKind::kNodeBoundary) continue;
+        const auto& tri = r.mesh.triangles[t];
+        joined.triangles.push_back({tri[0] + offset, tri[1] + offset, tri[2] + offset});
+        joined.face_kinds.push_back(r.mesh.face_kinds[t]);
+      }
+    }
+  }
+  return joined;
+}
+
 }  // namespace strielad

@@ -40,4 +40,10 @@ struct LevelExtraction {
 LevelExtraction extract_level(const Store& store, const ResolvedScene& scene,
                               const LevelExtractionOptions& options);
 
+// Every node's mesh of sub-volume `subvolume_id` in one mesh, without the faces shared
+// by neighbouring nodes (face kind node-boundary): the seamless surface of the region at
+// this level, closed where the region is (formats/scene.md, "Extraction output").
+// Attributes are left out.
+Mesh seamless_union(const LevelExtraction& level, std::uint32_t subvolume_id);
+
 }  // namespace strielad

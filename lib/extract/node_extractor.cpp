@@ -995,7 +995,10 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
   std::array<FaceKind, kMaxConditions + 6> kind_of{};
   for (std::size_t g = 0; g < groups; ++g) {
     if (g >= side_group) {
-      kind_of[g] = samples.grid_edge[g - side_group] ? FaceKind::kGridBoundary : FaceKind::kNodeBoundary;
+      const std::size_t side = g - side_group;
+      kind_of[g] = samples.grid_edge[side]          ? FaceKind::kGridBoundary
+                   : (set.box_sides >> side) & 1u ? FaceKind::kDomainBox
+                                                  : FaceKind::kNodeBoundary;
     } else {
       kind_of[g] = set.conditions[g].kind == ConditionKind::kBox ? FaceKind::kDomainBox : FaceKind::kLimit;
     }

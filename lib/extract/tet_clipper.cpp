@@ -77,6 +77,22 @@ std::uint32_t TetClipper::crossing(std::uint32_t a, std::uint32_t b, std::size_t
       }
       const double* s1 = &corner_values_[u1 * 4];
       const double* s2 = &corner_values_[u2 * 4];
+      // A condition that is zero at two corners of the triangle (a box bound on a
+      // sample plane, a limit equal to two samples) has the lattice edge between them as
+      // its zero line there: the meeting point is the other condition's crossing on that
+      // edge, computed as every cell sharing the edge computes it (solving the system
+      // below gives the same point up to rounding, which would open a crack).
+      for (const auto& [zero, other] : {std::pair{s1, s2}, std::pair{s2, s1}}) {
+        for (int i = 0; i < 3; ++i) {
+          const int p = k[i == 2 ? 0 : i], q = k[i == 2 ? 2 : i + 1], r = k[i == 0 ? 2 : i == 1 ? 0 : 1];
+          if (zero[p] != 0.0 || zero[q] != 0.0 || zero[r] == 0.0) continue;
+          if ((other[p] >= 0) == (other[q] >= 0)) continue;
+          const EdgeCrossing x = edge_crossing(corner_pos_[p], corner_pos_[q], other[p], other[q]);
+          w[p] = 1.0 - x.t;
+          w[q] = x.t;
+          return add_vertex(w, common | new_plane, x.p);
+        }
+      }
       const double a11 = s1[k[1]] - s1[k[0]], a12 = s1[k[2]] - s1[k[0]], b1 = -s1[k[0]];
       const double a21 = s2[k[1]] - s2[k[0]], a22 = s2[k[2]] - s2[k[0]], b2 = -s2[k[0]];
       const double det = a11 * a22 - a12 * a21;
