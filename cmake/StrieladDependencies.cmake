@@ -22,6 +22,9 @@ find_package(spdlog REQUIRED CONFIG)
 find_package(fmt REQUIRED CONFIG)
 find_package(CLI11 REQUIRED CONFIG)
 find_package(nlohmann_json REQUIRED CONFIG)
+# PROJ 9.1 (libproj-dev): grid mappings (rotated poles, Lambert, polar stereographic ...)
+# placed by pipelines built from their CF attributes (lib/geo/grid_projection.cpp).
+find_package(PROJ CONFIG REQUIRED)
 # GDAL 3.6 (libgdal-dev): terrain from GeoTIFF and any other raster format, drape images
 # (lib/geo/gdal_raster.cpp). Only its C API is used.
 find_package(GDAL CONFIG REQUIRED)

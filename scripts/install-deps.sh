@@ -7,14 +7,14 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build pkg-config
   libhdf5-dev libnetcdf-dev netcdf-bin libgdal-dev libblosc-dev libzstd-dev libxxhash-dev libfpzip-dev
-  libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libtbb-dev
+  libproj-dev libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libtbb-dev
   libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev libvtk9-dev
   libgtest-dev libgmock-dev
   libopenmpi-dev openmpi-bin
   libglfw3-dev libepoxy-dev libimgui-dev libstb-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
 )
 if [[ "${1:-}" == "--tests" ]]; then
-  packages+=(libncarg-data slurm-wlm munge xvfb xauth gnuplot-nox)
+  packages+=(libncarg-data proj-bin slurm-wlm munge xvfb xauth gnuplot-nox)
 fi
 
 missing=()

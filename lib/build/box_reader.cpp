@@ -6,7 +6,9 @@
 #include <netcdf_filter.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <cstring>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -33,6 +35,9 @@ struct BoxReader::Impl {
   std::unique_ptr<ingest::Hdf5PlaneLayout> planes;
   int prefetch_fd = -1;
   Dims3 dims{};
+  // Samples per row in the file when the catalog repeats the first meridian at the end
+  // (column source_nx of a box is column 0 of the file); 0 otherwise.
+  std::size_t repeated_from = 0;
   // Raw samples of the last read; grown on demand, never zero-filled (netCDF fills it).
   std::unique_ptr<std::byte[]> buffer;
   std::size_t buffer_size = 0;
@@ -90,9 +95,10 @@ BoxReader::BoxReader(const ingest::InputCatalog& catalog, const ingest::ScanOpti
   m.time_index = loc.time_in_file;
   m.nan_as_fill = scan.nan_as_fill;
 
+  if (catalog.repeats_first_column()) m.repeated_from = catalog.source_nx;
   std::lock_guard lock(ingest::netcdf_mutex());
   try {
-    open_variable(m, catalog.dims());
+    open_variable(m, catalog.as_in_files().dims());
   } catch (...) {
     m.file = ingest::NcFile();  // closed under the lock
     throw;
@@ -149,8 +155,13 @@ void BoxReader::open_variable(Impl& m, Dims3 dims) {
   }
 }
 
-std::vector<ingest::FileRange> BoxReader::prefetch_ranges(const IndexBox& box) const {
+std::vector<ingest::FileRange> BoxReader::prefetch_ranges(const IndexBox& requested) const {
   const Impl& m = *impl_;
+  IndexBox box = requested;  // the repeated meridian is the file's first column: not prefetched
+  if (m.repeated_from != 0 && box.hi[0] >= m.repeated_from) {
+    if (box.lo[0] >= m.repeated_from) return {};
+    box.hi[0] = m.repeated_from - 1;
+  }
   std::vector<ingest::FileRange> out;
   if (m.prefetch_fd < 0) return out;
   const std::uint64_t sample = ingest::nc_type_size(m.attrs.type);
@@ -208,7 +219,51 @@ void BoxReader::Impl::read(const IndexBox& box, std::span<Out> out) {
   convert_any<Out>(buffer.get(), attrs, nan_as_fill, out);
 }
 
-void BoxReader::read(const IndexBox& box, std::span<float> out) { impl_->read(box, out); }
-void BoxReader::read(const IndexBox& box, std::span<double> out) { impl_->read(box, out); }
+namespace {
+
+// A box reaching the repeated meridian (column `repeated`, the file's column 0): the part
+// before it, and that column read from column 0, interleaved row by row.
+template <typename Out, typename ReadFn>
+void read_with_repeated_column(const IndexBox& box, std::size_t repeated, std::span<Out> out,
+                               ReadFn read) {
+  const std::size_t rows = box.extent(1) * box.extent(2);
+  IndexBox column = box;
+  column.lo[0] = column.hi[0] = 0;
+  std::vector<Out> first(rows);
+  read(column, std::span<Out>(first));
+  const std::size_t width = box.extent(0);
+  if (box.lo[0] == repeated) {  // only the repeated column
+    std::copy(first.begin(), first.end(), out.begin());
+    return;
+  }
+  IndexBox before = box;
+  before.hi[0] = repeated - 1;
+  read(before, out.first(rows * (width - 1)));
+  for (std::size_t r = rows; r-- > 0;) {
+    Out* row = out.data() + r * width;
+    std::memmove(row, out.data() + r * (width - 1), (width - 1) * sizeof(Out));
+    row[width - 1] = first[r];
+  }
+}
+
+}  // namespace
+
+template <typename Out>
+void BoxReader::read_any(const IndexBox& box, std::span<Out> out) {
+  Impl& m = *impl_;
+  if (m.repeated_from == 0 || box.hi[0] < m.repeated_from) {
+    m.read(box, out);
+    return;
+  }
+  if (out.size() != box.count()) {
+    throw make_error(ErrorCode::kInternal, "box reader: {} samples for a box of {}", out.size(),
+                     box.count());
+  }
+  read_with_repeated_column(box, m.repeated_from, out,
+                            [&](const IndexBox& b, std::span<Out> o) { m.read(b, o); });
+}
+
+void BoxReader::read(const IndexBox& box, std::span<float> out) { read_any(box, out); }
+void BoxReader::read(const IndexBox& box, std::span<double> out) { read_any(box, out); }
 
 }  // namespace strielad::build

@@ -48,6 +48,9 @@ class BoxReader {
   void read(const IndexBox& box, std::span<double> out);
 
  private:
+  template <typename Out>
+  void read_any(const IndexBox& box, std::span<Out> out);
+
   struct Impl;
   static void open_variable(Impl& impl, Dims3 dims);  // caller holds netcdf_mutex()
   std::unique_ptr<Impl> impl_;

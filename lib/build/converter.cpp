@@ -163,6 +163,7 @@ format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOp
   m.x = catalog.x;
   m.y = catalog.y;
   m.z = catalog.z;
+  m.grid_mapping = catalog.grid_mapping;
   m.time = catalog.time;
   for (const auto& v : catalog.variables) {
     m.variables.push_back(format::StoreVariable{v.name, v.units, v.long_name, v.standard_name,
@@ -239,7 +240,7 @@ format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOp
   for (std::size_t v = 0; v < codecs.size(); ++v) {
     if (!(codecs[v] == m.codec)) m.variables[v].codec = codecs[v];
   }
-  m.format_version = format::version_for_codecs(m);
+  m.format_version = format::version_for_plan(m);
   m.store_id = format::compute_store_id(m);
   return m;
 }

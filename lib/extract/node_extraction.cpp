@@ -2,11 +2,14 @@
 #include "extract/node_extraction.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <map>
 
 #include "core/error.h"
+#include "grid/longitude_turns.h"
 #include "extract/node_extractor.h"
 #include "extract/slice_extraction.h"
 #include "store/brick_cache.h"
@@ -65,11 +68,19 @@ bool disjoint(const std::vector<double>& coords, const AxisRange& range) {
   return range.hi < lo || range.lo > hi;
 }
 
-// What extraction of one sub-volume needs: the limits that may cut the node.
+// What extraction of one sub-volume needs: the limits that may cut the node, and on a
+// longitude x axis the whole turns at which its longitude range meets the node
+// (grid/longitude_turns.h; {0} otherwise).
 struct SubVolumePlan {
   std::size_t subvolume;
   std::vector<ResolvedLimit> limits;
+  std::vector<int> turns{0};
 };
+
+bool bounded(const AxisRange& r) {
+  return r.lo != -std::numeric_limits<double>::infinity() ||
+         r.hi != std::numeric_limits<double>::infinity();
+}
 
 // Decides per sub-volume from the index and the geometry alone: fills the skipped
 // results' outcome and reason, returns the plans of the others.
@@ -84,14 +95,19 @@ std::vector<SubVolumePlan> plan_subvolumes(const Store& store, const ResolvedSce
     const ResolvedSubVolume& sv = scene.subvolumes[i];
     SubVolumeResult& r = results[i];
     r.subvolume_id = sv.id;
+    SubVolumePlan plan{i, {}};
+    const bool wraps = m.x.kind == AxisKind::kLongitude && bounded(sv.box[0]);
+    if (wraps) {
+      const auto& x = geometry.coords[0];
+      plan.turns = longitude_turns(sv.box[0].lo, sv.box[0].hi, x.front(), x.back());
+    }
     for (int a = 0; a < 3 && r.reason.empty(); ++a) {
-      if (disjoint(geometry.coords[a], sv.box[a])) {
+      if (a == 0 ? plan.turns.empty() : disjoint(geometry.coords[a], sv.box[a])) {
         r.outcome = NodeOutcome::kSkippedDomain;
         r.reason = fmt::format("{} range [{}, {}] misses the node", axis_names[a], sv.box[a].lo,
                                sv.box[a].hi);
       }
     }
-    SubVolumePlan plan{i, {}};
     for (const ResolvedLimit& limit : sv.limits) {
       if (!r.reason.empty()) break;
       const format::IndexEntry& e = store.node_entry(step, limit.variable, node);
@@ -179,6 +195,52 @@ class FieldBuffers {
   }
   NodeSamples& ns_;
 };
+
+// On a periodic longitude axis the faces on the grid's first and last meridian are the
+// seam: where the node's part of the longitude range goes on across it, the node across
+// the seam holds the rest and the faces are shared (node-boundary); where it does not
+// (no range, or one ending there) they are the region's edge in this frame (grid-edge).
+void seam_faces(const NodeGeometry& geometry, const std::array<double, 2>& range,
+                std::array<bool, 6>& grid_edge) {
+  const auto& x = geometry.coords[0];
+  const double lo = std::min(x.front(), x.back()), hi = std::max(x.front(), x.back());
+  const bool ascending = x.back() >= x.front();
+  // Sides 0 and 1 are the node's first and last sample along x.
+  for (int side = 0; side < 2; ++side) {
+    if (!geometry.grid_edge[side]) continue;
+    const bool at_low_end = (side == 0) == ascending;
+    const bool beyond = at_low_end ? range[0] < lo : range[1] > hi;
+    grid_edge[side] = !(beyond && std::isfinite(range[0]) && std::isfinite(range[1]));
+  }
+}
+
+// `piece` appended to `mesh` (vertices, triangles, face kinds, normals, attributes).
+void append_mesh(Mesh& mesh, Mesh piece) {
+  if (mesh.positions.empty()) {
+    mesh = std::move(piece);
+    return;
+  }
+  const auto offset = static_cast<std::uint32_t>(mesh.positions.size());
+  mesh.positions.insert(mesh.positions.end(), piece.positions.begin(), piece.positions.end());
+  mesh.normals.insert(mesh.normals.end(), piece.normals.begin(), piece.normals.end());
+  for (const auto& t : piece.triangles) mesh.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  mesh.face_kinds.insert(mesh.face_kinds.end(), piece.face_kinds.begin(), piece.face_kinds.end());
+  for (std::size_t a = 0; a < mesh.attributes.size() && a < piece.attributes.size(); ++a) {
+    mesh.attributes[a].insert(mesh.attributes[a].end(), piece.attributes[a].begin(),
+                              piece.attributes[a].end());
+  }
+}
+
+void add_stats(ExtractStats& total, const ExtractStats& s) {
+  total.cells += s.cells;
+  total.inside_cells += s.inside_cells;
+  total.cut_cells += s.cut_cells;
+  total.table_cells += s.table_cells;
+  total.simple_tets += s.simple_tets;
+  total.clipped_tets += s.clipped_tets;
+  total.conditions = std::max(total.conditions, s.conditions);
+  total.empty_by_condition = total.empty_by_condition || s.empty_by_condition;
+}
 
 }  // namespace
 
@@ -268,11 +330,23 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
     for (const ResolvedLimit& limit : plan.limits) {
       request.limits.push_back({field(limit.variable), limit.min, limit.max});
     }
-    for (int a = 0; a < 3; ++a) request.box[a] = {sv.box[a].lo, sv.box[a].hi};
     request.attribute_fields = attribute_fields;
     request.attribute_names = attribute_names;
     SubVolumeResult& r = out.results[plan.subvolume];
-    r.mesh = extract_node_mesh(ns, request, &r.stats);
+    for (const int turn : plan.turns) {
+      const double shift = kFullTurn * turn;
+      for (int a = 0; a < 3; ++a) request.box[a] = {sv.box[a].lo, sv.box[a].hi};
+      request.box[0] = {sv.box[0].lo - shift, sv.box[0].hi - shift};
+      ns.grid_edge = geometry.grid_edge;
+      if (m.x.periodic) seam_faces(geometry, request.box[0], ns.grid_edge);
+      ExtractStats stats;
+      Mesh piece = extract_node_mesh(ns, request, &stats);
+      for (auto& p : piece.positions) p[0] += shift;
+      append_mesh(r.mesh, std::move(piece));
+      add_stats(r.stats, stats);
+    }
+    r.mesh.subvolume_id = sv.id;
+    r.mesh.attribute_names = attribute_names;
     r.outcome = r.mesh.empty() ? NodeOutcome::kEmpty : NodeOutcome::kMesh;
   }
   for (const std::size_t i : slice_plans) {

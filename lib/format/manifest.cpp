@@ -45,16 +45,33 @@ std::optional<double> get_optional(const json& j, std::string_view key, std::str
 }
 
 json axis_json(const Axis& a) {
-  return json{{"name", a.name},         {"kind", std::string(axis_kind_name(a.kind))},
-              {"units", a.units},       {"standard_name", a.standard_name},
-              {"long_name", a.long_name}, {"positive", a.positive},
-              {"values", a.values}};
+  json j{{"name", a.name},         {"kind", std::string(axis_kind_name(a.kind))},
+         {"units", a.units},       {"standard_name", a.standard_name},
+         {"long_name", a.long_name}, {"positive", a.positive},
+         {"values", a.values}};
+  if (a.periodic) j["periodic"] = true;  // version 4
+  return j;
 }
 
-Axis axis_from_json(const json& j, std::string_view what) {
+bool is_projection_kind(AxisKind kind) {
+  return kind == AxisKind::kProjectionX || kind == AxisKind::kProjectionY;
+}
+
+Axis axis_from_json(const json& j, std::string_view what, std::uint32_t version) {
   Axis a;
   a.name = get<std::string>(j, "name", what);
   a.kind = axis_kind_from_name(get<std::string>(j, "kind", what));
+  if (is_projection_kind(a.kind) && version < kManifestVersionGeoreference) {
+    throw make_error(ErrorCode::kCorrupt, "{}: axis kind '{}' needs format version {} (this is {})",
+                     what, axis_kind_name(a.kind), kManifestVersionGeoreference, version);
+  }
+  if (const auto it = j.find("periodic"); it != j.end()) {
+    if (version < kManifestVersionGeoreference) {
+      throw make_error(ErrorCode::kCorrupt, "{}: key 'periodic' needs format version {} (this is {})",
+                       what, kManifestVersionGeoreference, version);
+    }
+    a.periodic = get<bool>(j, "periodic", what);
+  }
   a.units = get<std::string>(j, "units", what);
   a.standard_name = get<std::string>(j, "standard_name", what);
   a.long_name = get<std::string>(j, "long_name", what);
@@ -164,6 +181,15 @@ std::uint32_t version_for_codecs(const Manifest& m) {
   return fpzip ? kManifestVersionFpzip : kManifestVersionPredictors;
 }
 
+bool needs_georeference_version(const Manifest& m) {
+  return m.grid_mapping.has_value() || m.x.periodic || is_projection_kind(m.x.kind) ||
+         is_projection_kind(m.y.kind);
+}
+
+std::uint32_t version_for_plan(const Manifest& m) {
+  return needs_georeference_version(m) ? kManifestVersionGeoreference : version_for_codecs(m);
+}
+
 std::string step_file_name(std::uint32_t step) { return fmt::format("steps/step-{:06d}.bricks", step); }
 
 json manifest_plan_json(const Manifest& m) {
@@ -181,10 +207,18 @@ json manifest_plan_json(const Manifest& m) {
                        version);
     }
   }
-  if ((version >= kManifestVersionFpzip) != (version_for_codecs(m) >= kManifestVersionFpzip)) {
+  if (version < kManifestVersionGeoreference &&
+      (version >= kManifestVersionFpzip) != (version_for_codecs(m) >= kManifestVersionFpzip)) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "a version {} manifest {} codecs with fpzip (version {} is for those)", version,
                      version < kManifestVersionFpzip ? "cannot hold" : "needs", kManifestVersionFpzip);
+  }
+  if ((version >= kManifestVersionGeoreference) != needs_georeference_version(m)) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "a version {} manifest {} a grid mapping, projection axes or a periodic "
+                     "longitude (version {} is for those)",
+                     version, version < kManifestVersionGeoreference ? "cannot hold" : "needs",
+                     kManifestVersionGeoreference);
   }
   json vars = json::array();
   for (const StoreVariable& v : m.variables) {
@@ -212,10 +246,17 @@ json manifest_plan_json(const Manifest& m) {
         json{{"path", s.path}, {"size", s.size}, {"header_checksum", hex64(s.header_checksum)}});
   }
   const OctreeLayout layout(m.dims(), m.brick);
+  json grid{{"x", axis_json(m.x)}, {"y", axis_json(m.y)}, {"z", axis_json(m.z)}};
+  if (m.grid_mapping) {
+    grid["mapping"] = json{{"variable", m.grid_mapping->variable},
+                           {"grid_mapping_name", m.grid_mapping->name},
+                           {"attributes", m.grid_mapping->attributes},
+                           {"proj", m.grid_mapping->proj}};
+  }
   return json{
       {"format", "strielad-store"},
       {"format_version", version},
-      {"grid", json{{"x", axis_json(m.x)}, {"y", axis_json(m.y)}, {"z", axis_json(m.z)}}},
+      {"grid", std::move(grid)},
       {"time", json{{"name", m.time.name},
                     {"units", m.time.units},
                     {"calendar", m.time.calendar},
@@ -271,9 +312,34 @@ Manifest manifest_from_json(const json& j, std::string_view what) {
   }
   m.complete = state == "complete";
   const json& grid = get<json>(j, "grid", what);
-  m.x = axis_from_json(get<json>(grid, "x", what), fmt::format("{}: grid.x", what));
-  m.y = axis_from_json(get<json>(grid, "y", what), fmt::format("{}: grid.y", what));
-  m.z = axis_from_json(get<json>(grid, "z", what), fmt::format("{}: grid.z", what));
+  m.x = axis_from_json(get<json>(grid, "x", what), fmt::format("{}: grid.x", what), version);
+  m.y = axis_from_json(get<json>(grid, "y", what), fmt::format("{}: grid.y", what), version);
+  m.z = axis_from_json(get<json>(grid, "z", what), fmt::format("{}: grid.z", what), version);
+  if (m.y.periodic || m.z.periodic) {
+    throw make_error(ErrorCode::kCorrupt, "{}: only the x axis can be periodic", what);
+  }
+  if (const auto it = grid.find("mapping"); it != grid.end()) {
+    const std::string where = fmt::format("{}: grid.mapping", what);
+    if (version < kManifestVersionGeoreference) {
+      throw make_error(ErrorCode::kCorrupt, "{}: needs format version {} (this is {})", where,
+                       kManifestVersionGeoreference, version);
+    }
+    GridMapping gm;
+    gm.variable = get<std::string>(*it, "variable", where);
+    gm.name = get<std::string>(*it, "grid_mapping_name", where);
+    gm.attributes = get<json>(*it, "attributes", where);
+    if (!gm.attributes.is_object()) {
+      throw make_error(ErrorCode::kCorrupt, "{}: key 'attributes' is not an object", where);
+    }
+    gm.proj = get<std::string>(*it, "proj", where);
+    m.grid_mapping = std::move(gm);
+  }
+  if ((m.x.kind == AxisKind::kProjectionX) != (m.y.kind == AxisKind::kProjectionY) ||
+      (m.grid_mapping && !m.grid_mapping->proj.empty() && m.x.kind != AxisKind::kProjectionX)) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: axes x '{}' ({}) and y '{}' ({}) do not match the grid mapping", what,
+                     m.x.name, axis_kind_name(m.x.kind), m.y.name, axis_kind_name(m.y.kind));
+  }
   const json& time = get<json>(j, "time", what);
   m.time.name = get<std::string>(time, "name", what);
   m.time.units = get<std::string>(time, "units", what);
@@ -309,7 +375,13 @@ Manifest manifest_from_json(const json& j, std::string_view what) {
   m.brick = get<std::uint32_t>(octree, "brick", what);
   m.codec = codec_from_json(get<json>(j, "codec", what), version, what);
   m.nan_as_fill = get<bool>(j, "nan_as_fill", what);
-  if (version >= kManifestVersionFpzip && version_for_codecs(m) < kManifestVersionFpzip) {
+  if (version >= kManifestVersionGeoreference && !needs_georeference_version(m)) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: format version {} but the grid has no grid mapping, projection axis or "
+                     "periodic longitude (a writer uses version {} or below then)",
+                     what, version, kManifestVersionFpzip);
+  }
+  if (version == kManifestVersionFpzip && version_for_codecs(m) < kManifestVersionFpzip) {
     throw make_error(ErrorCode::kCorrupt,
                      "{}: format version {} but no codec has 'fpzip' (a writer uses version {} then)",
                      what, version, kManifestVersionPredictors);

@@ -13,16 +13,20 @@
 #include <vector>
 
 #include "grid/axis.h"
+#include "grid/grid_mapping.h"
 
 namespace strielad::format {
 
-// Manifest versions this code reads (1 to 3) and writes (2, or 3 when a codec has fpzip):
-// formats/store.md.
-inline constexpr std::uint32_t kManifestFormatVersion = 3;
+// Manifest versions this code reads (1 to 4) and writes (2; 3 when a codec has fpzip; 4
+// when the grid is placed by a grid mapping or goes round the Earth): formats/store.md.
+inline constexpr std::uint32_t kManifestFormatVersion = 4;
 // The first version with predictors and per-variable codecs.
 inline constexpr std::uint32_t kManifestVersionPredictors = 2;
 // The first version with fpzip chunks (CodecSpec::fpzip, IndexEntry::coding).
 inline constexpr std::uint32_t kManifestVersionFpzip = 3;
+// The first version with georeferencing: a grid mapping (Manifest::grid_mapping),
+// projection axis kinds and periodic longitude axes (Axis::periodic).
+inline constexpr std::uint32_t kManifestVersionGeoreference = 4;
 
 // Predictors (formats/store.md, "Predictors").
 inline constexpr std::string_view kPredictorNone = "none";
@@ -80,6 +84,9 @@ struct Manifest {
   std::uint64_t store_id = 0;
   bool complete = false;
   Axis x, y, z;
+  // How x and y are placed on the Earth when they are map-projection coordinates
+  // (format version 4); absent for longitude/latitude axes and for Cartesian grids.
+  std::optional<GridMapping> grid_mapping;
   TimeAxis time;
   std::vector<StoreVariable> variables;
   std::uint32_t brick = 24;
@@ -101,6 +108,10 @@ struct Manifest {
 
 // The version a new plan with these codecs is written as: 3 when any has fpzip, else 2.
 std::uint32_t version_for_codecs(const Manifest& manifest);
+// Whether the plan needs version 4: a grid mapping, a projection axis or a periodic axis.
+bool needs_georeference_version(const Manifest& manifest);
+// The version a new plan is written as: 4 when it needs it, else version_for_codecs.
+std::uint32_t version_for_plan(const Manifest& manifest);
 
 // Path of a step file relative to the store directory: "steps/step-000042.bricks".
 std::string step_file_name(std::uint32_t step);

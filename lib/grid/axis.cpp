@@ -15,13 +15,16 @@ std::string_view axis_kind_name(AxisKind kind) noexcept {
     case AxisKind::kPressure: return "pressure";
     case AxisKind::kModelLevel: return "model_level";
     case AxisKind::kOther: return "other";
+    case AxisKind::kProjectionX: return "projection_x";
+    case AxisKind::kProjectionY: return "projection_y";
   }
   return "other";
 }
 
 AxisKind axis_kind_from_name(std::string_view name) {
   for (AxisKind k : {AxisKind::kLongitude, AxisKind::kLatitude, AxisKind::kHeight,
-                     AxisKind::kPressure, AxisKind::kModelLevel, AxisKind::kOther}) {
+                     AxisKind::kPressure, AxisKind::kModelLevel, AxisKind::kOther,
+                     AxisKind::kProjectionX, AxisKind::kProjectionY}) {
     if (axis_kind_name(k) == name) return k;
   }
   throw make_error(ErrorCode::kCorrupt, "unknown axis kind '{}'", name);
@@ -47,6 +50,28 @@ void check_axis_values(const Axis& axis, std::string_view what) {
                        what, axis.name, i - 1, a, i, b);
     }
   }
+  if (axis.periodic && (axis.kind != AxisKind::kLongitude || !longitudes_repeat_the_first(axis.values))) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: axis '{}' is marked periodic but is not a longitude axis whose last "
+                     "value ({}) is its first ({}) turned once round",
+                     what, axis.name, axis.values.back(), axis.values.front());
+  }
+}
+
+bool longitudes_close_the_circle(const std::vector<double>& values) {
+  const std::size_t n = values.size();
+  if (n < 3) return false;
+  const double span = values.back() - values.front();  // negative when descending
+  const double turn = span > 0 ? 360.0 : -360.0;
+  const double mean = span / static_cast<double>(n - 1);
+  const double gap = values.front() + turn - values.back();
+  return std::fabs(span) < 360.0 && std::fabs(gap - mean) <= 1e-3 * std::fabs(mean);
+}
+
+bool longitudes_repeat_the_first(const std::vector<double>& values) {
+  if (values.size() < 3) return false;
+  // As the converter appends it: the first value plus (or minus) 360, rounded once.
+  return values.back() == values.front() + 360.0 || values.back() == values.front() - 360.0;
 }
 
 namespace {

@@ -17,6 +17,13 @@ enum class AxisKind {
   kPressure,   // Pa, hPa, mbar (positive down)
   kModelLevel, // hybrid or dimensionless vertical coordinate
   kOther,      // a vertical coordinate of unknown meaning, kept as given
+  // Horizontal coordinates of a map projection (store format version 4): the grid's
+  // grid mapping (grid/grid_mapping.h) places them. Rotated-pole grids have them in
+  // degrees (CF grid_longitude, grid_latitude), projected grids in metres or kilometres
+  // (projection_x_coordinate, projection_y_coordinate). Without a grid mapping they are
+  // plain Cartesian coordinates in metres with no place on the Earth.
+  kProjectionX,
+  kProjectionY,
 };
 
 std::string_view axis_kind_name(AxisKind kind) noexcept;
@@ -31,6 +38,11 @@ struct Axis {
   std::string long_name;
   std::string positive;       // "up", "down" or empty
   std::vector<double> values; // strictly monotonic (ascending or descending)
+  // A longitude axis that goes once round the Earth (store format version 4): its last
+  // value is its first plus 360 (minus 360 descending), the same meridian, so the cell
+  // between the source's last and first longitude is a cell like any other
+  // (formats/store.md, "Periodic longitudes").
+  bool periodic = false;
 
   std::size_t size() const { return values.size(); }
   bool descending() const { return values.size() > 1 && values[1] < values[0]; }
@@ -39,8 +51,18 @@ struct Axis {
 };
 
 // Throws kInvalidInput naming `what` and the first offending index when the values are
-// empty, contain NaN/Inf, or are not strictly monotonic.
+// empty, contain NaN/Inf, or are not strictly monotonic, and when a periodic axis is not
+// a longitude whose last value is its first one turned once round (exactly).
 void check_axis_values(const Axis& axis, std::string_view what);
+
+// Whether longitudes `values` (strictly monotonic, at least 3) go round the Earth with
+// the cell that closes the circle missing: the gap from the last value to the first plus
+// 360 (in the axis's direction) is the axis's mean spacing within 0.1 %, as on every
+// regular or Gaussian global grid written without a repeated meridian.
+bool longitudes_close_the_circle(const std::vector<double>& values);
+// Whether they already repeat their first meridian at the end: the last value is the
+// first plus 360 (minus 360 descending), computed in double as written.
+bool longitudes_repeat_the_first(const std::vector<double>& values);
 
 // A longitude axis written wrapped at the antimeridian or at 0/360 (179.5, 180, -179.5 ...;
 // 359, 0, 1 ...): when the values are finite but not strictly monotonic, and become so

@@ -16,6 +16,8 @@
 #include "ingest/cf_attributes.h"
 #include "ingest/cf_axis_detection.h"
 #include "ingest/classic_layout.h"
+#include "ingest/grid_mapping_reader.h"
+#include "ingest/horizontal_axes.h"
 #include "ingest/netcdf_call.h"
 #include "ingest/netcdf_file.h"
 #include "ingest/source_file.h"
@@ -32,7 +34,11 @@ const ScannedVariable* ScannedFile::find(std::string_view name) const {
 namespace {
 
 constexpr std::string_view kRemapAdvice =
-    "only rectilinear lon/lat grids are supported — remap it first (e.g. cdo remapcon)";
+    "only logically rectangular grids are supported — remap it first (e.g. cdo remapcon)";
+constexpr std::string_view kCurvilinearAdvice =
+    "grids placed by 2-D latitude/longitude are not converted yet (a grid_mapping with 1-D "
+    "projection coordinates is) — remap it to a regular or projected grid first (e.g. cdo "
+    "remapbil)";
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -59,6 +65,15 @@ std::string join(const std::vector<std::string>& words, std::string_view sep) {
     out += words[i];
   }
   return out;
+}
+
+// Whether group `grpid` or one of its ancestors has a variable `name`.
+bool variable_in_scope(int grpid, const std::string& name) {
+  for (std::optional<int> g = grpid; g; g = parent_group(*g)) {
+    int varid = -1;
+    if (nc_inq_varid(*g, name.c_str(), &varid) == NC_NOERR) return true;
+  }
+  return false;
 }
 
 bool is_unstructured_dimension_name(std::string_view name) {
@@ -114,14 +129,16 @@ class FileScanner {
                                            const std::vector<int>& dimids,
                                            const std::vector<std::optional<VariableRef>>& coords);
   const std::vector<LonLatVariable>& lonlat_variables(int grpid);
+  std::optional<VariableRef> paired_coordinate(int grpid, int dimid);
   std::optional<LonLatVariable> lonlat_variable(int grpid, const std::string& name);
 
   std::string file_;
   int ncid_;
   std::set<std::string> auxiliary_;
-  std::set<std::string> unwrapped_;  // longitude axes unwrapped (logged once each)
+  std::set<std::string> logged_;  // notes on horizontal axes, logged once each
   std::map<std::pair<int, int>, Coordinate> coordinates_;
   std::map<int, std::vector<LonLatVariable>> lonlat_by_group_;
+  std::map<std::pair<int, int>, std::optional<VariableRef>> paired_;
 };
 
 const Coordinate& FileScanner::coordinate(const VariableRef& ref, bool unlimited) {
@@ -165,6 +182,55 @@ std::optional<LonLatVariable> FileScanner::lonlat_variable(int grpid, const std:
   return std::nullopt;
 }
 
+// A dimension without a coordinate variable of its name, and exactly one 1-D numeric
+// variable over it (in its group or an ancestor) whose axis, standard_name, units or
+// positive attribute says what it is and whose values are strictly monotonic: that
+// variable is the dimension's coordinate (ex01B1_uv300.hs.nc has lon(longitude),
+// lat(latitude), plvl(level)). Logged once per dimension; two candidates, or values that
+// are not monotonic (an unstructured grid's cell longitudes), pair nothing.
+std::optional<VariableRef> FileScanner::paired_coordinate(int grpid, int dimid) {
+  const auto key = std::make_pair(grpid, dimid);
+  if (auto it = paired_.find(key); it != paired_.end()) return it->second;
+  const std::string dim = dimension_name(grpid, dimid);
+  std::vector<VariableRef> found;
+  for (std::optional<int> g = grpid; g; g = parent_group(*g)) {
+    const int nvars = variable_count(*g);
+    for (int v = 0; v < nvars; ++v) {
+      const auto dims = variable_dimids(*g, v);
+      if (dims.size() != 1 || dims[0] != dimid || !is_numeric_type(variable_type(*g, v))) continue;
+      const CoordinateAttributes attrs = read_coordinate_attributes(*g, v);
+      CoordinateAttributes without_name = attrs;
+      without_name.name.clear();
+      if (detect_dimension_role(without_name, false) == DimensionRole::kUnknown) continue;
+      found.push_back(VariableRef{*g, v});
+    }
+  }
+  std::optional<VariableRef> pair;
+  if (found.size() == 1) {
+    Axis a;
+    a.name = variable_name(found[0].grpid, found[0].varid);
+    a.values = read_all_as_double(found[0].grpid, found[0].varid,
+                                  fmt::format("{}: variable '{}'", file_, a.name));
+    std::vector<double> unwrapped = a.values;
+    unwrap_longitudes(unwrapped);
+    a.values = unwrapped;
+    bool monotonic = true;
+    try {
+      check_axis_values(a, file_);
+    } catch (const Error&) {
+      monotonic = false;
+    }
+    if (monotonic) {
+      pair = found[0];
+      spdlog::info("{}: dimension '{}' has no coordinate variable of its name; using '{}', the "
+                   "only 1-D variable over it that says what it is (rename it to '{}' to make "
+                   "this explicit: ncrename -v {},{})",
+                   file_, dim, a.name, dim, a.name, dim);
+    }
+  }
+  return paired_.emplace(key, pair).first->second;
+}
+
 std::optional<Error> FileScanner::detect_unstructured(
     int grpid, int varid, const std::string& name, const std::vector<int>& dimids,
     const std::vector<std::optional<VariableRef>>& coords) {
@@ -180,13 +246,21 @@ std::optional<Error> FileScanner::detect_unstructured(
     if (!coords[i]) return true;
     const auto attrs = read_coordinate_attributes(coords[i]->grpid, coords[i]->varid);
     const std::string sn = lower(attrs.standard_name);
+    const std::string axis = lower(attrs.axis);
     return !(looks_like_longitude(attrs) || looks_like_latitude(attrs) ||
-             sn == "grid_longitude" || sn == "grid_latitude");
+             sn == "grid_longitude" || sn == "grid_latitude" ||
+             sn == "projection_x_coordinate" || sn == "projection_y_coordinate" || axis == "x" ||
+             axis == "y");
   };
 
   std::vector<LonLatVariable> candidates;
+  std::vector<std::string> absent;  // named by `coordinates` but not in the file
   for (const auto& word : split_words(text_attribute_or_empty(grpid, varid, "coordinates"))) {
-    if (auto v = lonlat_variable(grpid, word)) candidates.push_back(*v);
+    if (auto v = lonlat_variable(grpid, word)) {
+      candidates.push_back(*v);
+    } else if (!variable_in_scope(grpid, word)) {
+      absent.push_back(word);
+    }
   }
   if (candidates.empty()) {
     for (std::optional<int> g = grpid; g; g = parent_group(*g)) {
@@ -209,6 +283,25 @@ std::optional<Error> FileScanner::detect_unstructured(
                         "{}: variable '{}' is on an unstructured grid (dimension '{}'{}); {}",
                         file_, name, dim, coordinates, kRemapAdvice);
     }
+  }
+  // Horizontal dimensions without coordinate variables whose positions the `coordinates`
+  // attribute promises in variables the file does not hold (NCL's GRIB conversions name
+  // 2-D gridlat_N/gridlon_N that may have been left out): a curvilinear grid without its
+  // coordinates.
+  std::vector<std::string> bare;
+  for (std::size_t i = 0; i < dimids.size(); ++i) {
+    if (!coords[i]) bare.push_back(fmt::format("'{}'", dimension_name(grpid, dimids[i])));
+  }
+  const bool names_lonlat = std::any_of(absent.begin(), absent.end(), [](const std::string& w) {
+    const std::string l = lower(w);
+    return l.find("lat") != std::string::npos || l.find("lon") != std::string::npos;
+  });
+  if (bare.size() >= 2 && names_lonlat) {
+    return make_error(ErrorCode::kUnsupported,
+                      "{}: variable '{}' is on a curvilinear grid: dimensions {} have no "
+                      "coordinate variables, and its coordinates attribute names {}, which the "
+                      "file does not contain; {}",
+                      file_, name, join(bare, ", "), join(absent, " "), kCurvilinearAdvice);
   }
   // Curvilinear: 2D lon/lat variables over dimensions of this variable that are not
   // themselves longitude and latitude.
@@ -234,7 +327,7 @@ std::optional<Error> FileScanner::detect_unstructured(
     return make_error(ErrorCode::kUnsupported,
                       "{}: variable '{}' is on a curvilinear grid (dimensions {}, 2D coordinates "
                       "{}); {}",
-                      file_, name, join(dim_names, ", "), join(names, " "), kRemapAdvice);
+                      file_, name, join(dim_names, ", "), join(names, " "), kCurvilinearAdvice);
   }
   return std::nullopt;
 }
@@ -276,6 +369,7 @@ ScannedVariable FileScanner::scan_variable(int grpid, int varid, const std::stri
   std::vector<std::string> missing;
   for (std::size_t i = 0; i < dimids.size(); ++i) {
     coords.push_back(find_coordinate_variable(grpid, dimids[i]));
+    if (!coords.back()) coords.back() = paired_coordinate(grpid, dimids[i]);
     if (!coords.back()) missing.push_back(sv.dimensions[i]);
   }
   if (auto e = detect_unstructured(grpid, varid, sv.name, dimids, coords)) {
@@ -372,16 +466,18 @@ ScannedVariable FileScanner::scan_variable(int grpid, int varid, const std::stri
     sv.z = make_axis(first_spatial, AxisKind::kOther);
     sv.y = make_axis(first_spatial + 1, AxisKind::kLatitude);
     sv.x = make_axis(first_spatial + 2, AxisKind::kLongitude);
-    // A longitude axis wrapped at the antimeridian (or 0/360) is made continuous.
-    const std::vector<double> stored = sv.x.values;
-    if (unwrap_longitudes(sv.x.values) && unwrapped_.insert(sv.x.name).second) {
-      std::size_t jump = 1;
-      while (jump + 1 < stored.size() && std::abs(stored[jump] - stored[jump - 1]) <= 180) ++jump;
-      spdlog::info("{}: longitude axis '{}' wraps around ({} then {} at index {}); unwrapped to "
-                   "{} .. {}",
-                   file_, sv.x.name, stored[jump - 1], stored[jump], jump, sv.x.values.front(),
-                   sv.x.values.back());
+    const std::string what = fmt::format("{}: variable '{}'", file_, sv.name);
+    // Longitude and latitude, or projection coordinates placed by a grid mapping; a
+    // wrapped longitude axis is made continuous, one round the Earth periodic.
+    HorizontalAxes horizontal =
+        place_horizontal_axes(sv.x, sv.y, read_grid_mapping(grpid, varid, what), what);
+    for (std::string& note : horizontal.notes) {
+      // Once per file and axis, not once per variable: named by the file alone.
+      if (note.compare(0, what.size(), what) == 0) note.replace(0, what.size(), file_);
+      if (logged_.insert(note).second) spdlog::info("{}", note);
     }
+    sv.grid_mapping = std::move(horizontal.mapping);
+    sv.source_nx = horizontal.source_nx;
     for (const Axis* a : {&sv.x, &sv.y, &sv.z}) check_axis_values(*a, file_);
     if (roles.size() == 4) {
       const Coordinate& c = coordinate(*coords[0], false);

@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "grid/axis.h"
+#include "grid/grid_mapping.h"
 #include "ingest/input_catalog.h"
 #include "ingest/variable_meta.h"
 
@@ -39,6 +40,9 @@ struct ScannedVariable {
   std::vector<std::string> dimensions;
   // kGrid3D only:
   Axis x, y, z;
+  std::optional<GridMapping> grid_mapping;  // with its PROJ pipeline (ingest/horizontal_axes.h)
+  std::size_t source_nx = 0;  // samples per row in the file (x.size() - 1 when the first
+                              // meridian of a periodic longitude axis was appended)
   std::optional<TimeCoordinate> time;  // absent: the variable has no time dimension
   VariableMeta meta;
   CfValueAttributes value_attributes;

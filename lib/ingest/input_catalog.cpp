@@ -96,6 +96,16 @@ void check_same_attributes(const ScannedVariable& got, const std::string& got_fi
 
 }  // namespace
 
+InputCatalog InputCatalog::as_in_files() const {
+  InputCatalog c = *this;
+  if (repeats_first_column()) {
+    c.x.values.pop_back();
+    c.x.periodic = false;
+  }
+  c.source_nx = c.x.size();
+  return c;
+}
+
 std::size_t InputCatalog::variable_index(std::string_view name) const {
   std::string_view n = name;
   while (!n.empty() && n.front() == '/') n.remove_prefix(1);
@@ -161,12 +171,32 @@ InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
       check_same_attributes(a, file_name(occ.file), b, file_name(first.file));
     }
   }
+  // One placement: the same grid mapping (or none) for every variable in every file.
+  for (std::size_t v = 0; v < names.size(); ++v) {
+    for (const Occurrence& occ : occurrences[v]) {
+      const ScannedVariable& a = *occ.variable;
+      const ScannedVariable& r = *reference.variable;
+      if (a.grid_mapping == r.grid_mapping) continue;
+      auto describe = [](const ScannedVariable& x) {
+        return x.grid_mapping ? fmt::format("grid mapping '{}' ({})", x.grid_mapping->variable,
+                                            x.grid_mapping->name)
+                              : std::string("no grid mapping");
+      };
+      throw make_error(ErrorCode::kInvalidInput,
+                       "{}: variable '{}' has {} but variable '{}' in {} has {}{}",
+                       file_name(occ.file), a.name, describe(a), r.name, file_name(reference.file),
+                       describe(r),
+                       a.grid_mapping && r.grid_mapping ? " (their attributes differ)" : "");
+    }
+  }
 
   InputCatalog catalog;
   for (const auto& f : files) catalog.files.push_back(f.source);
   catalog.x = reference.variable->x;
   catalog.y = reference.variable->y;
   catalog.z = reference.variable->z;
+  catalog.grid_mapping = reference.variable->grid_mapping;
+  catalog.source_nx = reference.variable->source_nx;
   for (std::size_t v = 0; v < names.size(); ++v) {
     catalog.variables.push_back(occurrences[v][0].variable->meta);
   }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "grid/axis.h"
+#include "grid/grid_mapping.h"
 
 namespace strielad::ingest {
 
@@ -56,6 +57,14 @@ struct VariableLocation {
 struct InputCatalog {
   std::vector<SourceFile> files;
   Axis x, y, z;    // longitude, latitude, vertical: as stored (ascending or descending)
+  std::optional<GridMapping> grid_mapping;  // x/y are projection coordinates placed by it
+  // Samples per row in the files: x.size() (or 0, meaning the same), or x.size() - 1
+  // when x is a periodic longitude axis whose first meridian the catalog repeats at the
+  // end (SlabReader and BoxReader copy the first column there).
+  std::size_t source_nx = 0;
+  bool repeats_first_column() const { return source_nx != 0 && source_nx + 1 == x.size(); }
+  // The catalog as the files hold it: without the repeated meridian.
+  InputCatalog as_in_files() const;
   TimeAxis time;   // merged, ascending, selected steps only
   std::vector<VariableMeta> variables;
   // locations[v][t]: where variable v at time step t lives.
@@ -106,8 +115,13 @@ class SlabReader {
   std::uint64_t direct_bytes() const;
 
  private:
+  template <typename T>
+  void read_any(std::size_t variable, std::size_t step, std::size_t z0, std::size_t z1,
+                std::span<T> out);
+
   struct Impl;
   Impl* impl_;
+  bool repeat_first_column_ = false;  // the catalog repeats the first meridian at the end
 };
 
 }  // namespace strielad::ingest

@@ -377,7 +377,8 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
 }
 
 SlabReader::SlabReader(const InputCatalog& catalog, const ScanOptions& options)
-    : impl_(new Impl{catalog, options, {}, 0}) {
+    : impl_(new Impl{catalog.as_in_files(), options, {}, 0}),
+      repeat_first_column_(catalog.repeats_first_column()) {
   for (std::size_t v = 0; v < catalog.variables.size(); ++v) {
     if (v >= catalog.locations.size() || catalog.locations[v].size() != catalog.time.size()) {
       delete impl_;
@@ -397,14 +398,49 @@ SlabReader::~SlabReader() {
   delete impl_;
 }
 
+namespace {
+
+// Rows of `nx` samples at the start of `out` spread to rows of nx + 1 whose last sample
+// repeats their first (a periodic longitude axis's repeated meridian), in place from the
+// last row down.
+template <typename T>
+void repeat_first_column(std::span<T> out, std::size_t nx) {
+  const std::size_t rows = out.size() / (nx + 1);
+  for (std::size_t r = rows; r-- > 0;) {
+    T* row = out.data() + r * (nx + 1);
+    std::memmove(row, out.data() + r * nx, nx * sizeof(T));
+    row[nx] = row[0];
+  }
+}
+
+}  // namespace
+
+template <typename T>
+void SlabReader::read_any(std::size_t variable, std::size_t step, std::size_t z0, std::size_t z1,
+                          std::span<T> out) {
+  if (!repeat_first_column_) {
+    impl_->read(variable, step, z0, z1, out);
+    return;
+  }
+  const Dims3 dims = impl_->catalog.dims();  // as in the files
+  const std::size_t with_repeat = (z1 - z0) * dims.y * (dims.x + 1);
+  if (z0 > z1 || out.size() != with_repeat) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "output holds {} samples but levels [{}, {}) of {} x {} need {}", out.size(),
+                     z0, z1, dims.x + 1, dims.y, with_repeat);
+  }
+  impl_->read(variable, step, z0, z1, out.first((z1 - z0) * dims.y * dims.x));
+  repeat_first_column(out, dims.x);
+}
+
 void SlabReader::read(std::size_t variable, std::size_t step, std::size_t z0, std::size_t z1,
                       std::span<float> out) {
-  impl_->read(variable, step, z0, z1, out);
+  read_any(variable, step, z0, z1, out);
 }
 
 void SlabReader::read(std::size_t variable, std::size_t step, std::size_t z0, std::size_t z1,
                       std::span<double> out) {
-  impl_->read(variable, step, z0, z1, out);
+  read_any(variable, step, z0, z1, out);
 }
 
 }  // namespace strielad::ingest

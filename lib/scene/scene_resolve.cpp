@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "format/manifest.h"
+#include "grid/longitude_turns.h"
 #include "scene/scene.h"
 #include "scene/scene_errors.h"
 
@@ -94,7 +95,20 @@ ResolvedScene resolve_scene(const Scene& scene, const format::Manifest& manifest
       const std::string p = key_path(key_path(path, "domain"), axis_name);
       const std::size_t a = names.axis(axis_name, p);
       const AxisRange e = extent(*axes[a]);
-      if (range.hi < e.lo || range.lo > e.hi) {
+      if (axes[a]->kind == AxisKind::kLongitude) {
+        // Any convention: the range meets the axis at some whole turn (longitude_turns.h);
+        // a full turn or more is the whole axis.
+        if (range.hi - range.lo >= kFullTurn) {
+          r.box[a] = AxisRange{-kInf, kInf};
+          continue;
+        }
+        if (longitude_turns(range.lo, range.hi, e.lo, e.hi).empty()) {
+          fail(ErrorCode::kInvalidInput, what, p,
+               "[{}, {}] selects no longitude of the store's {} axis [{}, {}] (in any "
+               "convention: shifted by any multiple of 360 it stays outside)",
+               range.lo, range.hi, scene_detail::shown(axis_name), e.lo, e.hi);
+        }
+      } else if (range.hi < e.lo || range.lo > e.hi) {
         fail(ErrorCode::kInvalidInput, what, p, "[{}, {}] lies outside the store's {} axis [{}, {}]",
              range.lo, range.hi, scene_detail::shown(axis_name), e.lo, e.hi);
       }
@@ -121,7 +135,12 @@ ResolvedScene resolve_scene(const Scene& scene, const format::Manifest& manifest
     } else {
       const std::size_t a = names.axis(slice.axis, key_path(path, "axis"));
       const AxisRange e = extent(*axes[a]);
-      if (slice.value < e.lo || slice.value > e.hi) {
+      if (axes[a]->kind == AxisKind::kLongitude && (slice.value < e.lo || slice.value > e.hi)) {
+        // A meridian in another convention: the same meridian of the axis, if it has it.
+        const auto turns = longitude_turns(slice.value, slice.value, e.lo, e.hi);
+        if (!turns.empty()) r.value = slice.value - kFullTurn * turns.front();
+      }
+      if (r.value < e.lo || r.value > e.hi) {
         fail(ErrorCode::kInvalidInput, what, key_path(path, "value"),
              "{} lies outside the store's {} axis [{}, {}]", slice.value,
              scene_detail::shown(slice.axis), e.lo, e.hi);
