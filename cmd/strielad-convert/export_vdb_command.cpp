@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "geo/time_axis_dates.h"
 #include "vdb/level_grid.h"
 
 namespace strielad::convert_cmd {
@@ -48,6 +49,7 @@ void register_export_vdb(CLI::App& app, cli::Action& action) {
                    f->out, s.active_voxels, s.bricks_read, s.bricks_skipped, s.min, s.max);
       if (f->json) {
         std::cout << nlohmann::json{{"file", f->out},
+                                    {"time", geo::time_step_json(store->manifest().time, f->step)},
                                     {"active_voxels", s.active_voxels},
                                     {"bricks_read", s.bricks_read},
                                     {"bricks_skipped", s.bricks_skipped},

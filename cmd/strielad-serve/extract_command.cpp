@@ -12,6 +12,7 @@
 #include "export/vtp_writer.h"
 #include "extract/level_extraction.h"
 #include "extract/output_frame.h"
+#include "geo/time_axis_dates.h"
 #include "scene/scene.h"
 #include "store/store.h"
 #include "vdb/level_grid.h"
@@ -55,7 +56,11 @@ int run_extract(const ExtractArgs& args) {
                      g.subvolume_id, g.active_voxels, g.nodes_skipped, g.bricks_read);
       }
     }
-    if (args.json) std::cout << nlohmann::json{{"output", args.output}, {"grids", j}}.dump(2) << "\n";
+    if (args.json) {
+      const auto time = geo::time_step_json(store->manifest().time, resolved.time);
+      std::cout << nlohmann::json{{"output", args.output}, {"time", time}, {"grids", j}}.dump(2)
+                << "\n";
+    }
     return 0;
   }
   LevelExtractionOptions options;
@@ -91,6 +96,7 @@ int run_extract(const ExtractArgs& args) {
   j["scene"] = args.scene;
   j["output"] = args.output;
   j["time_step"] = options.step;
+  j["time"] = geo::time_step_json(store->manifest().time, options.step);
   j["level"] = options.level;
   j["nodes"] = t.nodes;
   nlohmann::json outcomes;

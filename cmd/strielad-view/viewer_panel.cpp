@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "view/default_scene.h"
+#include "view/simulation_time.h"
 
 namespace strielad::view_cmd {
 namespace {
@@ -203,10 +204,13 @@ void draw_panel(PanelState& state, const PanelInfo& info, const format::Manifest
     if (info.sun_elevation_deg) {
       ImGui::TextDisabled("sun %.1f deg above the horizon", *info.sun_elevation_deg);
     }
-    if (state.time_step < steps) {
-      ImGui::TextDisabled("%s = %g %s", manifest.time.name.c_str(),
-                          manifest.time.values[static_cast<std::size_t>(state.time_step)],
-                          manifest.time.units.c_str());
+    if (state.time_step >= 0 && state.time_step < steps) {
+      // The raw value, then its date in the store's calendar (or why it has none).
+      const std::string time_text =
+          view::step_time_text(manifest, static_cast<std::uint32_t>(state.time_step));
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextDisabled("%s", time_text.c_str());
+      ImGui::PopTextWrapPos();
     }
   }
   if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "geo/cf_time.h"
 
+#include <fmt/format.h>
+
 #include <cctype>
 #include <charconv>
-#include <chrono>
 #include <cmath>
 
 #include "core/error.h"
@@ -38,6 +39,25 @@ bool expect_char(std::string_view s, std::size_t& pos, char c) {
   return false;
 }
 
+bool is_month_or_year_unit(std::string_view unit) {
+  const std::string u = lower(unit);
+  for (const char* w : {"month", "months", "mon", "mons", "year", "years", "yr", "yrs",
+                        "common_year", "common_years", "leap_year", "leap_years"}) {
+    if (u == w) return true;
+  }
+  return false;
+}
+
+// Largest distance from the reference that cf_date_text writes a date for, in seconds
+// (some 950,000 years: six-digit years at most).
+constexpr double kMaxDateSeconds = 3e13;
+
+std::string year_text(std::int64_t year) {
+  if (year < 0) return fmt::format("-{:04}", -year);
+  if (year > 9999) return fmt::format("+{}", year);
+  return fmt::format("{:04}", year);
+}
+
 }  // namespace
 
 std::optional<double> cf_unit_seconds(std::string_view unit) {
@@ -46,35 +66,45 @@ std::optional<double> cf_unit_seconds(std::string_view unit) {
   if (u == "minutes" || u == "minute" || u == "min" || u == "mins") return 60.0;
   if (u == "hours" || u == "hour" || u == "h" || u == "hr" || u == "hrs") return 3600.0;
   if (u == "days" || u == "day" || u == "d") return 86400.0;
+  if (u == "weeks" || u == "week") return 7 * 86400.0;
+  if (u == "milliseconds" || u == "millisecond" || u == "ms" || u == "msec" || u == "msecs") {
+    return 1e-3;
+  }
+  if (u == "microseconds" || u == "microsecond" || u == "us" || u == "usec" || u == "usecs") {
+    return 1e-6;
+  }
   return std::nullopt;
 }
 
-double julian_day(int year, unsigned month, unsigned day, double seconds_of_day) {
-  using namespace std::chrono;
-  const sys_days date{std::chrono::year{year} / std::chrono::month{month} / std::chrono::day{day}};
-  const double days_since_1970 = static_cast<double>(date.time_since_epoch().count());
-  return 2440587.5 + days_since_1970 + seconds_of_day / 86400.0;
-}
-
-CfTimeUnits parse_cf_time_units(const std::string& units, const std::string& calendar) {
-  const std::string cal = lower(calendar);
-  if (!cal.empty() && cal != "standard" && cal != "gregorian" && cal != "proleptic_gregorian") {
-    throw make_error(ErrorCode::kUnsupported,
-                     "time calendar '{}': only the Gregorian calendars (standard, gregorian, "
-                     "proleptic_gregorian) map to real dates",
-                     calendar);
-  }
-  const auto bad = [&](const char* what) {
+CfTimeReference parse_cf_time_reference(const std::string& units, const std::string& calendar) {
+  const auto bad = [&](const std::string& what) {
     return make_error(ErrorCode::kInvalidInput,
-                      "time units '{}': {} (expected '<unit> since YYYY-MM-DD[ hh:mm:ss][ zone]')",
+                      "time units '{}': {} (CF time units are '<unit> since YYYY-MM-DD[ "
+                      "hh:mm:ss][ zone]')",
                       units, what);
   };
+  const CfCalendar cal = parse_cf_calendar(calendar);
+  if (cal == CfCalendar::kNone) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "calendar 'none': the time axis has no calendar, so its values have no dates");
+  }
   const std::string_view s(units);
+  if (s.find_first_not_of(' ') == std::string_view::npos) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "the time axis has no units, so its values have no dates");
+  }
   const auto since = lower(units).find(" since ");
-  if (since == std::string::npos) throw bad("no ' since '");
-  std::size_t unit_start = s.find_first_not_of(' ');
-  const auto seconds = cf_unit_seconds(s.substr(unit_start, since - unit_start));
-  if (!seconds) throw bad("unknown unit");
+  if (since == std::string::npos) throw bad("no reference date");
+  const std::size_t unit_start = s.find_first_not_of(' ');
+  const std::string_view unit = s.substr(unit_start, since - unit_start);
+  if (is_month_or_year_unit(unit)) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "time units '{}': months and years are not a fixed length of time (CF "
+                     "discourages them), so the values have no exact dates",
+                     units);
+  }
+  const auto seconds = cf_unit_seconds(unit);
+  if (!seconds) throw bad(fmt::format("unknown unit '{}'", unit));
   std::size_t pos = since + 7;
   while (pos < s.size() && s[pos] == ' ') ++pos;
 
@@ -84,14 +114,21 @@ CfTimeUnits parse_cf_time_units(const std::string& units, const std::string& cal
       !expect_char(s, pos, '-') || !read_number(s, pos, day)) {
     throw bad("malformed date");
   }
-  if (negative_year) year = -year;
-  if (month < 1 || month > 12 || day < 1 || day > 31 || std::abs(year) > 100000) {
+  if (month < 1 || month > 12 || day < 1 || day > 31 || year > 100000) {
     throw bad("date out of range");
   }
-  const std::chrono::year_month_day ymd{std::chrono::year{static_cast<int>(year)},
-                                        std::chrono::month{static_cast<unsigned>(month)},
-                                        std::chrono::day{static_cast<unsigned>(day)}};
-  if (!ymd.ok()) throw bad("no such date");
+  // The standard and julian calendars count years historically: no year 0, -1 is 1 BC.
+  const bool historical_years = cal == CfCalendar::kStandard || cal == CfCalendar::kJulian;
+  if (historical_years && year == 0) {
+    throw bad(fmt::format("year 0 does not exist in the {} calendar (1 BC is year -1)",
+                          cf_calendar_name(cal)));
+  }
+  const CfDate date{static_cast<std::int64_t>(negative_year ? (historical_years ? 1 - year : -year)
+                                                            : year),
+                    static_cast<unsigned>(month), static_cast<unsigned>(day)};
+  if (!cf_date_exists(cal, date)) {
+    throw bad(fmt::format("no such date in the {} calendar", cf_calendar_name(cal)));
+  }
 
   double hour = 0, minute = 0, second = 0;
   if (pos < s.size() && (s[pos] == ' ' || s[pos] == 'T' || s[pos] == 't')) {
@@ -134,10 +171,45 @@ CfTimeUnits parse_cf_time_units(const std::string& units, const std::string& cal
     while (pos < s.size() && s[pos] == ' ') ++pos;
     if (pos != s.size()) throw bad("unexpected text after the date");
   }
-  return CfTimeUnits{*seconds,
-                     julian_day(static_cast<int>(year), static_cast<unsigned>(month),
-                                static_cast<unsigned>(day),
-                                hour * 3600 + minute * 60 + second - offset_seconds)};
+  return CfTimeReference{cal, *seconds, cf_day_number(cal, date),
+                         hour * 3600 + minute * 60 + second - offset_seconds};
+}
+
+std::string cf_date_text(const CfTimeReference& reference, double value) {
+  const double offset = value * reference.seconds_per_unit;
+  if (!std::isfinite(offset) || std::abs(offset) > kMaxDateSeconds) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "time value {} is {} for a date", value,
+                     std::isfinite(offset) ? "too far from the reference date" : "not finite");
+  }
+  constexpr std::int64_t kMsPerDay = 86'400'000;
+  const std::int64_t ms =
+      std::llround(offset * 1000.0) + std::llround(reference.reference_seconds * 1000.0);
+  const std::int64_t days = ms / kMsPerDay - (ms % kMsPerDay < 0);
+  const std::int64_t of_day = ms - days * kMsPerDay;
+  const CfDate d = cf_date_of_day(reference.calendar, reference.reference_day + days);
+  const std::int64_t s = of_day / 1000;
+  std::string text = fmt::format("{}-{:02}-{:02}T{:02}:{:02}:{:02}", year_text(d.year), d.month,
+                                 d.day, s / 3600, s / 60 % 60, s % 60);
+  if (of_day % 1000 != 0) text += fmt::format(".{:03}", of_day % 1000);
+  return text + "Z";
+}
+
+CfTimeUnits parse_cf_time_units(const std::string& units, const std::string& calendar) {
+  const CfTimeReference r = parse_cf_time_reference(units, calendar);
+  if (!cf_calendar_is_real(r.calendar)) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "time calendar '{}': only the standard, proleptic_gregorian and julian "
+                     "calendars map to real dates",
+                     calendar);
+  }
+  const double days = static_cast<double>(r.reference_day) + r.reference_seconds / 86400.0;
+  return CfTimeUnits{r.seconds_per_unit, 2440587.5 + days};
+}
+
+double julian_day(int year, unsigned month, unsigned day, double seconds_of_day) {
+  const auto days = cf_day_number(CfCalendar::kProlepticGregorian, CfDate{year, month, day});
+  return 2440587.5 + static_cast<double>(days) + seconds_of_day / 86400.0;
 }
 
 }  // namespace strielad::geo

@@ -1,22 +1,53 @@
 // SPDX-License-Identifier: Apache-2.0
-// CF time coordinates as instants (CF conventions, "Time coordinate"): units
-// "<unit> since <date>[ <time>][ <zone>]" with unit seconds, minutes, hours or days
-// (and their abbreviations s, sec, min, h, d), a date Y-M-D, an optional time h:m:s
-// (fractional seconds allowed, separated by a space or 'T'), and an optional zone "Z",
-// "UTC" or an offset like +01:00 / -0530. Calendars "standard", "gregorian",
-// "proleptic_gregorian" (or none) are the Gregorian calendar; the model calendars
-// ("noleap", "360_day", ...) have no fixed map to real dates and are refused.
+// CF time coordinates (CF conventions, "Time coordinate"): units
+// "<unit> since <date>[ <time>][ <zone>]" with unit seconds, minutes, hours or days (and
+// the words udunits takes for them: s, sec, min, h, hr, hrs, d, ..., also milliseconds,
+// microseconds and weeks), a date Y-M-D (unpadded too: "1-1-1"), an optional time
+// h[:m[:s]] (fractional seconds allowed, separated by a space or 'T'), and an optional
+// zone "Z", "UTC" or an offset like +01:00, +1:00 or -0530; values may be fractional and
+// negative. Month and year units ("months since ...") are not a fixed length of time
+// (CF discourages them) and give no dates.
+// A reference date is a date of the axis's calendar (cf_calendar.h); in the standard
+// and julian calendars year 0 does not exist and -1 is 1 BC (CF 1.9), while dates
+// written by this file are ISO 8601 (astronomical years: 0000 is 1 BC).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+
+#include "geo/cf_calendar.h"
 
 namespace strielad::geo {
 
 // Seconds per CF time unit word ("hours" -> 3600); nothing for other words.
 std::optional<double> cf_unit_seconds(std::string_view unit);
 
+// What the values of a CF time coordinate mean in its calendar.
+struct CfTimeReference {
+  CfCalendar calendar = CfCalendar::kStandard;
+  double seconds_per_unit = 1;
+  std::int64_t reference_day = 0;  // cf_day_number of the reference date
+  double reference_seconds = 0;    // reference time of day, UTC (its zone applied: may be
+                                   // negative or past 86400)
+};
+
+// \error kInvalidInput naming `units` when they are not "<unit> since <date>..." or the
+// unit is unknown, or the date, time or zone is malformed or not one of the calendar;
+// kUnsupported naming the unit for month and year units, and naming the calendar for a
+// calendar CF does not define and for "none".
+CfTimeReference parse_cf_time_reference(const std::string& units,
+                                        const std::string& calendar = "");
+
+// The date and time of coordinate value `value` in the reference's calendar, UTC, to
+// the millisecond: ISO 8601 "YYYY-MM-DDThh:mm:ssZ", with ".mmm" before the Z when the
+// milliseconds are not zero (1949-12-01 plus 20500.5 days: "2006-01-16T12:00:00Z").
+// \error kInvalidArgument naming `value` when it is not finite or lies more than
+// 3e13 seconds (some 950,000 years) from the reference.
+std::string cf_date_text(const CfTimeReference& reference, double value);
+
+// A CF time coordinate as instants.
 struct CfTimeUnits {
   double seconds_per_unit = 1;
   double reference_julian_day = 0;  // the reference instant, UTC, as a Julian day
@@ -26,12 +57,12 @@ struct CfTimeUnits {
   }
 };
 
-// \error kInvalidInput naming `units` when it is not "<unit> since <date>..." or the
-// date, time or zone is malformed or out of range; kUnsupported naming the calendar
-// for calendars other than the Gregorian ones.
+// The errors of parse_cf_time_reference, and kUnsupported naming the calendar for the
+// model calendars (noleap, 360_day, ...), whose dates are not real days.
 CfTimeUnits parse_cf_time_units(const std::string& units, const std::string& calendar = "");
 
-// The Julian day of a Gregorian UTC date and time (seconds may exceed 60: they carry).
+// The Julian day of a (proleptic) Gregorian UTC date and time (seconds may exceed 60:
+// they carry).
 double julian_day(int year, unsigned month, unsigned day, double seconds_of_day);
 
 }  // namespace strielad::geo

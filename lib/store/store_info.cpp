@@ -4,6 +4,11 @@
 #include <fmt/ostream.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/text_columns.h"
+#include "geo/time_axis_dates.h"
 
 namespace strielad {
 namespace {
@@ -25,6 +30,30 @@ std::uint64_t step_files_bytes(const Store& store) {
   return total;
 }
 
+// The time axis: its units and calendar, then the first and last steps, each raw value
+// beside its date, or the one reason the values have no dates.
+void describe_time(const Store& store, std::ostream& out) {
+  const TimeAxis& t = store.manifest().time;
+  std::size_t present = 0;
+  for (std::uint32_t s = 0; s < store.step_count(); ++s) present += store.has_step(s);
+  fmt::print(out, "time       {} step{} ({} converted): {}, calendar {}\n", t.size(),
+             t.size() == 1 ? "" : "s", present, t.units.empty() ? "no units" : t.units,
+             t.calendar.empty() ? "not named (standard, the CF default)" : t.calendar);
+  const geo::TimeAxisDates dates(t);
+  TextColumns steps;
+  std::string why_not = dates.why_not();
+  std::vector<std::size_t> shown{0};
+  if (t.size() > 1) shown.push_back(t.size() - 1);
+  for (const std::size_t s : shown) {
+    const auto date = dates.date(t.values[s]);
+    if (!date.ok() && why_not.empty()) why_not = date.why_not;
+    steps.add_row({fmt::format("step {}", s), fmt::format("{}", t.values[s]),
+                   dates.has_dates() ? (date.ok() ? date.text : "no date") : ""});
+  }
+  steps.print(out, "  ");
+  if (!why_not.empty()) fmt::print(out, "  no dates: {}\n", why_not);
+}
+
 }  // namespace
 
 void describe_store(const Store& store, std::ostream& out) {
@@ -35,42 +64,50 @@ void describe_store(const Store& store, std::ostream& out) {
              m.tool_version);
   fmt::print(out, "store id   {:016x}\n", m.store_id);
   fmt::print(out, "grid       {} x {} x {} samples\n", m.x.size(), m.y.size(), m.z.size());
+  TextColumns axes;
   for (const Axis* a : {&m.x, &m.y, &m.z}) {
-    fmt::print(out, "  {:<9}{} ({}, {}): {} .. {}, {}, {}\n", a->name, a->size(),
-               axis_kind_name(a->kind), a->units.empty() ? "no units" : a->units,
-               a->values.front(), a->values.back(), a->descending() ? "descending" : "ascending",
-               is_uniform(*a) ? "uniform" : "non-uniform");
+    axes.add_row({a->name,
+                  fmt::format("{} ({}, {}): {} .. {}, {}, {}", a->size(), axis_kind_name(a->kind),
+                              a->units.empty() ? "no units" : a->units, a->values.front(),
+                              a->values.back(), a->descending() ? "descending" : "ascending",
+                              is_uniform(*a) ? "uniform" : "non-uniform")});
   }
-  std::size_t present = 0;
-  for (std::uint32_t s = 0; s < store.step_count(); ++s) present += store.has_step(s);
-  fmt::print(out, "time       {} steps ({} converted): {} .. {} {}{}\n", m.time.size(), present,
-             m.time.values.front(), m.time.values.back(), m.time.units,
-             m.time.calendar.empty() ? "" : " (" + m.time.calendar + ")");
+  axes.print(out, "  ");
+  describe_time(store, out);
   fmt::print(out, "variables  {}\n", m.variables.size());
+  TextColumns variables;
+  variables.add_row({"name", "type", "units", "predictor", "long name"});
   for (std::size_t i = 0; i < m.variables.size(); ++i) {
     const auto& v = m.variables[i];
-    fmt::print(out, "  {:<9}{:<8} {:<12} {:<9} {}\n", v.name, dtype_name(v.dtype),
-               v.units.empty() ? "-" : v.units, m.codec_of(i).predictor, v.long_name);
+    variables.add_row({v.name, std::string(dtype_name(v.dtype)), v.units.empty() ? "-" : v.units,
+                       m.codec_of(i).predictor, v.long_name});
   }
+  variables.print(out, "  ");
   fmt::print(out, "octree     brick {}, {} levels, {} nodes per step, {:.1f}% sample overhead\n",
              m.brick, layout.level_count(), layout.node_count(),
              layout.overhead_fraction() * 100);
+  TextColumns levels;
   for (std::size_t l = 0; l < layout.level_count(); ++l) {
     const auto& s = layout.level(l);
-    fmt::print(out, "  level {}  {} x {} x {} nodes, stride {} x {} x {}\n", l, s.nodes[0],
-               s.nodes[1], s.nodes[2], s.stride[0], s.stride[1], s.stride[2]);
+    levels.add_row({fmt::format("level {}", l),
+                    fmt::format("{} x {} x {} nodes, stride {} x {} x {}", s.nodes[0], s.nodes[1],
+                                s.nodes[2], s.stride[0], s.stride[1], s.stride[2])});
   }
+  levels.print(out, "  ");
   const auto fpzip_text = [](const format::CodecSpec& c) {
     return c.fpzip ? std::string(", fpzip where it pays") : std::string();
   };
   fmt::print(out, "codec      blosc {} level {} shuffle {}, predictor {}{} (format version {})\n",
              m.codec.name, m.codec.level, m.codec.shuffle, m.codec.predictor, fpzip_text(m.codec),
              m.format_version);
+  TextColumns codecs;
   for (const auto& v : m.variables) {
     if (!v.codec) continue;
-    fmt::print(out, "  {:<9}blosc {} level {} shuffle {}, predictor {}{}\n", v.name, v.codec->name,
-               v.codec->level, v.codec->shuffle, v.codec->predictor, fpzip_text(*v.codec));
+    codecs.add_row({v.name, fmt::format("blosc {} level {} shuffle {}, predictor {}{}",
+                                        v.codec->name, v.codec->level, v.codec->shuffle,
+                                        v.codec->predictor, fpzip_text(*v.codec))});
   }
+  codecs.print(out, "  ");
   fmt::print(out, "sources    {} files\n", m.sources.size());
   fmt::print(out, "size       {:.1f} MB of step files\n", step_files_bytes(store) / 1e6);
   if (m.complete && m.summary.contains("ratio")) {
@@ -86,6 +123,20 @@ nlohmann::json store_info_json(const Store& store) {
     if (store.has_step(s)) present.push_back(s);
   }
   j["converted_steps"] = present;
+  // Beside the manifest's raw time values: their dates, or why there are none.
+  const geo::TimeAxisDates dates(store.manifest().time);
+  if (dates.has_dates()) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const double v : store.manifest().time.values) {
+      const auto date = dates.date(v);
+      list.push_back(date.ok() ? nlohmann::json(date.text) : nlohmann::json());
+      if (!date.ok() && !j["time"].contains("date_error")) j["time"]["date_error"] = date.why_not;
+    }
+    j["time"]["dates"] = std::move(list);
+  } else {
+    j["time"]["dates"] = nullptr;
+    j["time"]["date_error"] = dates.why_not();
+  }
   j["step_files_bytes"] = step_files_bytes(store);
   j["octree"]["sample_overhead_percent"] = store.octree().overhead_fraction() * 100;
   return j;

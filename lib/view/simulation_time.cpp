@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "view/simulation_time.h"
 
+#include <fmt/format.h>
+
 #include "core/error.h"
 #include "geo/cf_time.h"
+#include "geo/time_axis_dates.h"
 
 namespace strielad::view {
 
@@ -15,6 +18,20 @@ std::optional<double> step_julian_day(const format::Manifest& manifest, std::uin
   } catch (const Error&) {
     return std::nullopt;
   }
+}
+
+std::string step_time_text(const format::Manifest& manifest, std::uint32_t step) {
+  const TimeAxis& t = manifest.time;
+  if (step >= t.values.size()) return "";
+  const double value = t.values[step];
+  std::string text = fmt::format("{} = {}{}{}", t.name.empty() ? "time" : t.name, value,
+                                 t.units.empty() ? "" : " ", t.units);
+  const geo::TimeDate date = geo::TimeAxisDates(t).date(value);
+  if (date.ok()) {
+    return text + fmt::format("\n{}, {} calendar", date.text,
+                              t.calendar.empty() ? "standard" : t.calendar);
+  }
+  return text + "\nno date: " + date.why_not;
 }
 
 }  // namespace strielad::view

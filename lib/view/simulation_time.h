@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // The real instant a view shows: a time step of the store (plus seconds within the
 // step while advecting) as a UTC Julian day, from the CF time axis (geo/cf_time.h).
-// The sun and the flight tracks both need it.
+// The sun and the flight tracks both need it. And the time text the viewer's panel shows.
 #pragma once
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "format/manifest.h"
 
@@ -15,5 +16,12 @@ namespace strielad::view {
 // (units not "<unit> since <date>", or a model calendar such as 360_day).
 std::optional<double> step_julian_day(const format::Manifest& manifest, std::uint32_t step,
                                       double seconds_after = 0);
+
+// The panel's text for step `step`, two lines: the raw value with the axis's name and
+// units ("time = 20500.5 days since 1949-12-01 00:00:00"), then its date in the store's
+// calendar ("2006-01-16T12:00:00Z, proleptic_gregorian calendar") or why it has none
+// ("no date: time units 'hours': no reference date ..."). Empty when `step` is not a
+// step of the store.
+std::string step_time_text(const format::Manifest& manifest, std::uint32_t step);
 
 }  // namespace strielad::view

@@ -38,6 +38,20 @@ TEST(CfTimeTest, UnitsWithReferenceDateTimeAndZone) {
               2451545.0 + 0.5 / 86400, 1e-9);
 }
 
+TEST(CfTimeTest, StandardCalendarInstantsBefore1582AreJulianDates) {
+  // Julian days from cftime 1.6.2: date2num(date, "days since -4713-01-01 12:00:00").
+  EXPECT_DOUBLE_EQ(parse_cf_time_units("days since 1000-01-01", "standard").reference_julian_day,
+                   2086307.5);
+  EXPECT_DOUBLE_EQ(parse_cf_time_units("days since 1000-01-01").reference_julian_day, 2086307.5);
+  EXPECT_DOUBLE_EQ(
+      parse_cf_time_units("days since 1000-01-01", "proleptic_gregorian").reference_julian_day,
+      2086302.5);
+  // The Julian calendar is a real calendar: 2000-01-01 12:00 is 13 days after J2000.0.
+  EXPECT_DOUBLE_EQ(
+      parse_cf_time_units("hours since 2000-01-01 12:00", "julian").reference_julian_day,
+      2451558.0);
+}
+
 TEST(CfTimeTest, UnitWords) {
   EXPECT_EQ(cf_unit_seconds("Hours"), 3600.0);
   EXPECT_EQ(cf_unit_seconds("min"), 60.0);
