@@ -2,6 +2,7 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -29,15 +30,34 @@ struct ExtractArgs {
   bool seamless = false;
   bool json = false;
   std::string frame = "axis";
+  std::optional<std::string> height_var;
 };
 
 int run_extract(const ExtractArgs& args) {
   const auto store = Store::open(args.store);
+  const format::Manifest& manifest = store->manifest();
   const OutputFrame frame = parse_output_frame(args.frame);
-  check_frame_supported(store->manifest(), frame);
+  if (args.height_var && frame == OutputFrame::kAxis) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "--height-var {}: the axis frame keeps the vertical axis as it is; give "
+                     "--frame lonlat, metric or ecef",
+                     *args.height_var);
+  }
+  std::optional<FrameTransform> transform;
+  if (frame != OutputFrame::kAxis) {
+    transform.emplace(manifest, frame, choose_vertical_placement(manifest, args.height_var));
+    spdlog::info("frame {}: heights from the {}", output_frame_name(frame),
+                 transform->vertical().description);
+  }
   Scene scene = load_scene_file(args.scene);
   if (args.time) scene.time = *args.time;
-  const ResolvedScene resolved = resolve_scene(scene, store->manifest(), args.scene);
+  // A height variable travels with the meshes as an attribute (the placement reads it).
+  if (transform && transform->vertical().kind == VerticalPlacement::Kind::kHeightVariable &&
+      std::find(scene.attributes.begin(), scene.attributes.end(), transform->vertical().variable) ==
+          scene.attributes.end()) {
+    scene.attributes.push_back(transform->vertical().variable);
+  }
+  const ResolvedScene resolved = resolve_scene(scene, manifest, args.scene);
 
   if (args.output.ends_with(".vdb")) {
     if (frame != OutputFrame::kAxis) {
@@ -82,12 +102,19 @@ int run_extract(const ExtractArgs& args) {
   for (NodeExtraction& n : result.nodes) {
     for (SubVolumeResult& r : n.results) {
       if (r.outcome != NodeOutcome::kMesh) continue;
-      transform_mesh(r.mesh, store->manifest(), frame);
+      if (transform) transform->apply(r.mesh);
       meshes.push_back({static_cast<std::uint32_t>(n.node), &r.mesh});
     }
   }
   VtpOptions vtp;
   vtp.drop_node_boundary_faces = args.seamless;
+  vtp.field_data.emplace_back("frame", std::string(output_frame_name(frame)));
+  if (transform) vtp.field_data.emplace_back("vertical_placement", transform->vertical().description);
+  if (manifest.grid_mapping) {
+    vtp.field_data.emplace_back(
+        "grid_mapping", fmt::format("{} ({}): {}", manifest.grid_mapping->variable,
+                                    manifest.grid_mapping->name, manifest.grid_mapping->proj));
+  }
   const VtpSummary written = write_vtp(args.output, meshes, vtp);
 
   const LevelExtractionTotals& t = result.totals;
@@ -97,6 +124,8 @@ int run_extract(const ExtractArgs& args) {
   j["output"] = args.output;
   j["time_step"] = options.step;
   j["time"] = geo::time_step_json(store->manifest().time, options.step);
+  j["frame"] = std::string(output_frame_name(frame));
+  if (transform) j["vertical_placement"] = transform->vertical().description;
   j["level"] = options.level;
   j["nodes"] = t.nodes;
   nlohmann::json outcomes;
@@ -152,9 +181,14 @@ void register_extract(CLI::App& app, cli::Action& action) {
                 "Leave out the faces on shared node boundaries (one seamless surface)");
   sub->add_flag("--json", args->json, "Print counts and timings as JSON on stdout");
   sub->add_option("--frame", args->frame,
-                  "Positions of .vtp output: axis (lon/lat/height as stored), metric (metres on "
-                  "the plane tangent at the grid centre) or ecef (WGS84 geocentric metres)")
+                  "Positions of .vtp output: axis (the grid's axes as stored), lonlat (true "
+                  "longitude, latitude, height in m), metric (metres on the plane tangent at "
+                  "the domain's centre) or ecef (WGS84 geocentric metres)")
       ->capture_default_str();
+  sub->add_option("--height-var", args->height_var,
+                  "Variable giving each sample's height or geopotential for --frame lonlat, "
+                  "metric or ecef on pressure or model levels (default: zg, gh, z, phi ... "
+                  "when the store has one, else the standard atmosphere of a pressure axis)");
   sub->callback([&action, args] {
     action = [args] {
       if (!args->output.ends_with(".vtp") && !args->output.ends_with(".vdb")) {

@@ -8,7 +8,9 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkFieldData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnsignedIntArray.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -181,6 +183,12 @@ vtkSmartPointer<vtkPolyData> build_polydata(std::span<const NodeMeshRef> meshes,
   if (options.face_kind_array) poly->GetCellData()->AddArray(face_kinds);
   poly->GetPointData()->SetNormals(normals);
   for (const auto& array : attributes) poly->GetPointData()->AddArray(array);
+  for (const auto& [name, text] : options.field_data) {
+    vtkNew<vtkStringArray> value;
+    value->SetName(name.c_str());
+    value->InsertNextValue(text);
+    poly->GetFieldData()->AddArray(value);
+  }
   return poly;
 }
 

@@ -8,6 +8,8 @@
 //   Polys       triangles, counter-clockwise seen from outside
 //   CellData    subvolume_id (UInt32), node_id (UInt32), face_kind (UInt8: 0 limit,
 //               1 node boundary, 2 domain box, 3 grid edge; see extract/mesh.h)
+//   FieldData   one string array per VtpOptions::field_data entry (strielad-serve extract
+//               writes `frame`, `vertical_placement` and, on mapped grids, `grid_mapping`)
 //   PointData   Normals (Float32 x 3, the active normals), then one Float32 array per
 //               attribute name, in order of first appearance over the meshes; a mesh
 //               without that attribute writes NaN for its vertices
@@ -18,6 +20,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "extract/mesh.h"
 
@@ -39,6 +44,9 @@ struct VtpOptions {
   bool float32_points = false;
   // zlib level, 1 (fast) to 9 (small).
   int compression_level = 5;
+  // Text metadata as FieldData string arrays (name, value): the frame, the vertical
+  // placement, the grid mapping.
+  std::vector<std::pair<std::string, std::string>> field_data;
 };
 
 struct VtpSummary {

@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "extract/output_frame.h"
 
+#include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
 #include <numbers>
 
 #include "core/error.h"
 #include "extract/vec3.h"
+#include "geo/standard_atmosphere.h"
+#include "grid/units.h"
 
 namespace strielad {
 
@@ -16,80 +21,302 @@ constexpr double kMeanRadius = 6371008.8;
 constexpr double kWgs84A = 6378137.0;
 constexpr double kWgs84F = 1.0 / 298.257223563;
 constexpr double kWgs84E2 = kWgs84F * (2.0 - kWgs84F);
+constexpr double kStandardGravity = 9.80665;
 
-// Position and Jacobian columns (d/dlon, d/dlat per degree, d/dh) of the map.
-struct Mapped {
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// Metres per unit of a height or geopotential variable, or nothing.
+std::optional<double> height_variable_scale(std::string_view units) {
+  std::string u;
+  for (char c : lower(units)) {
+    if (c != ' ' && c != '*' && c != '^') u += c;
+  }
+  if (u == "m" || u == "gpm" || u == "metre" || u == "metres" || u == "meter" || u == "meters") {
+    return 1.0;
+  }
+  if (u == "km") return 1000.0;
+  if (u == "dam" || u == "gpdam") return 10.0;
+  if (u == "m2s-2" || u == "m2/s2" || u == "m2.s-2") return 1.0 / kStandardGravity;
+  return std::nullopt;
+}
+
+bool geographic_axes(const format::Manifest& m) {
+  return m.x.kind == AxisKind::kLongitude && m.y.kind == AxisKind::kLatitude;
+}
+
+bool mapped_axes(const format::Manifest& m) {
+  return m.grid_mapping && !m.grid_mapping->proj.empty() && m.x.kind == AxisKind::kProjectionX;
+}
+
+double midpoint(const Axis& a) { return 0.5 * (a.values.front() + a.values.back()); }
+
+// Jacobian columns of the frame map at (lon, lat, h): d/dlon, d/dlat (per degree), d/dh.
+struct FramePoint {
   Vec3 p, d_lon, d_lat, d_h;
 };
 
-Mapped map_point(OutputFrame frame, const Vec3& q, double lon0, double lat0) {
-  const double lon = q[0], lat = q[1], h = q[2];
-  Mapped m;
+FramePoint frame_point(OutputFrame frame, double lon, double lat, double h, double lon0,
+                       double lat0) {
+  FramePoint f;
+  if (frame == OutputFrame::kLonLat) {
+    f.p = {lon, lat, h};
+    f.d_lon = {1, 0, 0};
+    f.d_lat = {0, 1, 0};
+    f.d_h = {0, 0, 1};
+    return f;
+  }
   if (frame == OutputFrame::kLocalMetric) {
     const double sx = kMeanRadius * std::cos(lat0 * kDeg) * kDeg, sy = kMeanRadius * kDeg;
-    m.p = {sx * (lon - lon0), sy * (lat - lat0), h};
-    m.d_lon = {sx, 0, 0};
-    m.d_lat = {0, sy, 0};
-    m.d_h = {0, 0, 1};
-    return m;
+    f.p = {sx * (lon - lon0), sy * (lat - lat0), h};
+    f.d_lon = {sx, 0, 0};
+    f.d_lat = {0, sy, 0};
+    f.d_h = {0, 0, 1};
+    return f;
   }
+  // Geocentric: the longitude reduced exactly to [-180, 180] first, so that a meridian
+  // and the same meridian a turn on (a periodic grid's seam) give the same bits.
+  const double lr = std::remainder(lon, 360.0);
   const double sl = std::sin(lat * kDeg), cl = std::cos(lat * kDeg);
-  const double so = std::sin(lon * kDeg), co = std::cos(lon * kDeg);
+  const double so = std::sin(lr * kDeg), co = std::cos(lr * kDeg);
   const double w = std::sqrt(1.0 - kWgs84E2 * sl * sl);
   const double n = kWgs84A / w;
   // Meridional radius of curvature: dN/dlat folded in.
   const double m_radius = kWgs84A * (1.0 - kWgs84E2) / (w * w * w);
-  m.p = {(n + h) * cl * co, (n + h) * cl * so, (n * (1.0 - kWgs84E2) + h) * sl};
-  m.d_lon = {-(n + h) * cl * so * kDeg, (n + h) * cl * co * kDeg, 0};
-  m.d_lat = {-(m_radius + h) * sl * co * kDeg, -(m_radius + h) * sl * so * kDeg,
+  f.p = {(n + h) * cl * co, (n + h) * cl * so, (n * (1.0 - kWgs84E2) + h) * sl};
+  f.d_lon = {-(n + h) * cl * so * kDeg, (n + h) * cl * co * kDeg, 0};
+  f.d_lat = {-(m_radius + h) * sl * co * kDeg, -(m_radius + h) * sl * so * kDeg,
              (m_radius + h) * cl * kDeg};
-  m.d_h = {cl * co, cl * so, sl};
-  return m;
+  f.d_h = {cl * co, cl * so, sl};
+  return f;
+}
+
+// Columns of a 3x3 matrix times a vector: a * v[0] + b * v[1] + c * v[2].
+Vec3 combine(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& v) {
+  return {a[0] * v[0] + b[0] * v[1] + c[0] * v[2], a[1] * v[0] + b[1] * v[1] + c[1] * v[2],
+          a[2] * v[0] + b[2] * v[1] + c[2] * v[2]};
 }
 
 }  // namespace
 
 OutputFrame parse_output_frame(std::string_view name) {
   if (name == "axis") return OutputFrame::kAxis;
+  if (name == "lonlat") return OutputFrame::kLonLat;
   if (name == "metric") return OutputFrame::kLocalMetric;
   if (name == "ecef") return OutputFrame::kEcef;
   throw make_error(ErrorCode::kInvalidArgument,
-                   "unknown output frame '{}': use axis, metric or ecef", name);
+                   "unknown output frame '{}': use axis, lonlat, metric or ecef", name);
 }
 
-void check_frame_supported(const format::Manifest& m, OutputFrame frame) {
-  if (frame == OutputFrame::kAxis) return;
-  if (m.x.kind != AxisKind::kLongitude) {
-    throw make_error(ErrorCode::kUnsupported, "output frame needs a longitude x axis; '{}' is not",
-                     m.x.name);
+std::string_view output_frame_name(OutputFrame frame) {
+  switch (frame) {
+    case OutputFrame::kAxis: return "axis";
+    case OutputFrame::kLonLat: return "lonlat";
+    case OutputFrame::kLocalMetric: return "metric";
+    case OutputFrame::kEcef: return "ecef";
   }
-  if (m.y.kind != AxisKind::kLatitude) {
-    throw make_error(ErrorCode::kUnsupported, "output frame needs a latitude y axis; '{}' is not",
-                     m.y.name);
+  return "axis";
+}
+
+VerticalPlacement choose_vertical_placement(const format::Manifest& m,
+                                            std::optional<std::string> height_var) {
+  VerticalPlacement v;
+  if (m.z.kind == AxisKind::kHeight) {
+    const auto scale = m.z.units.empty() ? std::optional<double>(1.0) : metres_per_length_unit(m.z.units);
+    if (!scale) {
+      throw make_error(ErrorCode::kUnsupported, "height axis '{}' has units '{}'; need m or km",
+                       m.z.name, m.z.units);
+    }
+    v.kind = VerticalPlacement::Kind::kHeightAxis;
+    v.metres_per_unit = *scale;
+    v.description = fmt::format("height axis '{}' ({})", m.z.name, m.z.units.empty() ? "m" : m.z.units);
+    return v;
   }
-  if (m.z.kind != AxisKind::kHeight) {
-    throw make_error(ErrorCode::kUnsupported,
-                     "output frame needs a height axis in metres; '{}' is not (pressure and "
-                     "model levels have no metric position)",
-                     m.z.name);
+  auto use_variable = [&](std::size_t i) {
+    const format::StoreVariable& var = m.variables[i];
+    const auto scale = height_variable_scale(var.units);
+    if (!scale) {
+      throw make_error(ErrorCode::kUnsupported,
+                       "height variable '{}' has units '{}'; need a height (m, gpm, km, dam) or a "
+                       "geopotential (m2 s-2)",
+                       var.name, var.units);
+    }
+    v.kind = VerticalPlacement::Kind::kHeightVariable;
+    v.variable = var.name;
+    v.metres_per_unit = *scale;
+    v.description = *scale == 1.0 / kStandardGravity
+                        ? fmt::format("geopotential height from variable '{}' ({} / 9.80665)",
+                                      var.name, var.units)
+                        : fmt::format("height from variable '{}' ({})", var.name, var.units);
+    return v;
+  };
+  if (height_var) return use_variable(m.variable_index(*height_var));
+  static constexpr std::array<std::string_view, 7> kNames{
+      "zg", "gh", "geopotential_height", "hgt", "z", "phi", "geopotential"};
+  for (std::string_view name : kNames) {
+    for (std::size_t i = 0; i < m.variables.size(); ++i) {
+      const auto& var = m.variables[i];
+      const std::string base = var.name.substr(var.name.rfind('/') + 1);
+      if (lower(base) == name && height_variable_scale(var.units)) return use_variable(i);
+    }
+  }
+  for (std::size_t i = 0; i < m.variables.size(); ++i) {
+    const std::string sn = lower(m.variables[i].standard_name);
+    if ((sn == "geopotential_height" || sn == "geopotential") &&
+        height_variable_scale(m.variables[i].units)) {
+      return use_variable(i);
+    }
+  }
+  if (m.z.kind == AxisKind::kPressure) {
+    const auto pa = pascals_per_pressure_unit(m.z.units);
+    if (!pa) {
+      throw make_error(ErrorCode::kUnsupported,
+                       "pressure axis '{}' has units '{}'; need Pa, hPa, mbar, kPa, bar or atm",
+                       m.z.name, m.z.units);
+    }
+    v.kind = VerticalPlacement::Kind::kStandardAtmosphere;
+    v.metres_per_unit = *pa;  // pascals per unit here
+    v.description = fmt::format("ICAO standard atmosphere of pressure axis '{}' ({}): no "
+                                "geopotential variable in the store",
+                                m.z.name, m.z.units);
+    return v;
+  }
+  throw make_error(ErrorCode::kUnsupported,
+                   "vertical axis '{}' ({}) has no height: the store has no height or "
+                   "geopotential variable (zg, gh, z, phi ...) to place it by; convert one with "
+                   "the data or name it with --height-var",
+                   m.z.name, axis_kind_name(m.z.kind));
+}
+
+FrameTransform::FrameTransform(const format::Manifest& manifest, OutputFrame frame,
+                               VerticalPlacement vertical)
+    : frame_(frame),
+      vertical_(std::move(vertical)),
+      manifest_(&manifest),
+      projection_(mapped_axes(manifest) ? manifest.grid_mapping->proj : std::string()) {
+  geographic_ = geographic_axes(manifest) || mapped_axes(manifest);
+  if (frame_ == OutputFrame::kAxis) return;
+  if (!geographic_) {
+    const bool metres = metres_per_length_unit(manifest.x.units) && metres_per_length_unit(manifest.y.units);
+    if (frame_ != OutputFrame::kLocalMetric || !metres) {
+      throw make_error(ErrorCode::kUnsupported,
+                       "output frame '{}' needs the grid's place on the Earth, but axes '{}' and "
+                       "'{}' ({}, {}) are {} without a grid_mapping",
+                       output_frame_name(frame_), manifest.x.name, manifest.y.name,
+                       manifest.x.units, manifest.y.units,
+                       metres ? "Cartesian coordinates" : "not longitude and latitude");
+    }
+  }
+  if (geographic_axes(manifest)) {
+    lon0_ = midpoint(manifest.x);
+    lat0_ = midpoint(manifest.y);
+  } else if (mapped_axes(manifest)) {
+    const auto c = projection_.to_geographic(midpoint(manifest.x), midpoint(manifest.y));
+    lon0_ = c[0];
+    lat0_ = c[1];
+    if (!std::isfinite(lon0_) || !std::isfinite(lat0_)) {
+      throw make_error(ErrorCode::kUnsupported,
+                       "grid mapping '{}' gives the domain's centre no geographic position",
+                       manifest.grid_mapping->variable);
+    }
+    double spacing = std::fabs(manifest.x.values.back() - manifest.x.values.front());
+    for (const Axis* a : {&manifest.x, &manifest.y}) {
+      for (std::size_t i = 1; i < a->size(); ++i) {
+        spacing = std::min(spacing, std::fabs(a->values[i] - a->values[i - 1]));
+      }
+    }
+    jacobian_step_ = spacing * 1e-3;
+  }
+  if (vertical_.kind == VerticalPlacement::Kind::kHeightAxis ||
+      vertical_.kind == VerticalPlacement::Kind::kStandardAtmosphere) {
+    z_unit_ = vertical_.metres_per_unit;
   }
 }
 
-void transform_mesh(Mesh& mesh, const format::Manifest& manifest, OutputFrame frame) {
-  if (frame == OutputFrame::kAxis) return;
-  check_frame_supported(manifest, frame);
-  const double lon0 = 0.5 * (manifest.x.values.front() + manifest.x.values.back());
-  const double lat0 = 0.5 * (manifest.y.values.front() + manifest.y.values.back());
-  bool flip = false;
+std::array<double, 3> FrameTransform::lon_lat_height(const std::array<double, 3>& p,
+                                                     double height) const {
+  double lon = p[0], lat = p[1];
+  if (!projection_.identity()) {
+    const auto g = projection_.to_geographic(p[0], p[1]);
+    lon = lon0_ + std::remainder(g[0] - lon0_, 360.0);
+    lat = g[1];
+  }
+  double h = 0;
+  switch (vertical_.kind) {
+    case VerticalPlacement::Kind::kHeightAxis: h = p[2] * z_unit_; break;
+    case VerticalPlacement::Kind::kStandardAtmosphere: h = geo::standard_height_m(p[2] * z_unit_); break;
+    case VerticalPlacement::Kind::kHeightVariable: h = height * vertical_.metres_per_unit; break;
+  }
+  return {lon, lat, h};
+}
+
+void FrameTransform::apply(Mesh& mesh) const {
+  if (frame_ == OutputFrame::kAxis) return;
+  const std::vector<float>* heights = nullptr;
+  if (vertical_.kind == VerticalPlacement::Kind::kHeightVariable) {
+    for (std::size_t a = 0; a < mesh.attribute_names.size(); ++a) {
+      if (mesh.attribute_names[a] == vertical_.variable) heights = &mesh.attributes[a];
+    }
+    if (heights == nullptr && !mesh.positions.empty()) {
+      throw make_error(ErrorCode::kInvalidArgument,
+                       "placing by '{}' needs the meshes to carry it as an attribute",
+                       vertical_.variable);
+    }
+  }
+  const bool geographic = geographic_;
+  int orientation = 0;  // sign of the map's Jacobian determinant
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    const Mapped m = map_point(frame, mesh.positions[v], lon0, lat0);
-    // Gradient transform: n' = J^-T n = (n_lon (J_lat x J_h) + n_lat (J_h x J_lon) +
-    // n_h (J_lon x J_lat)) / det J.
-    const double det = dot(m.d_lon, cross(m.d_lat, m.d_h));
-    flip = det < 0;
-    if (v < mesh.normals.size()) {
+    const auto& q = mesh.positions[v];
+    const double hv = heights != nullptr ? static_cast<double>((*heights)[v]) : 0.0;
+    // Axis to (lon, lat, h) or, on a Cartesian grid, to metres: position and Jacobian
+    // columns (d/dx, d/dy, d/dz).
+    std::array<double, 3> llh;
+    Vec3 jx{1, 0, 0}, jy{0, 1, 0}, jz{0, 0, 0};
+    if (geographic) {
+      llh = lon_lat_height(q, hv);
+      if (!projection_.identity()) {
+        const auto j = projection_.jacobian(q[0], q[1], jacobian_step_);
+        jx = {j[0], j[2], 0};
+        jy = {j[1], j[3], 0};
+      }
+    } else {  // Cartesian metres about the domain's centre
+      const double sx = *metres_per_length_unit(manifest_->x.units);
+      const double sy = *metres_per_length_unit(manifest_->y.units);
+      llh = {(q[0] - midpoint(manifest_->x)) * sx, (q[1] - midpoint(manifest_->y)) * sy,
+             lon_lat_height(q, hv)[2]};
+      jx = {sx, 0, 0};
+      jy = {0, sy, 0};
+    }
+    if (vertical_.kind == VerticalPlacement::Kind::kHeightAxis) {
+      jz = {0, 0, z_unit_};
+    } else if (vertical_.kind == VerticalPlacement::Kind::kStandardAtmosphere) {
+      const double pa = q[2] * z_unit_, dp = std::max(pa * 1e-6, 1e-9);
+      jz = {0, 0, (geo::standard_height_m(pa + dp) - geo::standard_height_m(pa - dp)) / (2 * dp) * z_unit_};
+    }
+    Vec3 out;
+    Vec3 cx, cy, cz;  // Jacobian columns of the whole map
+    if (geographic) {
+      const FramePoint f = frame_point(frame_, llh[0], llh[1], llh[2], lon0_, lat0_);
+      out = f.p;
+      cx = combine(f.d_lon, f.d_lat, f.d_h, jx);
+      cy = combine(f.d_lon, f.d_lat, f.d_h, jy);
+      cz = combine(f.d_lon, f.d_lat, f.d_h, jz);
+    } else {
+      out = {llh[0], llh[1], llh[2]};
+      cx = jx;
+      cy = jy;
+      cz = jz;
+    }
+    const double det = dot(cx, cross(cy, cz));
+    if (orientation == 0 && det != 0 && std::isfinite(det)) orientation = det < 0 ? -1 : 1;
+    if (v < mesh.normals.size() && vertical_.kind != VerticalPlacement::Kind::kHeightVariable) {
+      // Gradient transform: n' = J^-T n = (n_x (J_y x J_z) + n_y (J_z x J_x) +
+      // n_z (J_x x J_y)) / det J.
       const auto& n = mesh.normals[v];
-      const Vec3 a = cross(m.d_lat, m.d_h), b = cross(m.d_h, m.d_lon), c = cross(m.d_lon, m.d_lat);
+      const Vec3 a = cross(cy, cz), b = cross(cz, cx), c = cross(cx, cy);
       Vec3 g{};
       for (int i = 0; i < 3; ++i) g[i] = (n[0] * a[i] + n[1] * b[i] + n[2] * c[i]) / det;
       const double len = std::sqrt(dot(g, g));
@@ -98,11 +325,38 @@ void transform_mesh(Mesh& mesh, const format::Manifest& manifest, OutputFrame fr
                            static_cast<float>(g[2] / len)};
       }
     }
-    mesh.positions[v] = m.p;
+    mesh.positions[v] = out;
   }
-  if (flip) {  // the map reverses orientation (never for these frames; kept general)
+  if (orientation < 0) {  // the map reverses orientation (a pressure axis, say)
     for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
   }
+  if (vertical_.kind == VerticalPlacement::Kind::kHeightVariable && !mesh.normals.empty()) {
+    // Heights from a field: the map's vertical derivatives are not known per vertex, so
+    // the normals are the placed surface's own (area-weighted face normals).
+    std::vector<Vec3> sum(mesh.positions.size(), Vec3{0, 0, 0});
+    for (const auto& t : mesh.triangles) {
+      const auto& p0 = mesh.positions[t[0]];
+      const auto& p1 = mesh.positions[t[1]];
+      const auto& p2 = mesh.positions[t[2]];
+      const Vec3 n = cross(Vec3{p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
+                           Vec3{p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
+      for (std::uint32_t i : t) {
+        for (int a = 0; a < 3; ++a) sum[i][a] += n[a];
+      }
+    }
+    for (std::size_t v = 0; v < sum.size() && v < mesh.normals.size(); ++v) {
+      const double len = std::sqrt(dot(sum[v], sum[v]));
+      if (len > 0 && std::isfinite(len)) {
+        mesh.normals[v] = {static_cast<float>(sum[v][0] / len), static_cast<float>(sum[v][1] / len),
+                           static_cast<float>(sum[v][2] / len)};
+      }
+    }
+  }
+}
+
+void transform_mesh(Mesh& mesh, const format::Manifest& manifest, OutputFrame frame) {
+  if (frame == OutputFrame::kAxis) return;
+  FrameTransform(manifest, frame, choose_vertical_placement(manifest)).apply(mesh);
 }
 
 }  // namespace strielad

@@ -1,33 +1,99 @@
 // SPDX-License-Identifier: Apache-2.0
-// Mesh output frames beyond the dataset's axis coordinates (formats/scene.md,
-// "Output frames"):
-// - kLocalMetric: metres on the plane tangent at the grid's centre (equirectangular:
+// Mesh output frames beyond the dataset's axis coordinates (formats/scene.md, "Output
+// frames"). Every frame but `axis` places a vertex by its true position: longitude and
+// latitude from the grid's axes (through the grid mapping's PROJ pipeline on a
+// projected or rotated-pole grid: geo/grid_projection.h) and a height in metres from the
+// vertical placement below.
+// - kLonLat: true longitude and latitude in degrees, height in metres. On a mapped grid
+//   longitudes are continuous about the domain's centre (they tear only at the meridian
+//   opposite it, inside domains that enclose a pole).
+// - kLocalMetric: metres on the plane tangent at the domain's centre (equirectangular:
 //   x = R cos(lat0) (lon - lon0), y = R (lat - lat0), z = height; R = 6371008.8 m, the
 //   IUGG mean Earth radius). Distances are exact along meridians and the centre
 //   parallel; elsewhere east-west distances are off by cos(lat)/cos(lat0) - 1.
 // - kEcef: geocentric WGS84 metres (a = 6378137 m, f = 1/298.257223563), heights taken
-//   as ellipsoidal heights.
+//   as ellipsoidal heights; a longitude and the same longitude a turn on land on the same
+//   bits.
 // Normals are transformed as gradients (by the inverse transpose of the map's Jacobian)
 // and renormalized; triangle orientation is kept outward.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <string_view>
 
 #include "extract/mesh.h"
 #include "format/manifest.h"
+#include "geo/grid_projection.h"
 
 namespace strielad {
 
-enum class OutputFrame { kAxis, kLocalMetric, kEcef };
+enum class OutputFrame { kAxis, kLonLat, kLocalMetric, kEcef };
 
-// "axis", "metric" or "ecef"; throws kInvalidArgument listing them.
+// "axis", "lonlat", "metric" or "ecef"; throws kInvalidArgument listing them.
 OutputFrame parse_output_frame(std::string_view name);
+std::string_view output_frame_name(OutputFrame frame);
 
-// Throws kUnsupported naming the axis unless x is longitude, y latitude and z height
-// in metres (a pressure or model-level vertical axis has no metric frame).
-void check_frame_supported(const format::Manifest& manifest, OutputFrame frame);
+// How a vertex gets its height in metres.
+struct VerticalPlacement {
+  enum class Kind {
+    kHeightAxis,          // the z axis is a height (m or km)
+    kHeightVariable,      // a variable of the store holds geopotential or height per sample
+    kStandardAtmosphere,  // the z axis is a pressure: the ICAO standard atmosphere's height
+  };
+  Kind kind = Kind::kHeightAxis;
+  std::string variable;       // kHeightVariable: the store variable (carried as an attribute)
+  double metres_per_unit = 1; // axis units (height axis) or variable units to metres
+  std::string description;    // one line for logs and output metadata
+};
 
-// Moves positions and normals of `mesh` from axis coordinates into `frame`.
+// The variables a vertical placement would use, in order of preference: `zg`, `gh`,
+// `geopotential_height`, `hgt`, `z`, `phi`, `geopotential` (by name or standard_name
+// geopotential_height / geopotential / height / altitude), with units m, gpm, km, dam
+// or m2 s-2 (geopotential: divided by g0 = 9.80665 m s-2).
+// The placement of store `m`: the height axis; else `height_var` when given (an error
+// naming it when the store does not have it or its units are not a height or a
+// geopotential); else the first variable above; else, on a pressure axis, the standard
+// atmosphere.
+// \error kUnsupported naming the axis for a vertical axis with none of these (model levels
+// without a height variable, depth, unknown axes).
+VerticalPlacement choose_vertical_placement(const format::Manifest& m,
+                                            std::optional<std::string> height_var = std::nullopt);
+
+// Moves meshes of one store from axis coordinates into a frame. Not shared between
+// threads (it holds a PROJ object): make one per thread.
+class FrameTransform {
+ public:
+  // \error kUnsupported when the frame needs a place on the Earth the store's grid does
+  // not have (a Cartesian grid without a grid mapping: only `axis`, and `metric` when its
+  // axes are metres, work), naming the axes.
+  FrameTransform(const format::Manifest& manifest, OutputFrame frame, VerticalPlacement vertical);
+
+  OutputFrame frame() const { return frame_; }
+  const VerticalPlacement& vertical() const { return vertical_; }
+
+  // Positions and normals of `mesh`, from axis coordinates into the frame. With a height
+  // variable the mesh must carry it as an attribute (by its name).
+  // \error kInvalidArgument naming the variable when the mesh lacks that attribute.
+  void apply(Mesh& mesh) const;
+
+  // True longitude, latitude (degrees) and height (metres) of one axis position; a
+  // height variable's value `height` (in its units) when the placement uses one.
+  std::array<double, 3> lon_lat_height(const std::array<double, 3>& axis,
+                                       double height = 0) const;
+
+ private:
+  OutputFrame frame_;
+  VerticalPlacement vertical_;
+  const format::Manifest* manifest_;
+  geo::GridProjection projection_;
+  bool geographic_ = false;  // x, y are longitude and latitude (directly or by a mapping)
+  double lon0_ = 0, lat0_ = 0;  // the domain's centre
+  double z_unit_ = 1;           // axis units to metres or pascals
+  double jacobian_step_ = 0;    // central-difference step of the mapping (axis units)
+};
+
+// One-shot form for tests and single meshes: the store's vertical placement by default.
 void transform_mesh(Mesh& mesh, const format::Manifest& manifest, OutputFrame frame);
 
 }  // namespace strielad

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "grid/units.h"
 
 namespace strielad::geo {
 namespace {
@@ -182,24 +183,6 @@ constexpr std::array<std::string_view, 13> kSupported{
     "orthographic",                 "lambert_cylindrical_equal_area", "sinusoidal",
     "latitude_longitude"};
 
-bool is_degrees(std::string_view units) {
-  const std::string u = lower(units);
-  return u == "degrees" || u == "degree" || u == "deg" || u == "degrees_east" ||
-         u == "degree_east" || u == "degrees_north" || u == "degree_north";
-}
-
-// Metres per unit of a length, or nothing.
-std::optional<double> metres_per_unit(std::string_view units) {
-  const std::string u = lower(units);
-  for (std::string_view m : {"m", "metre", "metres", "meter", "meters"}) {
-    if (u == m) return 1.0;
-  }
-  for (std::string_view km : {"km", "kilometre", "kilometres", "kilometer", "kilometers"}) {
-    if (u == km) return 1000.0;
-  }
-  return std::nullopt;
-}
-
 }  // namespace
 
 std::string_view supported_grid_mappings() {
@@ -228,14 +211,14 @@ std::string cf_grid_mapping_proj(const GridMapping& mapping, const Axis& x, cons
   };
   if (name == "latitude_longitude") {
     for (const Axis* a : {&x, &y}) {
-      if (!is_degrees(a->units)) throw units_error(*a, "degrees");
+      if (!is_degree_units(a->units)) throw units_error(*a, "degrees");
     }
     p.figure();  // validates the attributes; the axes are used as they are
     return "";
   }
   if (name == "rotated_latitude_longitude") {
     for (const Axis* a : {&x, &y}) {
-      if (!is_degrees(a->units)) throw units_error(*a, "degrees");
+      if (!is_degree_units(a->units)) throw units_error(*a, "degrees");
     }
     const double pole_lat = p.required_latitude("grid_north_pole_latitude");
     const double pole_lon = p.required("grid_north_pole_longitude");
@@ -246,7 +229,7 @@ std::string cf_grid_mapping_proj(const GridMapping& mapping, const Axis& x, cons
         "+step +proj=unitconvert +xy_in=rad +xy_out=deg",
         num(pole_lat), num(grid_lon), num(180.0 + pole_lon));
   }
-  const auto mx = metres_per_unit(x.units), my = metres_per_unit(y.units);
+  const auto mx = metres_per_length_unit(x.units), my = metres_per_length_unit(y.units);
   if (!mx) throw units_error(x, "a length (m or km)");
   if (!my) throw units_error(y, "a length (m or km)");
   if (*mx != *my) {

@@ -10,45 +10,16 @@
 #include <string_view>
 
 #include "core/error.h"
-#include "lod/standard_atmosphere.h"
+#include "geo/standard_atmosphere.h"
+#include "grid/units.h"
 
 namespace strielad::lod {
 namespace {
 
-std::string lower_trimmed(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
 // Kilometres per unit of a length, or nothing for other units.
 std::optional<double> km_per_length_unit(std::string_view units) {
-  const std::string u = lower_trimmed(units);
-  for (std::string_view m : {"m", "meter", "meters", "metre", "metres"}) {
-    if (u == m) return 1e-3;
-  }
-  for (std::string_view km : {"km", "kilometer", "kilometers", "kilometre", "kilometres"}) {
-    if (u == km) return 1.0;
-  }
-  return std::nullopt;
-}
-
-// Pascals per unit of a pressure, or nothing for other units.
-std::optional<double> pa_per_pressure_unit(std::string_view units) {
-  const std::string u = lower_trimmed(units);
-  for (std::string_view pa : {"pa", "pascal", "pascals"}) {
-    if (u == pa) return 1.0;
-  }
-  for (std::string_view hpa : {"hpa", "hectopascal", "hectopascals", "mbar", "millibar",
-                               "millibars", "mb"}) {
-    if (u == hpa) return 100.0;
-  }
-  if (u == "kpa") return 1000.0;
-  if (u == "bar" || u == "bars") return 1e5;
-  if (u == "atm") return kSeaLevelPressurePa;
-  return std::nullopt;
+  const auto m = metres_per_length_unit(units);
+  return m ? std::optional<double>(*m * 1e-3) : std::nullopt;
 }
 
 double midpoint(const Axis& axis) { return 0.5 * (axis.values.front() + axis.values.back()); }
@@ -101,7 +72,7 @@ WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options)
     vertical_unit_ = *km * 1000.0;
   } else if (m.z.kind == AxisKind::kPressure) {
     vertical_ = VerticalMap::kPressure;
-    const auto pa = pa_per_pressure_unit(m.z.units);
+    const auto pa = pascals_per_pressure_unit(m.z.units);
     if (!pa) {
       throw make_error(ErrorCode::kUnsupported,
                        "pressure axis '{}' has units '{}'; need Pa, hPa, mbar, kPa, bar or atm",
@@ -137,7 +108,7 @@ WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options)
 double WorldFrame::axis_to_world(int axis, double value) const {
   if (axis < 2) return (value - origin_[axis]) * km_per_unit_[axis];
   const double metres =
-      vertical_ == VerticalMap::kHeight ? value * vertical_unit_ : standard_height_m(value * vertical_unit_);
+      vertical_ == VerticalMap::kHeight ? value * vertical_unit_ : geo::standard_height_m(value * vertical_unit_);
   return metres * 1e-3 * exaggeration_;
 }
 
@@ -145,7 +116,7 @@ double WorldFrame::world_to_axis(int axis, double world) const {
   if (axis < 2) return world / km_per_unit_[axis] + origin_[axis];
   const double metres = world / exaggeration_ * 1e3;
   return vertical_ == VerticalMap::kHeight ? metres / vertical_unit_
-                                           : standard_pressure_pa(metres) / vertical_unit_;
+                                           : geo::standard_pressure_pa(metres) / vertical_unit_;
 }
 
 Vec3 WorldFrame::to_world(const Vec3& p) const {

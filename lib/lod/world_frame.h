@@ -13,7 +13,7 @@
 // - metric x/y (units m or km, e.g. a projected grid): kilometres from the range midpoint.
 // - height (m or km; no units means metres): z = height_km * vertical_exaggeration.
 // - pressure (Pa, hPa, mbar, kPa, bar, atm): the ICAO standard atmosphere height of the
-//   pressure (lod/standard_atmosphere.h), then as height.
+//   pressure (geo/standard_atmosphere.h), then as height.
 // Descending axes (latitude north to south, height top down, pressure) map the same way:
 // world coordinates do not depend on storage order.
 #pragma once

@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "lod/standard_atmosphere.h"
+#include "geo/standard_atmosphere.h"
 #include "lod/lod_test_grids.h"
 #include "octree/octree_layout.h"
 #include "support/expect_error.h"
@@ -90,29 +90,29 @@ TEST(WorldFrameTest, MetricAxesInMetresOrKilometres) {
 
 TEST(WorldFrameTest, StandardAtmosphereMatchesTheIcaoTable) {
   // Layer bases of ISO 2533 / US Standard Atmosphere 1976 (geopotential height).
-  EXPECT_NEAR(standard_height_m(101325.0), 0.0, 1e-9);
-  EXPECT_NEAR(standard_height_m(22632.06), 11000.0, 0.5);
-  EXPECT_NEAR(standard_height_m(5474.889), 20000.0, 1.0);
-  EXPECT_NEAR(standard_height_m(868.0187), 32000.0, 2.0);
-  EXPECT_NEAR(standard_height_m(110.9063), 47000.0, 3.0);
-  EXPECT_NEAR(standard_height_m(66.93887), 51000.0, 3.0);
-  EXPECT_NEAR(standard_height_m(3.956420), 71000.0, 5.0);
-  EXPECT_NEAR(standard_height_m(0.3733836), 84852.0, 10.0);
+  EXPECT_NEAR(geo::standard_height_m(101325.0), 0.0, 1e-9);
+  EXPECT_NEAR(geo::standard_height_m(22632.06), 11000.0, 0.5);
+  EXPECT_NEAR(geo::standard_height_m(5474.889), 20000.0, 1.0);
+  EXPECT_NEAR(geo::standard_height_m(868.0187), 32000.0, 2.0);
+  EXPECT_NEAR(geo::standard_height_m(110.9063), 47000.0, 3.0);
+  EXPECT_NEAR(geo::standard_height_m(66.93887), 51000.0, 3.0);
+  EXPECT_NEAR(geo::standard_height_m(3.956420), 71000.0, 5.0);
+  EXPECT_NEAR(geo::standard_height_m(0.3733836), 84852.0, 10.0);
   // Familiar levels: 850 hPa ~ 1457 m, 500 hPa ~ 5574 m, 200 hPa ~ 11784 m.
-  EXPECT_NEAR(standard_height_m(85000.0), 1457.0, 2.0);
-  EXPECT_NEAR(standard_height_m(50000.0), 5574.0, 2.0);
-  EXPECT_NEAR(standard_height_m(20000.0), 11784.0, 3.0);
-  EXPECT_LT(standard_height_m(105000.0), 0.0);       // below sea level
-  EXPECT_TRUE(std::isnan(standard_height_m(0.0)));
-  EXPECT_TRUE(std::isnan(standard_height_m(-5.0)));
+  EXPECT_NEAR(geo::standard_height_m(85000.0), 1457.0, 2.0);
+  EXPECT_NEAR(geo::standard_height_m(50000.0), 5574.0, 2.0);
+  EXPECT_NEAR(geo::standard_height_m(20000.0), 11784.0, 3.0);
+  EXPECT_LT(geo::standard_height_m(105000.0), 0.0);       // below sea level
+  EXPECT_TRUE(std::isnan(geo::standard_height_m(0.0)));
+  EXPECT_TRUE(std::isnan(geo::standard_height_m(-5.0)));
   // Strictly decreasing in pressure and inverted by standard_pressure_pa, far beyond
   // the table.
   double previous = -INFINITY;
   for (double pa = 2e5; pa > 1e-12; pa *= 0.8) {
-    const double h = standard_height_m(pa);
+    const double h = geo::standard_height_m(pa);
     EXPECT_GT(h, previous) << pa;
     previous = h;
-    EXPECT_NEAR(standard_pressure_pa(h), pa, pa * 1e-9) << pa;
+    EXPECT_NEAR(geo::standard_pressure_pa(h), pa, pa * 1e-9) << pa;
   }
 }
 

@@ -8,7 +8,7 @@
 // sea level (p > 101325 Pa) the first layer's lapse rate is continued.
 #pragma once
 
-namespace strielad::lod {
+namespace strielad::geo {
 
 inline constexpr double kSeaLevelPressurePa = 101325.0;
 
@@ -19,4 +19,4 @@ double standard_height_m(double pa);
 // Pressure in pascals at height `m` metres; the inverse of standard_height_m.
 double standard_pressure_pa(double m);
 
-}  // namespace strielad::lod
+}  // namespace strielad::geo

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "lod/standard_atmosphere.h"
+#include "geo/standard_atmosphere.h"
 
 #include <array>
 #include <cmath>
 #include <limits>
 
-namespace strielad::lod {
+namespace strielad::geo {
 namespace {
 
 // g0 M / R* in K/m (g0 = 9.80665 m/s^2, M = 0.0289644 kg/mol, R* = 8.31432 J/(mol K)).
@@ -68,4 +68,4 @@ double standard_pressure_pa(double m) {
   return b.base_pa * std::pow(b.base_t / (b.base_t + b.lapse * dh), kGmr / b.lapse);
 }
 
-}  // namespace strielad::lod
+}  // namespace strielad::geo
