@@ -28,7 +28,10 @@ int main(int argc, char** argv) {
                        "GLSL file with color() and alpha() (README \"User shaders\"); reloaded "
                        "when it changes. Default: examples/shaders/clouds.glsl, built in");
         app.add_option("--exaggeration", args->exaggeration,
-                       "Vertical exaggeration of the world frame (default 10)");
+                       "Vertical exaggeration of the world frame (default: from the domain's "
+                       "extents, 10 for the paper's grid, 200 for a global one; 10 under "
+                       "--camera; README \"Vertical exaggeration\")")
+            ->check(CLI::PositiveNumber);
         app.add_option("--lod-threshold", args->lod_threshold_sr,
                        "Split a node covering more than this solid angle, sr (default 0.01)");
         app.add_option("--max-nodes", args->max_nodes, "Most nodes in the cut (default 4096)");
@@ -66,8 +69,9 @@ int main(int argc, char** argv) {
             ->check(CLI::PositiveNumber);
         app.add_option("--sun", args->sun,
                        "Light: 'time' (default) the sun's true direction at the simulation "
-                       "time over the domain centre (night is dark), or 'fixed' (from the "
-                       "south-southeast, 54 degrees up, whatever the time)")
+                       "time over the domain centre (night is dark), or over the domain's "
+                       "sunniest point for domains wider than 30 degrees of longitude; or "
+                       "'fixed' (from the south-southeast, 54 degrees up, whatever the time)")
             ->check(CLI::IsMember({"time", "fixed"}));
         app.add_option("--tracks", args->tracks_file,
                        "Flight tracks: CSV with columns id,time,lon,lat,altitude, or a CF trajectory NetCDF file (README "

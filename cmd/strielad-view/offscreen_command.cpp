@@ -58,7 +58,7 @@ int run_offscreen(const ViewerArgs& args) {
     if (!update.ok) throw make_error(ErrorCode::kInvalidInput, "{}", update.error);
   }
   view::ViewOptions options;
-  options.vertical_exaggeration = args.exaggeration;
+  options.vertical_exaggeration = session.exaggeration;
   options.lod.split_solid_angle_sr = args.lod_threshold_sr;
   options.lod.max_nodes = args.max_nodes;
   view::ViewController controller(*session.link, session.scene, options);
@@ -131,7 +131,7 @@ int run_offscreen(const ViewerArgs& args) {
     if (session.terrain) {
       const auto t0 = std::chrono::steady_clock::now();
       while (true) {
-        terrain = session.terrain->update(cameras[i], args.exaggeration, height);
+        terrain = session.terrain->update(cameras[i], session.exaggeration, height);
         if (session.terrain->complete()) break;
         if (std::chrono::steady_clock::now() - t0 > std::chrono::minutes(10)) {
           throw make_error(ErrorCode::kCancelled, "the terrain was not loaded after 600 s");
@@ -164,6 +164,9 @@ int run_offscreen(const ViewerArgs& args) {
                           {"advect_seconds", advect_s},
                           {"sun_elevation_deg", sun ? nlohmann::json(sun->position.elevation_deg) : nlohmann::json()},
                           {"sun_azimuth_deg", sun ? nlohmann::json(sun->position.azimuth_deg) : nlohmann::json()},
+                          {"sun_seen_from", sun ? nlohmann::json({sun->latitude_deg, sun->longitude_deg}) : nlohmann::json()},
+                          {"sun_viewpoint", !sun ? nlohmann::json() : sun->viewpoint == view::SunViewpoint::kDomainCentre ? "domain centre" : "sunniest point"},
+                          {"vertical_exaggeration", session.exaggeration},
                           {"nodes_moved", s.nodes_moved},
                           {"tracks_shown", tracks ? tracks->tracks_shown : 0},
                           {"track_segments", tracks ? tracks->segment_count() : 0},

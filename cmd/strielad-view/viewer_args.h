@@ -20,7 +20,9 @@ struct ViewerArgs {
   std::string scene_file;   // formats/scene.md; default: view::default_scene
   std::optional<std::uint32_t> time;
   std::string shader_file;  // the user's color()/alpha(); default: the built-in clouds
-  double exaggeration = lod::kDefaultVerticalExaggeration;
+  // --exaggeration; unset: the domain's default (view/default_exaggeration.h), or
+  // lod::kDefaultVerticalExaggeration under a camera path (formats/camera-path.md).
+  std::optional<double> exaggeration;
   double lod_threshold_sr = lod::kDefaultSplitSolidAngleSr;
   std::size_t max_nodes = lod::kDefaultMaxNodes;
   double max_fragment_mib = render::kDefaultMaxFragmentBytes / double(1 << 20);

@@ -10,6 +10,7 @@
 
 #include "view/default_scene.h"
 #include "view/simulation_time.h"
+#include "view/subvolume_palette.h"
 
 namespace strielad::view_cmd {
 namespace {
@@ -42,6 +43,26 @@ bool bound_editor(const char* label, std::optional<double>& bound, double fallba
   }
   ImGui::PopID();
   return changed;
+}
+
+// Each sub-volume's name in its palette colour (view/subvolume_palette.h): the colours
+// the built-in shader draws, and user shaders through subvolume_color(id).
+void legend(const Scene& scene) {
+  for (const auto& entry : view::subvolume_legend(scene)) {
+    const auto& c = entry.color;
+    ImGui::PushID(static_cast<int>(entry.id));
+    ImGui::ColorButton("##colour", ImVec4(c[0], c[1], c[2], 1.0f),
+                       ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoPicker,
+                       ImVec2(14, 14));
+    ImGui::SameLine();
+    if (entry.drawn) {
+      ImGui::Text("%s", entry.label.c_str());
+    } else {
+      ImGui::TextDisabled("%s (not drawn: the viewer draws %zu sub-volumes)", entry.label.c_str(),
+                          view::kMaxViewSubVolumes);
+    }
+    ImGui::PopID();
+  }
 }
 
 void subvolume_editor(PanelState& state, const format::Manifest& manifest) {
@@ -202,7 +223,8 @@ void draw_panel(PanelState& state, const PanelInfo& info, const format::Manifest
     }
     ImGui::TextDisabled("%s", info.advect_status.c_str());
     if (info.sun_elevation_deg) {
-      ImGui::TextDisabled("sun %.1f deg above the horizon", *info.sun_elevation_deg);
+      ImGui::TextDisabled("sun %.1f deg above the horizon %s", *info.sun_elevation_deg,
+                          info.sun_viewpoint.c_str());
     }
     if (state.time_step >= 0 && state.time_step < steps) {
       // The raw value, then its date in the store's calendar (or why it has none).
@@ -222,13 +244,21 @@ void draw_panel(PanelState& state, const PanelInfo& info, const format::Manifest
                          ImGuiSliderFlags_Logarithmic)) {
       state.lod_changed = true;
     }
-    if (ImGui::SliderFloat("vertical exaggeration", &state.exaggeration, 1.0f, 50.0f, "%.1f")) {
+    if (ImGui::SliderFloat("vertical exaggeration", &state.exaggeration, 1.0f, 1000.0f, "%.1f",
+                           ImGuiSliderFlags_Logarithmic)) {
       state.exaggeration_changed = true;
     }
     ImGui::Checkbox("node boxes", &state.boxes);
     ImGui::SameLine();
     if (ImGui::Button("home view")) state.home = true;
     ImGui::TextDisabled("drag: orbit, right/middle drag: pan, wheel: zoom, WASD/QE: fly");
+  }
+  if (ImGui::CollapsingHeader("Legend", ImGuiTreeNodeFlags_DefaultOpen)) {
+    legend(state.scene);
+    if (state.shader_name.rfind("built-in", 0) != 0) {
+      ImGui::TextDisabled("palette colours: %s draws them where it calls subvolume_color(id)",
+                          state.shader_name.c_str());
+    }
   }
   if (ImGui::CollapsingHeader("Sub-volumes", ImGuiTreeNodeFlags_DefaultOpen)) {
     subvolume_editor(state, manifest);

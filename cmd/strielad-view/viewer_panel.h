@@ -55,8 +55,9 @@ struct PanelInfo {
   std::string advect_status;   // wind source, or why advection is unavailable
   double step_seconds = 0;     // length of the current step (0: no map yet)
   std::size_t nodes_moved = 0;
-  std::optional<double> sun_elevation_deg;
-  std::string terrain;  // terrain status line (empty: no --terrain)  // the true sun's, when the store has a date
+  std::optional<double> sun_elevation_deg;  // the true sun's, when the store has a date
+  std::string sun_viewpoint;                // where it is seen from (view/sun_direction.h)
+  std::string terrain;  // terrain status line (empty: no --terrain)
 };
 
 void draw_panel(PanelState& state, const PanelInfo& info, const format::Manifest& manifest);

@@ -2,7 +2,9 @@
 #include "viewer_session.h"
 
 #include <fmt/format.h>
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <filesystem>
 #include <numbers>
 #include <spdlog/spdlog.h>
@@ -14,9 +16,12 @@
 #include "geo/drape_image.h"
 #include "net/socket.h"
 #include "net/token_file.h"
+#include "view/default_exaggeration.h"
 #include "view/default_scene.h"
 #include "view/local_server.h"
 #include "view/simulation_time.h"
+#include "view/sun_direction.h"
+#include "view/view_choices.h"
 
 namespace strielad::view_cmd {
 
@@ -50,6 +55,42 @@ void open_advection(const ViewerArgs& args, ViewerSession& session) {
     if (args.advect) throw;
     session.advection_status = e.what();  // shown in the panel; advection is off
   }
+}
+
+// The exaggeration to start with and, for the log, where it comes from.
+std::pair<double, std::string> starting_exaggeration(const ViewerArgs& args,
+                                                     const lod::WorldFrame& frame) {
+  if (args.exaggeration) {
+    return {*args.exaggeration, fmt::format("{:g} (--exaggeration)", *args.exaggeration)};
+  }
+  if (!args.camera_file.empty()) {
+    return {lod::kDefaultVerticalExaggeration,
+            fmt::format("{:g} (a camera path's, formats/camera-path.md; --exaggeration to "
+                        "change it)",
+                        lod::kDefaultVerticalExaggeration)};
+  }
+  const auto extent = view::domain_extent(frame);
+  return {view::default_vertical_exaggeration(extent),
+          view::describe_default_exaggeration(extent)};
+}
+
+// How the first frame is lit, for the log.
+std::string sun_choice(const ViewerArgs& args, const ViewerSession& session) {
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  if (args.sun == "time") {
+    if (const auto sun = view::sun_at_step(session.link->placer().frame(), session.link->manifest(),
+                                           session.scene.time)) {
+      return fmt::format("{} (--sun time, step {})", view::describe_sun(*sun), session.scene.time);
+    }
+    return "fixed, the built-in light from the south-southeast, 54 degrees up: the store's time "
+           "axis or grid gives no real date or place";
+  }
+  if (const auto& d = args.sun_fixed_direction) {
+    return fmt::format("fixed, from the scene file: {:.1f} degrees up, azimuth {:.1f} degrees",
+                       std::asin(std::clamp((*d)[2], -1.0, 1.0)) / kDeg,
+                       std::fmod(std::atan2((*d)[0], (*d)[1]) / kDeg + 360.0, 360.0));
+  }
+  return "fixed, the built-in light from the south-southeast, 54 degrees up (--sun fixed)";
 }
 
 }  // namespace
@@ -86,6 +127,13 @@ ViewerSession open_session(const ViewerArgs& args) {
     session.shader_name = "built-in clouds.glsl";
   }
   session.link = std::make_unique<view::ViewLink>(std::move(client));
+  std::string exaggeration_rule;
+  std::tie(session.exaggeration, exaggeration_rule) =
+      starting_exaggeration(args, session.link->placer().frame());
+  view::log_view_choices({.default_scene = args.scene_file.empty() ? std::optional<Scene>(session.scene)
+                                                                   : std::nullopt,
+                          .exaggeration = exaggeration_rule,
+                          .sun = sun_choice(args, session)});
   open_advection(args, session);
   if (!args.tracks_file.empty()) {
     if (!view::step_julian_day(manifest, 0)) {

@@ -23,6 +23,9 @@ struct ViewerSession {
   std::unique_ptr<view::ViewLink> link;
   std::string dataset_name;
   Scene scene;
+  // The vertical exaggeration to start with: --exaggeration, or the default the domain
+  // or the camera path gives (logged with its rule).
+  double exaggeration = lod::kDefaultVerticalExaggeration;
   std::string shader_name;   // the file, or "built-in clouds.glsl"
   std::string shader_source; // empty: the built-in one
   // Wind advection: null when the store has no wind (advection_status says why).

@@ -112,7 +112,7 @@ int run_window(const ViewerArgs& args) {
   if (!args.shader_file.empty()) watch.emplace(args.shader_file);
 
   view::ViewOptions options;
-  options.vertical_exaggeration = args.exaggeration;
+  options.vertical_exaggeration = session.exaggeration;
   options.lod.split_solid_angle_sr = args.lod_threshold_sr;
   options.lod.max_nodes = args.max_nodes;
   view::ViewController controller(*session.link, session.scene, options);
@@ -125,7 +125,7 @@ int run_window(const ViewerArgs& args) {
   set_layout(session.scene);
   state.scene = session.scene;
   state.time_step = static_cast<int>(session.scene.time);
-  state.exaggeration = static_cast<float>(args.exaggeration);
+  state.exaggeration = static_cast<float>(session.exaggeration);
   state.lod_threshold_sr = static_cast<float>(args.lod_threshold_sr);
   state.max_nodes = static_cast<int>(args.max_nodes);
   state.boxes = args.boxes;
@@ -308,6 +308,10 @@ int run_window(const ViewerArgs& args) {
                                              controller.time_step(), after)) {
         inputs.sun_direction = sun->direction;
         info.sun_elevation_deg = sun->position.elevation_deg;
+        info.sun_viewpoint = sun->viewpoint == view::SunViewpoint::kDomainCentre
+                                 ? "over the domain centre"
+                                 : fmt::format("over the domain's sunniest point ({:.1f}, {:.1f})",
+                                               sun->latitude_deg, sun->longitude_deg);
       }
     }
     if (session.terrain) {

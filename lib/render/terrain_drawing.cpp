@@ -13,20 +13,20 @@ constexpr const char* kVertex = R"(#version 450 core
 layout(location = 0) in vec3 a_position;  // x, y km; height km
 layout(location = 1) in vec2 a_gradient;  // dh/dx, dh/dy
 layout(location = 2) in vec2 a_uv;
-layout(location = 3) in float a_missing;
+layout(location = 3) in float a_water;  // 1: no value or below sea level (at 0 m)
 uniform mat4 u_view_projection;
 uniform float u_vertical_exaggeration;
 out vec3 v_world;
 out vec3 v_normal;
 out float v_height_m;
 out vec2 v_uv;
-out float v_missing;
+out float v_water;
 void main() {
   v_world = vec3(a_position.xy, a_position.z * u_vertical_exaggeration);
   v_normal = normalize(vec3(-a_gradient * u_vertical_exaggeration, 1.0));
   v_height_m = a_position.z * 1000.0;
   v_uv = a_uv;
-  v_missing = a_missing;
+  v_water = a_water;
   gl_Position = u_view_projection * vec4(v_world, 1.0);
 }
 )";
@@ -36,7 +36,7 @@ in vec3 v_world;
 in vec3 v_normal;
 in float v_height_m;
 in vec2 v_uv;
-in float v_missing;
+in float v_water;
 uniform vec3 u_sun;
 uniform vec4 u_clip;  // x lo, y lo, x hi, y hi (world km)
 uniform bool u_has_drape;
@@ -59,7 +59,7 @@ void main() {
   vec3 base;
   if (u_has_drape && all(greaterThanEqual(v_uv, vec2(0.0))) && all(lessThanEqual(v_uv, vec2(1.0)))) {
     base = texture(u_drape, v_uv).rgb;
-  } else if (v_missing > 0.5) {
+  } else if (v_water > 0.5) {  // the coastline halfway between a land and a water sample
     base = vec3(0.22, 0.36, 0.55);
   } else {
     base = hypsometric(v_height_m);

@@ -4,8 +4,8 @@
 // composite in front of and behind it correctly. Lambert plus ambient shading by the
 // sun, with normals from the height field's gradients at the current vertical
 // exaggeration; coloured by a hypsometric ramp of the height, by the tile's drape
-// image where it covers the tile, and as water where the DEM had no value (drawn at
-// height 0, view/terrain_tiles.h). Fragments outside the frame's clip box (the store's
+// image where it covers the tile, and as water where the DEM has no value or lies below
+// sea level (drawn flat at height 0, view/terrain_tiles.h). Fragments outside the frame's clip box (the store's
 // domain) are discarded.
 #pragma once
 

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "render/colored_vertices.h"
 #include "render/volume_shaders.h"
+#include "view/subvolume_palette.h"
 
 namespace strielad::render {
 namespace {
@@ -279,8 +280,15 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
   // bound) and the pass runs again; at the bound, the pass runs again with a depth
   // limit below which everything fits, so the fragments dropped are exactly the
   // farthest (to the histogram's resolution).
-  std::array<GLint, 32> ids{};
+  // Unused slots hold -1, an id no sub-volume has (ids are 1..65535).
+  std::array<GLint, 32> ids;
+  ids.fill(-1);
   for (std::size_t i = 0; i < slot_ids_.size(); ++i) ids[i] = static_cast<GLint>(slot_ids_[i]);
+  std::array<float, 3 * view::kSubVolumePaletteSize> palette{};
+  for (std::size_t i = 0; i < view::kSubVolumePaletteSize; ++i) {
+    const auto c = view::subvolume_palette_color(i);
+    for (int k = 0; k < 3; ++k) palette[3 * i + k] = c[k];
+  }
   std::vector<std::pair<double, const GpuMesh*>> order;
   order.reserve(meshes_.meshes().size());
   for (const auto& [node, mesh] : meshes_.meshes()) {
@@ -322,6 +330,7 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
     glProgramUniform1i(g, location(g, "u_mirrored"), inputs.mirrored ? 1 : 0);
     glProgramUniform1ui(g, location(g, "u_capacity"), static_cast<GLuint>(capacity_));
     glProgramUniform1iv(g, location(g, "u_slot_ids"), 32, ids.data());
+    glProgramUniform3fv(g, location(g, "u_subvolume_colors"), 32, palette.data());
     glBindImageTexture(0, heads_.get(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, counter_.get());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, pool_.get());
@@ -416,6 +425,7 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
   set_float(r, "u_depth_limit", depth_limit);
   set_float(r, "u_time", inputs.time_seconds);
   glProgramUniform1iv(r, location(r, "u_slot_ids"), 32, ids.data());
+  glProgramUniform3fv(r, location(r, "u_subvolume_colors"), 32, palette.data());
   glBindImageTexture(0, heads_.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   glBindImageTexture(1, listed_.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   glBindTextureUnit(0, opaque_color_.get());

@@ -44,6 +44,16 @@ uniform float u_vertical_exaggeration;
 float height_m(vec3 position) { return position.z / u_vertical_exaggeration * 1000.0; }
 // Attribute values are NaN where the data has no value.
 bool missing(float value) { return isnan(value) || isinf(value); }
+// The palette colour of sub-volume `id` (view/subvolume_palette.h): the n-th sub-volume
+// of the scene gets the palette's n-th colour; grey for an id the scene does not have.
+uniform vec3 u_subvolume_colors[32];
+vec3 subvolume_color(int id) {
+  vec3 c = vec3(0.5);
+  for (int s = 0; s < 32; ++s) {  // a fixed trip count (see the resolve pass)
+    if (u_slot_ids[s] == id) c = u_subvolume_colors[s];
+  }
+  return c;
+}
 vec4 color(int id, float attributes[MAX_ATTRIBUTES], vec3 normal, vec3 sun,
            vec3 position, vec3 view, float time);
 float alpha(int id, float distance);

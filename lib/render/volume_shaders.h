@@ -16,7 +16,8 @@ inline constexpr int kMaxLayersPerPixel = 32;
 inline constexpr float kMaxOpacityScale = 4.0f;
 
 // Definitions both user stages see: MAX_ATTRIBUTES, ATTR_<name> per attribute (names
-// made GLSL-safe), height_m(), missing(), and the prototypes of color() and alpha().
+// made GLSL-safe), height_m(), missing(), subvolume_color(), and the prototypes of
+// color() and alpha(). Both stages declare u_slot_ids[32] before it.
 std::string user_prelude(const std::vector<std::string>& attribute_names);
 
 std::string geometry_vertex_source();

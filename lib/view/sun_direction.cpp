@@ -1,20 +1,120 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "view/sun_direction.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
 #include "view/simulation_time.h"
 
 namespace strielad::view {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// `lon` moved by whole turns into (reference - 180, reference + 180].
+double near_longitude(double lon, double reference) {
+  double d = std::fmod(lon - reference, 360.0);
+  if (d <= -180) d += 360;
+  if (d > 180) d -= 360;
+  return reference + d;
+}
+
+std::string latitude_text(double lat) {
+  return fmt::format("{:.2f} {}", std::fabs(lat), lat < 0 ? 'S' : 'N');
+}
+std::string longitude_text(double lon) {
+  const double l = near_longitude(lon, 0.0);
+  return fmt::format("{:.2f} {}", std::fabs(l), l < 0 ? 'W' : 'E');
+}
+
+SunAtTime seen_from(double julian_day, double lat, double lon) {
+  SunAtTime sun;
+  sun.position = geo::solar_position(julian_day, lat, lon);
+  const auto& enu = sun.position.east_north_up;
+  sun.direction = {enu[0], enu[1], enu[2]};
+  sun.latitude_deg = lat;
+  sun.longitude_deg = lon;
+  return sun;
+}
+
+}  // namespace
+
+double domain_longitude_span_deg(const lod::WorldFrame& frame) {
+  if (frame.horizontal() != lod::HorizontalMap::kGeographic) return 0;
+  const auto& d = frame.domain();
+  return std::fabs(frame.world_to_axis(0, d.hi[0]) - frame.world_to_axis(0, d.lo[0]));
+}
+
+SunAtTime sun_for_domain(double julian_day, double lon_lo, double lon_hi, double lat_lo,
+                         double lat_hi, double lon0, double lat0) {
+  const double span = lon_hi - lon_lo;
+  if (!(span > kWideDomainLongitudeDeg)) {
+    auto sun = seen_from(julian_day, lat0, lon0);
+    sun.domain_longitude_span_deg = span;
+    return sun;
+  }
+  // The sub-solar point: latitude the declination, longitude where the hour angle is 0
+  // (it grows by one degree per degree east).
+  const auto centre = geo::solar_position(julian_day, lat0, lon0);
+  const double lat_s = centre.declination_deg;
+  const double lon_s = near_longitude(lon0 - centre.hour_angle_deg, 0.5 * (lon_lo + lon_hi));
+  // The sun is highest where the great-circle distance to the sub-solar point is least.
+  // Within the longitudes: on the sub-solar meridian at the nearest latitude. Otherwise
+  // on one of the two bounding meridians, where cos(distance) = sin(lat) sin(lat_s) +
+  // cos(lat) cos(lat_s) cos(dlon) peaks at lat = atan2(sin lat_s, cos lat_s cos dlon);
+  // the latitude limits are candidates too, and the highest sun of them all wins.
+  std::vector<std::pair<double, double>> candidates;  // (lat, lon)
+  if (lon_s >= lon_lo && lon_s <= lon_hi) {
+    candidates.emplace_back(std::clamp(lat_s, lat_lo, lat_hi), lon_s);
+  }
+  for (const double lon : {lon_lo, lon_hi}) {
+    const double dlon = (lon - lon_s) * kDeg;
+    const double peak = std::atan2(std::sin(lat_s * kDeg), std::cos(lat_s * kDeg) * std::cos(dlon)) / kDeg;
+    for (const double lat : {std::clamp(peak, lat_lo, lat_hi), lat_lo, lat_hi}) {
+      candidates.emplace_back(lat, lon);
+    }
+  }
+  SunAtTime best;
+  bool first = true;
+  for (const auto& [lat, lon] : candidates) {
+    const auto sun = seen_from(julian_day, lat, lon);
+    if (first || sun.position.elevation_deg > best.position.elevation_deg) best = sun;
+    first = false;
+  }
+  best.viewpoint = SunViewpoint::kSunniestPoint;
+  best.domain_longitude_span_deg = span;
+  return best;
+}
 
 std::optional<SunAtTime> sun_at_step(const lod::WorldFrame& frame, const format::Manifest& manifest,
                                      std::uint32_t step, double seconds_after) {
   if (frame.horizontal() != lod::HorizontalMap::kGeographic) return std::nullopt;
   const auto jd = step_julian_day(manifest, step, seconds_after);
   if (!jd) return std::nullopt;
-  SunAtTime sun;
-  sun.position = geo::solar_position(*jd, frame.origin(1), frame.origin(0));
-  const auto& enu = sun.position.east_north_up;
-  sun.direction = {enu[0], enu[1], enu[2]};
-  return sun;
+  const auto& d = frame.domain();
+  const double lon_a = frame.world_to_axis(0, d.lo[0]), lon_b = frame.world_to_axis(0, d.hi[0]);
+  const double lat_a = frame.world_to_axis(1, d.lo[1]), lat_b = frame.world_to_axis(1, d.hi[1]);
+  return sun_for_domain(*jd, std::min(lon_a, lon_b), std::max(lon_a, lon_b),
+                        std::min(lat_a, lat_b), std::max(lat_a, lat_b), frame.origin(0),
+                        frame.origin(1));
+}
+
+std::string describe_sun(const SunAtTime& sun) {
+  const std::string where = latitude_text(sun.latitude_deg) + ", " + longitude_text(sun.longitude_deg);
+  if (sun.viewpoint == SunViewpoint::kDomainCentre) {
+    return fmt::format("the true sun over the domain centre ({}), {:.1f} degrees up: the domain "
+                       "spans {:.3g} degrees of longitude (at most {:g})",
+                       where, sun.position.elevation_deg, sun.domain_longitude_span_deg,
+                       kWideDomainLongitudeDeg);
+  }
+  return fmt::format("the sun over the domain's sunniest point ({}), {:.1f} degrees up: the "
+                     "domain spans {:.3g} degrees of longitude (more than {:g})",
+                     where, sun.position.elevation_deg, sun.domain_longitude_span_deg,
+                     kWideDomainLongitudeDeg);
 }
 
 }  // namespace strielad::view

@@ -1,13 +1,24 @@
 // SPDX-License-Identifier: Apache-2.0
-// The sun the viewer lights with (issue 8, "Sun"): the true direction towards the sun
-// (geo/solar_position.h) at the simulation time, seen from the domain's centre, in the
-// viewer's world frame (x east, y north, z up at the centre: the local east-north-up
-// frame there). At night it points below the horizon, as it should: the user shaders
-// decide what night looks like.
+// The sun the viewer lights with (issue 8, "Sun"; issue 27 for wide domains): the true
+// direction towards the sun (geo/solar_position.h) at the simulation time, in the
+// viewer's world frame (x east, y north, z up: the local east-north-up frame, which the
+// world frame's map takes as the same everywhere). One direction lights the whole
+// domain, seen from one point of it:
+// - a domain spanning at most kWideDomainLongitudeDeg of longitude: its centre. At night
+//   the sun points below the horizon, as it should: the user shaders decide what night
+//   looks like.
+// - a wider domain: its sunniest point, where the sun stands highest (the sub-solar
+//   point when the domain holds it, so the sun is then straight overhead). Across 30
+//   degrees of longitude the local solar time differs by two hours, so one direction
+//   cannot be true everywhere; over a global domain the centre's sun is as often below
+//   the horizon as not, and the picture would be night although half of it is day. The
+//   sunniest point lights the picture as its day side is lit. A wide domain is dark only
+//   when every point of it has the sun below the horizon.
 #pragma once
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "format/manifest.h"
 #include "geo/solar_position.h"
@@ -16,15 +27,38 @@
 
 namespace strielad::view {
 
+// Domains wider than this (degrees of longitude) are lit from their sunniest point.
+inline constexpr double kWideDomainLongitudeDeg = 30.0;
+
+enum class SunViewpoint { kDomainCentre, kSunniestPoint };
+
 struct SunAtTime {
   lod::Vec3 direction{};  // unit, world frame
-  geo::SolarPosition position;
+  geo::SolarPosition position;  // seen from (latitude_deg, longitude_deg)
+  SunViewpoint viewpoint = SunViewpoint::kDomainCentre;
+  double latitude_deg = 0, longitude_deg = 0;  // where the sun is seen from
+  double domain_longitude_span_deg = 0;
 };
 
-// The sun at time step `step` plus `seconds_after` seconds. Nothing when the frame is
-// not geographic (no longitude/latitude to stand on) or the time axis has no real date
-// (units not "<unit> since <date>", or a model calendar such as 360_day).
+// Degrees of longitude a geographic frame's domain spans (0 for other frames).
+double domain_longitude_span_deg(const lod::WorldFrame& frame);
+
+// The sun at time step `step` plus `seconds_after` seconds, seen from the point the
+// rule above picks. Nothing when the frame is not geographic (no longitude/latitude to
+// stand on) or the time axis has no real date (units not "<unit> since <date>", or a
+// model calendar such as 360_day).
 std::optional<SunAtTime> sun_at_step(const lod::WorldFrame& frame, const format::Manifest& manifest,
                                      std::uint32_t step, double seconds_after = 0);
+
+// The sun at `julian_day` (UTC) for a domain of longitudes [lon_lo, lon_hi] and
+// latitudes [lat_lo, lat_hi] (degrees; lon_lo <= lon_hi, which may pass 180) centred at
+// (lon0, lat0), by the rule above.
+SunAtTime sun_for_domain(double julian_day, double lon_lo, double lon_hi, double lat_lo,
+                         double lat_hi, double lon0, double lat0);
+
+// "the true sun over the domain centre (51.00 N, 9.50 E), 35.2 degrees up" or "the sun
+// over the domain's sunniest point (23.44 N, 0.12 W), 90.0 degrees up: the domain spans
+// 358 degrees of longitude (more than 30)": the rule and its outcome, for the log.
+std::string describe_sun(const SunAtTime& sun);
 
 }  // namespace strielad::view

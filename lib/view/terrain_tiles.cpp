@@ -67,6 +67,59 @@ double box_distance(const lod::WorldBox& box, const lod::Vec3& p) {
   return std::sqrt(d2);
 }
 
+// Sea: a sample without a value, or below sea level (a DEM with bathymetry: ETOPO,
+// GEBCO). Land below sea level (the Dead Sea's shores, polders) is taken for sea too: a
+// height alone does not tell them apart.
+bool is_water(float metres) { return !(metres >= 0.0f); }
+
+// `lon` moved by whole turns into [reference - 180, reference + 180].
+double near_longitude(double lon, double reference) {
+  while (lon < reference - 180) lon += 360;
+  while (lon > reference + 180) lon -= 360;
+  return lon;
+}
+
+// A DEM on a longitude/latitude grid that goes all the way round: longitude affine in
+// the column (the same step on every row), latitude independent of it, and at least one
+// full turn of columns. Its columns per turn, the longitude of column 0 and the step.
+struct GlobalColumns {
+  std::size_t per_turn = 0;  // 0: not such a DEM
+  double lon0 = 0, step = 0;
+};
+
+GlobalColumns global_columns(const geo::DemSource& dem) {
+  const std::size_t w = dem.width(), h = dem.height();
+  if (w < 4) return {};
+  const std::vector<double> probe_cols{0.0, 1.0, double(w / 3), double(w / 2), double(w - 1)};
+  const std::vector<double> probe_rows{0.0, double(h / 2), double(h - 1)};
+  std::vector<double> cs, rs;
+  for (const double r : probe_rows) {
+    for (const double c : probe_cols) {
+      cs.push_back(c);
+      rs.push_back(r);
+    }
+  }
+  std::vector<geo::LonLat> ll(cs.size());
+  dem.georeference(cs, rs, ll);
+  const double step = near_longitude(ll[1].lon - ll[0].lon, 0.0);
+  if (!(std::fabs(step) > 0) || !std::isfinite(step)) return {};
+  const double turn = 360.0 / std::fabs(step);
+  const auto per_turn = static_cast<std::size_t>(std::llround(turn));
+  if (std::fabs(turn - double(per_turn)) > 1e-4 * turn || per_turn > w || per_turn < 4) return {};
+  const double tolerance = 1e-3 * std::fabs(step);
+  for (std::size_t r = 0; r < probe_rows.size(); ++r) {
+    const auto* row = &ll[r * probe_cols.size()];
+    for (std::size_t c = 0; c < probe_cols.size(); ++c) {
+      const double expected = ll[0].lon + probe_cols[c] * step;
+      if (std::fabs(near_longitude(row[c].lon - expected, 0.0)) > tolerance ||
+          std::fabs(row[c].lat - row[0].lat) > tolerance) {
+        return {};
+      }
+    }
+  }
+  return {per_turn, ll[0].lon, step};
+}
+
 lod::WorldBox exaggerated(lod::WorldBox box, double e) {
   box.lo[2] *= e;
   box.hi[2] *= e;
@@ -135,11 +188,37 @@ TerrainTiles::TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod:
   row0_ = r0 >= step ? r0 - step : 0;
   col1_ = std::min(w - 1, c1 + step);
   row1_ = std::min(h - 1, r1 + step);
+  if (const auto global = global_columns(*dem_); global.per_turn > 0) {
+    // Columns that go round: the quadtree's columns count on past the DEM's last one
+    // (column c is the DEM's c mod per_turn), so that the extent runs continuously from
+    // the store's western edge to its eastern one, wherever the DEM's own columns start,
+    // and never comes within 1.5 columns of the turn around the store's centre, where
+    // placed longitudes jump by 360 degrees.
+    const double o = frame.origin(0), a = std::fabs(global.step);
+    const double margin = double(step) * a;
+    const double west = std::max(lon_min - margin, o - 180 + 1.5 * a);
+    const double east = std::min(lon_max + margin, o + 180 - 1.5 * a);
+    const double lon0 = near_longitude(global.lon0, o);
+    const double ca = (west - lon0) / global.step, cb = (east - lon0) / global.step;
+    auto first = static_cast<long long>(std::floor(std::min(ca, cb)));
+    auto last = static_cast<long long>(std::ceil(std::max(ca, cb)));
+    const auto turn = static_cast<long long>(global.per_turn);
+    if (first < 0) {
+      const long long shift = (-first + turn - 1) / turn * turn;
+      first += shift;
+      last += shift;
+    }
+    wrap_columns_ = global.per_turn;
+    col0_ = static_cast<std::size_t>(first);
+    col1_ = static_cast<std::size_t>(last);
+  }
   const std::size_t cells = std::max(col1_ - col0_, row1_ - row0_);
   while ((std::size_t{kTerrainTileCells} << finest_level_) < cells) ++finest_level_;
-  spdlog::info("terrain {}: {} x {} samples ({}), {} x {} over the store, {} levels of {}-cell tiles",
-               dem_->describe(), w, h, dem_->georeferencing(), col1_ - col0_ + 1,
-               row1_ - row0_ + 1, finest_level_ + 1, kTerrainTileCells);
+  spdlog::info("terrain {}: {} x {} samples ({}{}), {} x {} over the store, {} levels of {}-cell "
+               "tiles",
+               dem_->describe(), w, h, dem_->georeferencing(),
+               wrap_columns_ ? fmt::format(", {} columns round the globe", wrap_columns_) : "",
+               col1_ - col0_ + 1, row1_ - row0_ + 1, finest_level_ + 1, kTerrainTileCells);
   worker_ = std::jthread([this](std::stop_token stop) { worker_loop(stop); });
 }
 
@@ -183,11 +262,17 @@ TerrainTileSamples TerrainTiles::samples(const TerrainTileKey& k) const {
 }
 
 lod::Vec3 TerrainTiles::place(const geo::LonLat& ll) const {
-  double lon = ll.lon;
-  const double o = frame_.origin(0);
-  while (lon < o - 180) lon += 360;
-  while (lon > o + 180) lon -= 360;
+  const double lon = near_longitude(ll.lon, frame_.origin(0));
   return {frame_.axis_to_world(0, lon), frame_.axis_to_world(1, ll.lat), 0.0};
+}
+
+std::size_t TerrainTiles::dem_column(std::size_t column) const {
+  return wrap_columns_ ? column % wrap_columns_ : column;
+}
+
+std::vector<std::size_t> TerrainTiles::dem_columns(std::vector<std::size_t> columns) const {
+  for (auto& c : columns) c = dem_column(c);
+  return columns;
 }
 
 std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTileKey& key) const {
@@ -196,18 +281,22 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
   const std::size_t nc = s.cols.size(), nr = s.rows.size();
   // A ring of one sample (at the tile's stride) around it for the gradients.
   const std::size_t st = stride(key.level);
-  std::vector<std::size_t> cols{s.cols.front() >= st ? s.cols.front() - st : s.cols.front()};
+  // Columns that go round stay within the extent (beyond it longitudes may jump).
+  const std::size_t first_col = wrap_columns_ ? col0_ : 0;
+  const std::size_t last_col = wrap_columns_ ? col1_ : dem_->width() - 1;
+  std::vector<std::size_t> cols{s.cols.front() >= first_col + st ? s.cols.front() - st
+                                                                  : s.cols.front()};
   cols.insert(cols.end(), s.cols.begin(), s.cols.end());
-  cols.push_back(std::min(s.cols.back() + st, dem_->width() - 1));
+  cols.push_back(std::min(s.cols.back() + st, last_col));
   std::vector<std::size_t> rows{s.rows.front() >= st ? s.rows.front() - st : s.rows.front()};
   rows.insert(rows.end(), s.rows.begin(), s.rows.end());
   rows.push_back(std::min(s.rows.back() + st, dem_->height() - 1));
   const std::size_t wc = cols.size(), wr = rows.size();
-  const auto heights = read_grid(*dem_, cols, rows);
+  const auto heights = read_grid(*dem_, dem_columns(cols), rows);
   std::vector<double> cd(wc * wr), rd(wc * wr);
   for (std::size_t r = 0; r < wr; ++r) {
     for (std::size_t c = 0; c < wc; ++c) {
-      cd[r * wc + c] = double(cols[c]);
+      cd[r * wc + c] = double(dem_column(cols[c]));
       rd[r * wc + c] = double(rows[r]);
     }
   }
@@ -216,7 +305,8 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
   std::vector<lod::Vec3> p(wc * wr);
   for (std::size_t i = 0; i < p.size(); ++i) {
     p[i] = place(ll[i]);
-    p[i][2] = std::isnan(heights[i]) ? 0.0 : heights[i] * 1e-3;
+    // Water (no value, or below sea level) lies flat at sea level.
+    p[i][2] = is_water(heights[i]) ? 0.0 : heights[i] * 1e-3;
   }
   auto mesh = std::make_shared<TerrainTileMesh>();
   mesh->key = key;
@@ -229,7 +319,6 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
   }
   std::vector<float> u(nc * nr, -1.0f), v(nc * nr, -1.0f);
   if (drape_) mesh->drape = drape_->read(inner, u, v);
-  double hmin = INFINITY, hmax = -INFINITY;
   lod::WorldBox box{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
   mesh->vertices.reserve((nc * nr + 2 * (nc + nr)) * kTerrainVertexFloats);
   for (std::size_t r = 0; r < nr; ++r) {
@@ -248,13 +337,11 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
         gx = -n[0] / n[2];
         gy = -n[1] / n[2];
       }
-      const bool missing = std::isnan(heights[i]);
+      const bool water = is_water(heights[i]);
       const float x = float(p[i][0]), y = float(p[i][1]), z = float(p[i][2]);
       mesh->vertices.insert(mesh->vertices.end(),
                             {x, y, z, float(gx), float(gy), u[r * nc + c], v[r * nc + c],
-                             missing ? 1.0f : 0.0f});
-      hmin = std::min(hmin, p[i][2]);
-      hmax = std::max(hmax, p[i][2]);
+                             water ? 1.0f : 0.0f});
       for (int a2 = 0; a2 < 3; ++a2) {
         box.lo[a2] = std::min(box.lo[a2], p[i][a2]);
         box.hi[a2] = std::max(box.hi[a2], p[i][a2]);
@@ -270,17 +357,33 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
     }
   }
   mesh->surface_triangles = mesh->indices.size() / 3;
-  // Skirts: each edge's vertices copied down by the tile's height range (at least 50 m).
-  const float drop = float(std::max(hmax - hmin, 0.05));
+  // Skirts: each edge vertex copied down to the lowest a neighbouring tile's edge can
+  // be there, less 50 m: a coarser neighbour's edge interpolates every 2nd, 4th ... 64th
+  // vertex of this edge (the tiles' sample lattices nest), so the crack against it ends
+  // at the lowest of those interpolations; a finer neighbour's edge runs between this
+  // edge's vertices, taken as no lower than the lowest of the vertex and its two
+  // neighbours. Hanging them no deeper keeps them out of sight under the terrain where it
+  // ends (a store's edge seen from the side).
   const auto skirt = [&](std::vector<std::uint32_t> edge) {
     const auto first = std::uint32_t(mesh->vertices.size() / kTerrainVertexFloats);
-    for (const auto e : edge) {
-      const auto* src = &mesh->vertices[std::size_t(e) * kTerrainVertexFloats];
+    const std::size_t n = edge.size();
+    const auto height = [&](std::size_t i) {
+      return mesh->vertices[std::size_t(edge[i]) * kTerrainVertexFloats + 2];
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      float lowest = std::min({height(i), height(i > 0 ? i - 1 : i), height(i + 1 < n ? i + 1 : i)});
+      for (std::size_t step = 2; step < 2 * n; step *= 2) {
+        const std::size_t a = std::min(i / step * step, n - 1), b = std::min(a + step, n - 1);
+        if (a == b) continue;
+        const float t = float(i - a) / float(b - a);
+        lowest = std::min(lowest, height(a) + t * (height(b) - height(a)));
+      }
+      const auto* src = &mesh->vertices[std::size_t(edge[i]) * kTerrainVertexFloats];
       std::vector<float> copy(src, src + kTerrainVertexFloats);
-      copy[2] -= drop;
+      copy[2] = lowest - 0.05f;
       mesh->vertices.insert(mesh->vertices.end(), copy.begin(), copy.end());
     }
-    for (std::uint32_t k = 0; k + 1 < edge.size(); ++k) {
+    for (std::uint32_t k = 0; k + 1 < n; ++k) {
       mesh->indices.insert(mesh->indices.end(),
                            {edge[k], edge[k + 1], first + k + 1, edge[k], first + k + 1, first + k});
     }
@@ -294,7 +397,13 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
     left.push_back(index(0, r));
     right.push_back(index(nc - 1, r));
   }
-  for (auto* e : {&bottom, &top, &left, &right}) skirt(*e);
+  // Only edges inside the extent can meet a tile of another level; the extent's own
+  // edges get no skirt (a curtain there would show where the DEM ends at the store's
+  // edge, as at the poles of a global DEM).
+  if (s.rows.front() != row0_) skirt(bottom);
+  if (s.rows.back() != row1_) skirt(top);
+  if (s.cols.front() != col0_) skirt(left);
+  if (s.cols.back() != col1_) skirt(right);
   mesh->load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return mesh;
@@ -319,6 +428,9 @@ lod::WorldBox TerrainTiles::estimated_box(const TerrainTileKey& key, const lod::
         cs.push_back(x);
         rs.push_back(y);
       }
+    }
+    if (wrap_columns_) {
+      for (auto& c : cs) c = std::fmod(c, double(wrap_columns_));
     }
     std::vector<geo::LonLat> ll(cs.size());
     dem_->georeference(cs, rs, ll);

@@ -18,10 +18,19 @@
 //   meshes; requests not wanted any more are dropped. Loaded tiles stay in a cache
 //   bounded in bytes (least recently selected out first; the root stays).
 // - Cracks between tiles of different levels are hidden by skirts: every tile edge
-//   hangs a strip down by the tile's height range.
-// - Fill rule: samples without a value (fill, nodata, sea without data) are drawn at
-//   height 0 (sea level) and flagged, so the drawing colours them as water; no triangle
-//   is dropped, so the surface stays closed.
+//   inside the extent hangs a strip down by the tile's height range (the extent's own
+//   edges meet no other tile and hang none).
+// - Water rule: samples without a value (fill, nodata, sea without data) and samples
+//   below sea level (the sea of a DEM with bathymetry, such as ETOPO or GEBCO) are drawn
+//   flat at height 0 (sea level) and flagged, so the drawing colours them as water; no
+//   triangle is dropped, so the surface stays closed. Land below sea level is drawn as
+//   water too (a height alone does not tell it from the sea).
+// - Global DEMs: a longitude/latitude grid that goes all the way round (longitude affine
+//   in the column, one full turn of columns or more) is read as if its columns repeated
+//   every turn, so the extent runs continuously from the store's western edge to its
+//   eastern one wherever the DEM's columns start (an ETOPO grid from -180 to 180 under a
+//   store from 0 to 357.5 degrees east); the tiles never span the turn, where placed
+//   longitudes jump by 360 degrees.
 // - Normals come from per-vertex height gradients (central differences over the tile's
 //   samples plus a ring of neighbours, so shading is continuous across tile edges); the
 //   renderer turns them into normals at the current exaggeration.
@@ -52,8 +61,8 @@ namespace strielad::view {
 inline constexpr int kTerrainTileCells = 64;  // 65 x 65 vertices per tile
 inline constexpr double kDefaultTerrainErrorPixels = 2.0;
 inline constexpr std::size_t kDefaultTerrainCacheBytes = 256ull << 20;
-// Per vertex: x, y (world km), height (km, 0 where missing), dh/dx, dh/dy (km per km),
-// u, v (drape texture; < 0 off the image), missing (1 or 0).
+// Per vertex: x, y (world km), height (km, 0 on water), dh/dx, dh/dy (km per km),
+// u, v (drape texture; < 0 off the image), water (1 or 0: no value or below sea level).
 inline constexpr int kTerrainVertexFloats = 8;
 
 struct TerrainTileKey {
@@ -133,8 +142,12 @@ class TerrainTiles {
 
   // The quadtree (for tests and the panel).
   int finest_level() const { return finest_level_; }
-  // DEM sample extent covered: first and last column and row (inclusive).
+  // DEM sample extent covered: first and last column and row (inclusive). Columns of a
+  // global DEM may count on past its last one (wrap_columns()).
   std::array<std::size_t, 4> extent() const { return {col0_, row0_, col1_, row1_}; }
+  // DEM columns per turn of longitude when the quadtree's columns go round (column c
+  // is the DEM's c mod wrap_columns()); 0 when they do not.
+  std::size_t wrap_columns() const { return wrap_columns_; }
   bool exists(const TerrainTileKey& key) const;
   std::vector<TerrainTileKey> children(const TerrainTileKey& key) const;
   TerrainTileSamples samples(const TerrainTileKey& key) const;
@@ -149,6 +162,8 @@ class TerrainTiles {
   std::size_t stride(int level) const { return std::size_t{1} << (finest_level_ - level); }
   lod::WorldBox estimated_box(const TerrainTileKey& key, const lod::WorldBox* parent) const;
   lod::Vec3 place(const geo::LonLat& ll) const;
+  std::size_t dem_column(std::size_t column) const;
+  std::vector<std::size_t> dem_columns(std::vector<std::size_t> columns) const;
   void worker_loop(std::stop_token stop);
   void evict();
 
@@ -157,6 +172,7 @@ class TerrainTiles {
   lod::WorldFrame frame_;  // a copy: x/y do not depend on the exaggeration
   TerrainOptions options_;
   std::size_t col0_ = 0, row0_ = 0, col1_ = 0, row1_ = 0;
+  std::size_t wrap_columns_ = 0;
   int finest_level_ = 0;
   lod::WorldBox clip_;
 

@@ -38,14 +38,67 @@ expect 3 "no-shader.glsl" -- "$work/store" --shader "$work/no-shader.glsl" --off
 expect 4 "bad-camera.json" -- "$work/store" --camera "$work/bad-camera.json" --offscreen --out "$work/x.png"
 expect 3 "time step 7" -- "$work/store" --time 7 --offscreen --out "$work/x.png"
 
-# One image of the home view, with statistics.
+# One image of the home view, with statistics; without --scene the log says what the
+# viewer chose: the scene (canonical JSON), the exaggeration (10 for the sample's
+# domain, the paper's) and the sun.
 if "$view" "$work/store" --offscreen --size 160x90 --threads 2 --out "$work/home.png" --json \
     >"$work/home.json" 2>"$work/home.err"; then
   is_png "$work/home.png" || fail "home.png is not a PNG image"
   grep -q '"nodes_with_mesh":[1-9]' "$work/home.json" || fail "no meshes: $(cat "$work/home.json")"
-  echo "ok: offscreen home view"
+  grep -q '"vertical_exaggeration":10[,.]' "$work/home.json" || fail "exaggeration: $(cat "$work/home.json")"
+  grep -q ' info\] default scene (no --scene): {"format_version":1,"time":0,"subvolumes":\[{"id":1,"name":"cloud water",' \
+    "$work/home.err" || fail "default scene not logged: $(cat "$work/home.err")"
+  grep -q ' info\] vertical exaggeration 10 for a 700 x 778 km domain' "$work/home.err" ||
+    fail "exaggeration rule not logged"
+  grep -q ' info\] sun: the true sun over the domain centre' "$work/home.err" || fail "sun rule not logged"
+  echo "ok: offscreen home view, default choices logged"
 else
   fail "offscreen home view"; cat "$work/home.err"
+fi
+
+# A global 2.5-degree-like grid (0 to 345 E, 90 N to 90 S, 1000 to 10 hPa) at 12 UTC,
+# when the domain centre (172.5 E) has night: the exaggeration follows the domain (200,
+# not 10) and the sun is the one over the sub-solar point, which the domain holds.
+if command -v ncgen >/dev/null; then
+  python3 - "$work/global.cdl" <<'PY'
+import math, sys
+lons = [15.0 * i for i in range(24)]
+lats = [90.0 - 15.0 * j for j in range(13)]
+plev = [100000, 85000, 50000, 20000, 5000, 1000]
+clw = [max(0.0, 2e-4 * math.exp(-((lat - 8) / 20) ** 2) * math.cos(math.radians(3 * lon)) *
+           math.exp(-((k - 1.5) / 1.5) ** 2)) for k in range(len(plev)) for lat in lats for lon in lons]
+with open(sys.argv[1], "w") as f:
+    f.write("netcdf global {\ndimensions:\n time = 1 ;\n plev = 6 ;\n lat = 13 ;\n lon = 24 ;\n")
+    f.write("variables:\n double time(time) ;\n  time:units = \"hours since 2024-06-21 00:00:00\" ;\n")
+    f.write(" double plev(plev) ;\n  plev:units = \"Pa\" ;\n  plev:standard_name = \"air_pressure\" ;\n")
+    f.write(" double lat(lat) ;\n  lat:units = \"degrees_north\" ;\n")
+    f.write(" double lon(lon) ;\n  lon:units = \"degrees_east\" ;\n")
+    f.write(" float clw(time, plev, lat, lon) ;\n  clw:units = \"kg kg-1\" ;\ndata:\n time = 12 ;\n")
+    f.write(" plev = %s ;\n lat = %s ;\n lon = %s ;\n" % (", ".join(map(str, plev)),
+            ", ".join(map(str, lats)), ", ".join(map(str, lons))))
+    f.write(" clw = %s ;\n}\n" % ", ".join("%.6g" % v for v in clw))
+PY
+  ncgen -o "$work/global.nc" "$work/global.cdl" &&
+    "$convert" "$work/global.nc" -o "$work/global-store" --brick 8 -q 2>"$work/global-convert.err" ||
+    fail "global store: $(cat "$work/global-convert.err")"
+  if "$view" "$work/global-store" --offscreen --size 160x90 --threads 2 --out "$work/global.png" \
+      --json >"$work/global.json" 2>"$work/global.err"; then
+    python3 - "$work/global.json" <<'PY' || fail "global: $(cat "$work/global.json")"
+import json, sys
+d = json.loads(open(sys.argv[1]).readline())
+assert d["vertical_exaggeration"] == 200, d["vertical_exaggeration"]
+assert d["sun_viewpoint"] == "sunniest point", d["sun_viewpoint"]
+assert d["sun_elevation_deg"] > 89, d["sun_elevation_deg"]
+assert abs(d["sun_seen_from"][0] - 23.44) < 0.1, d["sun_seen_from"]
+PY
+    grep -q " info\] sun: the sun over the domain's sunniest point (23.44 N" "$work/global.err" ||
+      fail "global sun rule not logged: $(cat "$work/global.err")"
+    echo "ok: a global grid gets its own exaggeration and the day side's sun"
+  else
+    fail "global grid"; cat "$work/global.err"
+  fi
+else
+  echo "skip: global grid (no ncgen)"
 fi
 
 # A camera path: 0.2 s at 10 fps = 3 numbered frames.

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Terrain in the renderer's opaque pass, checked by pixels: a mountain lit from the east
 // is brighter on its east slope; a solid-colour drape image colours the terrain; terrain
-// in front of a sub-volume hides it.
+// in front of a sub-volume hides it; the sea of a DEM with bathymetry is water, not
+// lowland; where the DEM ends with the store, nothing hangs below its edge.
 #include <cpl_conv.h>
 #include <gdal.h>
 #include <gtest/gtest.h>
@@ -133,6 +134,62 @@ TEST_F(TerrainPixelsTest, TerrainInFrontHidesASubVolume) {
   EXPECT_GT(frame.stats.terrain_tiles, 0u);
   EXPECT_FALSE(after.r > 200 && after.g < 50 && after.b < 50)
       << "still red: " << after.r << "," << after.g << "," << after.b;
+}
+
+// An ETOPO-style DEM: 4 km deep sea west of 0.5 E, land 500 m high east of it.
+TEST_F(TerrainPixelsTest, SeaIsDrawnAsWaterNotLowland) {
+  Scene scene;
+  scene.subvolumes.push_back(testing::sphere(1, "d1", 0.001));
+  controller_ = std::make_unique<view::ViewController>(*link_, scene);
+  auto dem = std::make_shared<FunctionDem>(129, 129, 0.0, 1.0, -0.5, 0.5, [](double lon, double) {
+    return lon < 0.5 ? -4000.0f : 500.0f;
+  });
+  view::TerrainTiles tiles(dem, controller_->frame());
+  const auto cam = lod::look_at({0, 0.01, 300}, {0, 0, 0}, 45.0, 1.0, controller_->frame().domain());
+  auto inputs = render::frame_inputs(*controller_, cam);
+  inputs.sun_direction = {0, 0, 1};
+  inputs.terrain = settle(tiles, cam, inputs.vertical_exaggeration, kSize);
+  renderer_->render(inputs, target_->framebuffer(), kSize, kSize);
+  const auto rgba = render::VolumeRenderer::read_pixels(target_->framebuffer(), kSize, kSize);
+  const auto sea_px = project(cam, {-30, 0, 0}), land_px = project(cam, {30, 0, 5});
+  const Pixel sea = at(rgba, kSize, sea_px.first, sea_px.second);
+  const Pixel land = at(rgba, kSize, land_px.first, land_px.second);
+  EXPECT_GT(sea.b, sea.g + 30) << "sea " << sea.r << "," << sea.g << "," << sea.b;
+  EXPECT_GT(sea.b, sea.r + 60);
+  EXPECT_GT(land.g, land.b + 30) << "land " << land.r << "," << land.g << "," << land.b;
+}
+
+// The DEM ends where the store does (as a global DEM at the poles under a global store):
+// seen from above the edge, what lies just below it is the background, not a curtain
+// hanging from the edge.
+TEST_F(TerrainPixelsTest, NothingHangsBelowTheEdgeWhereTheDemEnds) {
+  Scene scene;
+  scene.subvolumes.push_back(testing::sphere(1, "d1", 0.001));
+  controller_ = std::make_unique<view::ViewController>(*link_, scene);
+  // 8 km high at the store's southern edge, 1 km at its northern one; one tile, whose
+  // edges are all the extent's.
+  auto dem = std::make_shared<FunctionDem>(65, 65, 0.0, 1.0, -0.5, 0.5, [](double, double lat) {
+    return float(1000.0 + 7000.0 * (0.5 - lat));
+  });
+  view::TerrainTiles tiles(dem, controller_->frame());
+  const double edge_y = controller_->frame().domain().lo[1];
+  // From the south, looking down more steeply than the ground falls away northwards.
+  const auto cam = lod::look_at({0, -160, 200}, {0, -40, 60}, 45.0, 1.0,
+                                controller_->frame().domain());
+  auto inputs = render::frame_inputs(*controller_, cam);
+  inputs.terrain = settle(tiles, cam, inputs.vertical_exaggeration, kSize);
+  renderer_->render(inputs, target_->framebuffer(), kSize, kSize);
+  const auto rgba = render::VolumeRenderer::read_pixels(target_->framebuffer(), kSize, kSize);
+  const auto inside = project(cam, {0, edge_y + 20, 67});  // on the ground
+  EXPECT_GT(at(rgba, kSize, inside.first, inside.second).brightness(), 60);
+  // Under the edge (80 km up at exaggeration 10) down to 20 km, across the middle half.
+  const int edge_row = project(cam, {0, edge_y, 80}).second, low_row = project(cam, {0, edge_y, 20}).second;
+  ASSERT_GT(low_row, edge_row + 10);
+  int lit = 0, pixels = 0;
+  for (int y = edge_row + 2; y < low_row; ++y) {
+    for (int x = kSize / 4; x < 3 * kSize / 4; ++x, ++pixels) lit += at(rgba, kSize, x, y).brightness() > 0;
+  }
+  EXPECT_EQ(lit, 0) << "of " << pixels << " pixels under the edge";
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The terrain quadtree (view/terrain_tiles.h): the extent is clipped to the store, the
 // selected tiles cover it without overlap, a closer camera selects finer tiles, parents
-// are drawn until all children arrive, the cache stays within its byte bound, and NaN
-// samples are drawn at height 0 and flagged.
+// are drawn until all children arrive, the cache stays within its byte bound, NaN
+// samples and samples below sea level are drawn as water at height 0, the extent's own
+// edges hang no skirts, and a global DEM goes round under a global store without a seam.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -195,6 +196,115 @@ TEST(TerrainTilesTest, MissingSamplesAreFlaggedAtHeightZero) {
   }
   EXPECT_GT(missing, 100u);
   EXPECT_GT(present, 100u);
+}
+
+// An ETOPO-style DEM: the sea's depths are negative heights.
+TEST(TerrainTilesTest, SeaBelowZeroIsWaterAtHeightZero) {
+  const auto frame = store_frame();
+  auto dem = std::make_shared<FunctionDem>(201, 141, 4.5, 14.5, 47.5, 54.5, [](double lon, double) {
+    return lon < 9.5 ? -3000.0f : 1000.0f;
+  });
+  view::TerrainTiles tiles(dem, frame);
+  const auto root = tiles.load_tile({0, 0, 0});
+  const double coast_x = frame.axis_to_world(0, 9.5);
+  std::size_t sea = 0, land = 0;
+  for (std::size_t i = 0; i < root->vertices.size(); i += view::kTerrainVertexFloats) {
+    const float* v = &root->vertices[i];
+    if (v[0] < coast_x - 1) {
+      ++sea;
+      EXPECT_EQ(v[7], 1.0f);  // water
+      EXPECT_EQ(v[2], 0.0f);  // at sea level, not at -3 km
+      if (v[0] < coast_x - 30) {
+        EXPECT_EQ(v[3], 0.0f);  // flat: the sea bed's slopes do not shade it
+        EXPECT_EQ(v[4], 0.0f);
+      }
+    } else if (v[0] > coast_x + 1) {
+      ++land;
+      EXPECT_EQ(v[7], 0.0f);
+      EXPECT_NEAR(v[2], 1.0f, 1e-6);
+    }
+  }
+  EXPECT_GT(sea, 500u);
+  EXPECT_GT(land, 500u);
+  EXPECT_EQ(root->box.lo[2], 0.0);
+}
+
+// Skirts hide cracks between tiles of different levels; the extent's own edges meet no
+// other tile, and a skirt there would hang as a curtain under the store's edge where the
+// DEM ends with it (a global DEM at the poles).
+TEST(TerrainTilesTest, ExtentEdgesHangNoSkirts) {
+  const auto frame = store_frame();
+  view::TerrainTiles tiles(big_dem(), frame);
+  const auto surface_vertices = [&](const view::TerrainTileKey& key) {
+    const auto s = tiles.samples(key);
+    return s.cols.size() * s.rows.size();
+  };
+  const auto root = tiles.load_tile({0, 0, 0});
+  EXPECT_EQ(root->vertices.size() / view::kTerrainVertexFloats, surface_vertices({0, 0, 0}));
+  EXPECT_EQ(root->triangles(), root->surface_triangles);
+  // A tile of level 1 at the extent's south-west corner: skirts on its two inner edges.
+  const view::TerrainTileKey corner{1, 0, 0};
+  const auto s = tiles.samples(corner);
+  const auto tile = tiles.load_tile(corner);
+  EXPECT_EQ(tile->vertices.size() / view::kTerrainVertexFloats,
+            s.cols.size() * s.rows.size() + s.cols.size() + s.rows.size());
+}
+
+// A global store like a 2.5-degree forecast (0 to 357.5 E, 90 N to 90 S) over an
+// ETOPO-style DEM from -180 to 180 (both ends, 0.25 degrees, rows from pole to pole).
+TEST(TerrainTilesTest, GlobalDemGoesRoundWithoutASeam) {
+  format::Manifest m;
+  m.x = Axis{"lon", AxisKind::kLongitude, "degrees_east", "longitude", "", "",
+             lod::testing::linspace(0, 357.5, 144)};
+  m.y = Axis{"lat", AxisKind::kLatitude, "degrees_north", "latitude", "", "",
+             lod::testing::linspace(90, -90, 73)};
+  m.z = Axis{"plev", AxisKind::kPressure, "Pa", "", "", "down", lod::testing::linspace(100000, 1000, 26)};
+  m.time = TimeAxis{"time", "hours since 2024-06-21 00:00:00", "standard", {12}};
+  m.brick = 16;
+  const lod::WorldFrame frame(m, {.vertical_exaggeration = 200.0});
+  auto dem = std::make_shared<FunctionDem>(1441, 721, -180.0, 180.0, -90.0, 90.0, [](double lon, double lat) {
+    return float(3000 * std::sin(lon * 0.05) * std::cos(lat * 0.07));
+  });
+  view::TerrainTiles tiles(dem, frame);
+  EXPECT_EQ(tiles.wrap_columns(), 1440u);
+  const auto& domain = frame.domain();
+  double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
+  std::size_t checked = 0;
+  for (int level = 0; level <= 2; ++level) {
+    for (int x = 0; x < (1 << level); ++x) {
+      for (int y = 0; y < (1 << level); ++y) {
+        const view::TerrainTileKey key{level, x, y};
+        if (!tiles.exists(key)) continue;
+        const auto tile = tiles.load_tile(key);
+        const auto s = tiles.samples(key);
+        // Neighbouring vertices lie one tile stride apart, never across the map.
+        const double stride_km = double(std::size_t{1} << (tiles.finest_level() - level)) * 0.25 *
+                                 lod::kKmPerDegree;
+        const auto vertex = [&](std::uint32_t i) { return &tile->vertices[std::size_t(i) * view::kTerrainVertexFloats]; };
+        for (std::size_t t = 0; t < tile->surface_triangles; ++t) {
+          for (int e = 0; e < 3; ++e) {
+            const float* a = vertex(tile->indices[3 * t + e]);
+            const float* b = vertex(tile->indices[3 * t + (e + 1) % 3]);
+            ASSERT_LT(std::fabs(a[0] - b[0]), 1.5 * stride_km) << "tile " << level << "/" << x << "/" << y;
+          }
+          ++checked;
+        }
+        for (std::size_t i = 0; i < s.cols.size() * s.rows.size(); ++i) {
+          const float* v = vertex(std::uint32_t(i));
+          x_lo = std::min(x_lo, double(v[0]));
+          x_hi = std::max(x_hi, double(v[0]));
+          y_lo = std::min(y_lo, double(v[1]));
+          y_hi = std::max(y_hi, double(v[1]));
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 10000u);
+  // The tiles cover the whole store, from pole to pole and from 0 to 357.5 E.
+  EXPECT_LE(x_lo, domain.lo[0]);
+  EXPECT_GE(x_hi, domain.hi[0]);
+  EXPECT_LE(y_lo, domain.lo[1] + 1e-3);
+  EXPECT_GE(y_hi, domain.hi[1] - 1e-3);
 }
 
 TEST(TerrainTilesTest, DemOutsideTheStoreIsRefused) {
