@@ -204,6 +204,7 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
     most += (limit.min > -kUnbounded ? 1 : 0) + (limit.max < kUnbounded ? 1 : 0);
   }
   for (const auto& [lo, hi] : request.box) most += lo == -kUnbounded && hi == kUnbounded ? 0 : 2;
+  most += request.sample_conditions.size();
   set.narrow = most <= kNarrowMaskConditions;
   if (set.narrow) {
     set.inside16.resize(n);
@@ -309,6 +310,26 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
       }
       empty = !builder.add(std::move(c));
     }
+  }
+
+  for (std::size_t k = 0; k < request.sample_conditions.size() && !empty; ++k) {
+    const auto& given = request.sample_conditions[k];
+    if (given.size() != n) {
+      throw make_error(ErrorCode::kInvalidArgument,
+                       "sample condition {} holds {} values, the node has {} samples", k,
+                       given.size(), n);
+    }
+    Condition c;
+    c.kind = ConditionKind::kSample;
+    c.values = builder.buffer();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!std::isfinite(given[i])) {
+        throw make_error(ErrorCode::kInvalidArgument, "sample condition {} is not finite at sample {}",
+                         k, i);
+      }
+      c.values[i] = given[i];
+    }
+    empty = !builder.add(std::move(c));
   }
 
   if (set.conditions.size() > kMaxConditions) {

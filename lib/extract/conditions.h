@@ -16,7 +16,8 @@
 
 namespace strielad {
 
-enum class ConditionKind : std::uint8_t { kLimitMin, kLimitMax, kBox, kValidity };
+// kSample: one of ExtractRequest::sample_conditions (a geographic box's side).
+enum class ConditionKind : std::uint8_t { kLimitMin, kLimitMax, kBox, kValidity, kSample };
 
 struct Condition {
   ConditionKind kind = ConditionKind::kLimitMin;

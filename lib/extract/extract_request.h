@@ -30,6 +30,10 @@ struct ExtractRequest {
   std::array<std::array<double, 2>, 3> box{{{-kUnbounded, kUnbounded},
                                             {-kUnbounded, kUnbounded},
                                             {-kUnbounded, kUnbounded}}};
+  // Further half-space conditions given per sample (NodeSamples order, x fastest; inside
+  // where >= 0), bounding the region like the box: a geographic box on a mapped grid
+  // (extract/geographic_conditions.h). Their faces are domain-box faces.
+  std::vector<std::vector<double>> sample_conditions;
   std::vector<std::uint32_t> attribute_fields;  // indices into NodeSamples::fields
   std::vector<std::string> attribute_names;     // same length as attribute_fields
 };

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "grid/longitude_turns.h"
+#include "extract/geographic_conditions.h"
 #include "extract/node_extractor.h"
 #include "extract/slice_extraction.h"
 #include "store/brick_cache.h"
@@ -40,7 +41,8 @@ NodeGeometry node_geometry(const Store& store, NodeId node) {
     g.grid_edge[2 * a] = box.lo[a] == 0;
     g.grid_edge[2 * a + 1] = box.hi[a] + 1 >= shape.samples[a];
     for (std::size_t c = box.lo[a]; c <= box.hi[a]; ++c) {
-      g.coords[a].push_back(axes[a]->values[octree.fine_index(key.level, a, c)]);
+      g.fine[a].push_back(octree.fine_index(key.level, a, c));
+      g.coords[a].push_back(axes[a]->values[g.fine[a].back()]);
     }
   }
   return g;
@@ -75,6 +77,8 @@ struct SubVolumePlan {
   std::size_t subvolume;
   std::vector<ResolvedLimit> limits;
   std::vector<int> turns{0};
+  // A geographic box on a mapped grid: its conditions at the node's horizontal samples.
+  std::vector<std::vector<double>> geographic{};
 };
 
 bool bounded(const AxisRange& r) {
@@ -106,6 +110,20 @@ std::vector<SubVolumePlan> plan_subvolumes(const Store& store, const ResolvedSce
         r.outcome = NodeOutcome::kSkippedDomain;
         r.reason = fmt::format("{} range [{}, {}] misses the node", axis_names[a], sv.box[a].lo,
                                sv.box[a].hi);
+      }
+    }
+    if (sv.geographic && r.reason.empty()) {
+      plan.geographic = geographic_conditions(*sv.geographic, *GeoLocation::of(m), geometry.fine[0],
+                                              geometry.fine[1]);
+      // A condition below zero at every sample: its interpolant is below zero everywhere.
+      for (const auto& c : plan.geographic) {
+        if (std::all_of(c.begin(), c.end(), [](double v) { return v < 0; })) {
+          r.outcome = NodeOutcome::kSkippedDomain;
+          r.reason = fmt::format("geographic box{}{} misses the node",
+                                 sv.geographic->lon ? fmt::format(" lon [{}, {}]", sv.geographic->lon->lo, sv.geographic->lon->hi) : "",
+                                 sv.geographic->lat ? fmt::format(" lat [{}, {}]", sv.geographic->lat->lo, sv.geographic->lat->hi) : "");
+          break;
+        }
       }
     }
     for (const ResolvedLimit& limit : sv.limits) {
@@ -332,6 +350,12 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
     }
     request.attribute_fields = attribute_fields;
     request.attribute_names = attribute_names;
+    // Geographic conditions per horizontal sample, the same on every level of the node.
+    for (const auto& horizontal : plan.geographic) {
+      std::vector<double>& c = request.sample_conditions.emplace_back();
+      c.reserve(samples);
+      for (std::size_t z = 0; z < ns.coords[2].size(); ++z) c.insert(c.end(), horizontal.begin(), horizontal.end());
+    }
     SubVolumeResult& r = out.results[plan.subvolume];
     for (const int turn : plan.turns) {
       const double shift = kFullTurn * turn;

@@ -84,6 +84,7 @@ bool limit_excludes_node(const format::IndexEntry& entry, const ResolvedLimit& l
 // The node's sample coordinates on the manifest's axes (no brick is read).
 struct NodeGeometry {
   std::array<std::vector<double>, 3> coords;
+  std::array<std::vector<std::size_t>, 3> fine;  // the samples' level-0 indices
   std::array<bool, 6> grid_edge{};  // as NodeSamples::grid_edge
 };
 NodeGeometry node_geometry(const Store& store, NodeId node);

@@ -265,18 +265,23 @@ struct Trilinear {
   Vec3 gradient;  // lattice units
 };
 
-Trilinear trilinear(const float* field, const std::array<std::size_t, 3>& dims, const CellPoint& cp,
+template <class Sample>
+Trilinear trilinear(const Sample* field, const std::array<std::size_t, 3>& dims, const CellPoint& cp,
                     bool with_gradient) {
   const std::size_t sy = dims[0], sz = dims[0] * dims[1];
-  const float* b = field + cp.index;
+  const Sample* b = field + cp.index;
   const double c0 = b[0], c1 = b[1], c2 = b[sy], c3 = b[sy + 1];
   const double c4 = b[sz], c5 = b[sz + 1], c6 = b[sz + sy], c7 = b[sz + sy + 1];
   const double fx = cp.f[0], fy = cp.f[1], fz = cp.f[2];
-  const double x00 = c0 + fx * (c1 - c0), x10 = c2 + fx * (c3 - c2);
-  const double x01 = c4 + fx * (c5 - c4), x11 = c6 + fx * (c7 - c6);
-  const double y0 = x00 + fy * (x10 - x00), y1 = x01 + fy * (x11 - x01);
+  // (1 - f) a + f b is a at f = 0 and b at f = 1 exactly (a + f (b - a) need not be b):
+  // a vertex on a node face gets the same value from the cell on either side, so the
+  // nodes sharing it carry the same attribute bits (and a height placed by one).
+  auto lerp = [](double a, double b, double f) { return (1.0 - f) * a + f * b; };
+  const double x00 = lerp(c0, c1, fx), x10 = lerp(c2, c3, fx);
+  const double x01 = lerp(c4, c5, fx), x11 = lerp(c6, c7, fx);
+  const double y0 = lerp(x00, x10, fy), y1 = lerp(x01, x11, fy);
   Trilinear t;
-  t.value = y0 + fz * (y1 - y0);
+  t.value = lerp(y0, y1, fz);
   if (with_gradient) {
     const double dx00 = c1 - c0, dx10 = c3 - c2, dx01 = c5 - c4, dx11 = c7 - c6;
     const double dx0 = dx00 + fy * (dx10 - dx00), dx1 = dx01 + fy * (dx11 - dx01);
@@ -1000,7 +1005,9 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
                    : (set.box_sides >> side) & 1u ? FaceKind::kDomainBox
                                                   : FaceKind::kNodeBoundary;
     } else {
-      kind_of[g] = set.conditions[g].kind == ConditionKind::kBox ? FaceKind::kDomainBox : FaceKind::kLimit;
+      const ConditionKind k = set.conditions[g].kind;
+      kind_of[g] = k == ConditionKind::kBox || k == ConditionKind::kSample ? FaceKind::kDomainBox
+                                                                           : FaceKind::kLimit;
     }
   }
   // The lattice-space orientation is the axis-space one unless an odd number of axes
@@ -1052,6 +1059,7 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
   // the fixed lattice normal of a box or node side (unit along one axis).
   struct GroupNormal {
     const float* field = nullptr;
+    const double* values = nullptr;  // a per-sample condition: minus its gradient
     double sign = 0;
     int axis = -1;  // fixed normal: +-1 along axis
   };
@@ -1067,6 +1075,9 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
       if (c.kind == ConditionKind::kBox) {
         gn.axis = c.axis;
         gn.sign = c.side == 0 ? -1.0 : 1.0;
+      } else if (c.kind == ConditionKind::kSample) {
+        gn.values = c.values.data();
+        gn.sign = -1.0;  // inside where the condition grows
       } else if (c.kind != ConditionKind::kValidity) {
         gn.field = samples.fields[c.field].data();
         gn.sign = c.kind == ConditionKind::kLimitMin ? -1.0 : 1.0;
@@ -1126,6 +1137,9 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
     Vec3 n{0, 0, 0};
     if (gn.field != nullptr) {
       const Trilinear t = trilinear(gn.field, dims, cp, true);
+      for (int a = 0; a < 3; ++a) n[a] = gn.sign * t.gradient[a] * scratch.inverse_spacing[a][cp.cell[a]];
+    } else if (gn.values != nullptr) {
+      const Trilinear t = trilinear(gn.values, dims, cp, true);
       for (int a = 0; a < 3; ++a) n[a] = gn.sign * t.gradient[a] * scratch.inverse_spacing[a][cp.cell[a]];
     } else if (gn.axis >= 0) {
       const double value = gn.sign * scratch.inverse_spacing[gn.axis][cp.cell[gn.axis]];

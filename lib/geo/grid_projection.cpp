@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string>
 
 #include "core/error.h"
@@ -38,6 +39,13 @@ GridProjection::GridProjection(std::string_view pipeline) {
                      proj_context_errno_string(impl->ctx, err));
   }
   impl_ = std::move(impl);
+}
+
+const GridProjection& GridProjection::for_this_thread(const std::string& pipeline) {
+  thread_local std::map<std::string, GridProjection, std::less<>> projections;
+  auto it = projections.find(pipeline);
+  if (it == projections.end()) it = projections.emplace(pipeline, GridProjection(pipeline)).first;
+  return it->second;
 }
 
 GridProjection::~GridProjection() = default;

@@ -24,6 +24,10 @@ class GridProjection {
   GridProjection(GridProjection&&) noexcept;
   GridProjection& operator=(GridProjection&&) noexcept;
 
+  // This thread's projection for `pipeline`, made on first use and kept for the
+  // thread's life (for code that many threads run over one store).
+  static const GridProjection& for_this_thread(const std::string& pipeline);
+
   bool identity() const { return impl_ == nullptr; }
 
   // Axis (x, y) to (longitude, latitude) in degrees; longitudes as PROJ gives them (its

@@ -22,10 +22,12 @@ struct Manifest;
 }
 
 // Version of formats/scene.md this library reads and writes, and its size limits.
-inline constexpr std::uint32_t kSceneFormatVersion = 2;
+inline constexpr std::uint32_t kSceneFormatVersion = 3;
 // The first version with slices, terrain, sun and trajectories (formats/scene.md,
 // "Version history"); a scene using one of them must declare at least this version.
 inline constexpr std::uint32_t kSceneVersionGeography = 2;
+// The first version with geographic boxes in sub-volumes.
+inline constexpr std::uint32_t kSceneVersionGeographicBox = 3;
 inline constexpr std::size_t kMaxSceneBytes = 1u << 20;
 inline constexpr std::size_t kMaxSceneNesting = 32;
 inline constexpr std::size_t kMaxSubVolumes = 64;
@@ -54,11 +56,20 @@ struct AxisRange {
   friend bool operator==(const AxisRange&, const AxisRange&) = default;
 };
 
+// A box in true longitude and latitude (format version 3), whatever the grid's axes: on
+// a rotated-pole or projected grid it is not axis-aligned, and extraction evaluates it
+// per sample (formats/scene.md, "Geographic boxes"). Longitudes in any convention.
+struct GeographicBox {
+  std::optional<AxisRange> lon, lat;  // degrees; at least one is present
+  friend bool operator==(const GeographicBox&, const GeographicBox&) = default;
+};
+
 struct SubVolume {
   std::uint32_t id = 0;  // 1..65535, unique in the scene
   std::string name;      // label, at most 256 bytes
   std::vector<Limit> limits;
   std::map<std::string, AxisRange> domain;  // axis name -> range; absent axis = unbounded
+  std::optional<GeographicBox> geographic = std::nullopt;  // version 3
   friend bool operator==(const SubVolume&, const SubVolume&) = default;
 };
 
@@ -111,8 +122,11 @@ struct Scene {
   std::optional<Terrain> terrain;       // version 2
   std::optional<Sun> sun;               // version 2
   std::optional<Trajectories> trajectories;  // version 2
-  // The format version the canonical form declares: 1 unless a version-2 key is used.
+  // The format version the canonical form declares: the lowest that has every key used.
   std::uint32_t required_format_version() const {
+    for (const SubVolume& sv : subvolumes) {
+      if (sv.geographic) return kSceneVersionGeographicBox;
+    }
     return slices.empty() && !terrain && !sun && !trajectories ? 1 : kSceneVersionGeography;
   }
   friend bool operator==(const Scene&, const Scene&) = default;
@@ -154,8 +168,14 @@ struct ResolvedSubVolume {
   std::string name;
   std::vector<ResolvedLimit> limits;
   // Per x, y, z of the manifest: the domain range, or [-inf, +inf] when the scene does
-  // not name the axis. Not clamped to the grid's extent.
+  // not name the axis. Not clamped to the grid's extent. On a longitude x axis the range
+  // is in the scene's convention (grid/longitude_turns.h); a full turn or more is
+  // [-inf, +inf].
   std::array<AxisRange, 3> box;
+  // A geographic box on a grid whose axes are not longitude and latitude (a rotated-pole
+  // or projected grid): evaluated per sample. On a longitude/latitude grid it is folded
+  // into `box` instead.
+  std::optional<GeographicBox> geographic = std::nullopt;
   friend bool operator==(const ResolvedSubVolume&, const ResolvedSubVolume&) = default;
 };
 

@@ -33,7 +33,9 @@ constexpr std::array<std::string_view, 2> kLevelKeys = {"var", "value"};
 constexpr std::array<std::string_view, 3> kTerrainKeys = {"dem", "var", "image"};
 constexpr std::array<std::string_view, 3> kSunKeys = {"mode", "elevation", "azimuth"};
 constexpr std::array<std::string_view, 2> kTrajectoriesKeys = {"file", "minutes"};
-constexpr std::array<std::string_view, 4> kSubVolumeKeys = {"id", "name", "limits", "domain"};
+constexpr std::array<std::string_view, 5> kSubVolumeKeys = {"id", "name", "limits", "domain",
+                                                            "geographic"};  // the last: version 3
+constexpr std::array<std::string_view, 2> kGeographicKeys = {"lon", "lat"};
 constexpr std::array<std::string_view, 1> kReservedSubVolumeKeys = {"style"};
 constexpr std::array<std::string_view, 3> kLimitKeys = {"var", "min", "max"};
 
@@ -55,7 +57,15 @@ Limit read_limit(const Reader& r, const Json& v, const std::string& path) {
   return limit;
 }
 
-SubVolume read_subvolume(const Reader& r, const Json& v, const std::string& path) {
+AxisRange read_range(const Reader& r, const Json& range, const std::string& p) {
+  if (!range.is_array() || range.size() != 2) {
+    r.wrong_type(range, p, "an array of two numbers [lo, hi]");
+  }
+  return AxisRange{r.number(range[0], index_path(p, 0)), r.number(range[1], index_path(p, 1))};
+}
+
+SubVolume read_subvolume(const Reader& r, const Json& v, const std::string& path,
+                         std::uint64_t declared) {
   r.object(v, path);
   r.keys(v, path, kSubVolumeKeys, kReservedSubVolumeKeys);
   SubVolume sv;
@@ -80,6 +90,21 @@ SubVolume read_subvolume(const Reader& r, const Json& v, const std::string& path
       sv.domain[axis] = AxisRange{r.number(range[0], index_path(p, 0)),
                                   r.number(range[1], index_path(p, 1))};
     }
+  }
+  if (const Json* geographic = r.find(v, "geographic")) {
+    const std::string p = key_path(path, "geographic");
+    if (declared < kSceneVersionGeographicBox) {
+      strict_json::fail(ErrorCode::kInvalidInput, r.what(), p,
+                        "was added in format_version {}; the scene declares {} (write "
+                        "\"format_version\": {})",
+                        kSceneVersionGeographicBox, declared, kSceneVersionGeographicBox);
+    }
+    r.object(*geographic, p);
+    r.keys(*geographic, p, kGeographicKeys, {});
+    GeographicBox box;
+    if (const Json* lon = r.find(*geographic, "lon")) box.lon = read_range(r, *lon, key_path(p, "lon"));
+    if (const Json* lat = r.find(*geographic, "lat")) box.lat = read_range(r, *lat, key_path(p, "lat"));
+    sv.geographic = box;
   }
   return sv;
 }
@@ -221,7 +246,8 @@ Scene read_scene(const Reader& r, const Json& root) {
   const Json& subvolumes = r.require(root, "", "subvolumes");
   r.array(subvolumes, "subvolumes");
   for (std::size_t i = 0; i < subvolumes.size(); ++i) {
-    scene.subvolumes.push_back(read_subvolume(r, subvolumes[i], index_path("subvolumes", i)));
+    scene.subvolumes.push_back(
+        read_subvolume(r, subvolumes[i], index_path("subvolumes", i), declared));
   }
   if (const Json* attributes = r.find(root, "attributes")) {
     r.array(*attributes, "attributes");
@@ -283,6 +309,12 @@ std::string scene_to_json(const Scene& scene) {
         domain[axis] = ordered_json::array({range.lo, range.hi});
       }
       o["domain"] = std::move(domain);
+    }
+    if (sv.geographic) {
+      ordered_json geographic = ordered_json::object();
+      if (sv.geographic->lon) geographic["lon"] = ordered_json::array({sv.geographic->lon->lo, sv.geographic->lon->hi});
+      if (sv.geographic->lat) geographic["lat"] = ordered_json::array({sv.geographic->lat->lo, sv.geographic->lat->hi});
+      o["geographic"] = std::move(geographic);
     }
     subvolumes.push_back(std::move(o));
   }

@@ -58,6 +58,55 @@ AxisRange extent(const Axis& axis) {
                    std::max(axis.values.front(), axis.values.back())};
 }
 
+// A geographic box on the store's grid: folded into the axis box on a longitude/latitude
+// grid (exact planes); kept for per-sample evaluation on a mapped grid; refused on a grid
+// without a place on the Earth.
+void resolve_geographic(const GeographicBox& g, const format::Manifest& m, std::string_view what,
+                        const std::string& path, ResolvedSubVolume& r) {
+  const bool geographic_axes = m.x.kind == AxisKind::kLongitude && m.y.kind == AxisKind::kLatitude;
+  const bool mapped = m.grid_mapping && !m.grid_mapping->proj.empty();
+  if (!geographic_axes && !mapped) {
+    fail(ErrorCode::kInvalidInput, what, path,
+         "the store's axes '{}' and '{}' have no place on the Earth (no grid_mapping), so a "
+         "geographic box cannot be placed; use \"domain\" with the axes' own coordinates",
+         m.x.name, m.y.name);
+  }
+  if (g.lat) {
+    const AxisRange lat_extent = extent(geographic_axes ? m.y : Axis{});
+    if (geographic_axes && (g.lat->hi < lat_extent.lo || g.lat->lo > lat_extent.hi)) {
+      fail(ErrorCode::kInvalidInput, what, key_path(path, "lat"),
+           "[{}, {}] lies outside the store's latitudes [{}, {}]", g.lat->lo, g.lat->hi,
+           lat_extent.lo, lat_extent.hi);
+    }
+  }
+  if (!geographic_axes) {
+    GeographicBox kept = g;
+    if (kept.lon && kept.lon->hi - kept.lon->lo >= kFullTurn) kept.lon.reset();
+    if (kept.lon || kept.lat) r.geographic = kept;
+    return;
+  }
+  auto fold = [&](int axis, const AxisRange& range, std::string_view key, const Axis& a) {
+    if (r.box[axis].lo != -kInf || r.box[axis].hi != kInf) {
+      fail(ErrorCode::kInvalidInput, what, key_path(path, key),
+           "the store's axis '{}' is the {} already bounded in \"domain\"; give the range once",
+           a.name, key == "lon" ? "longitude" : "latitude");
+    }
+    r.box[axis] = range;
+  };
+  if (g.lon) {
+    const AxisRange e = extent(m.x);
+    if (g.lon->hi - g.lon->lo < kFullTurn) {
+      if (longitude_turns(g.lon->lo, g.lon->hi, e.lo, e.hi).empty()) {
+        fail(ErrorCode::kInvalidInput, what, key_path(path, "lon"),
+             "[{}, {}] selects no longitude of the store's {} axis [{}, {}] (in any convention)",
+             g.lon->lo, g.lon->hi, m.x.name, e.lo, e.hi);
+      }
+      fold(0, *g.lon, "lon", m.x);
+    }
+  }
+  if (g.lat) fold(1, *g.lat, "lat", m.y);
+}
+
 }  // namespace
 
 ResolvedScene resolve_scene(const Scene& scene, const format::Manifest& manifest,
@@ -114,6 +163,7 @@ ResolvedScene resolve_scene(const Scene& scene, const format::Manifest& manifest
       }
       r.box[a] = range;
     }
+    if (sv.geographic) resolve_geographic(*sv.geographic, manifest, what, key_path(path, "geographic"), r);
     out.subvolumes.push_back(std::move(r));
   }
   for (std::size_t k = 0; k < scene.attributes.size(); ++k) {

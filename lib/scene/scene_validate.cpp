@@ -106,9 +106,29 @@ void check_subvolume(std::string_view what, const std::string& path, const SubVo
            range.lo, range.hi);
     }
   }
-  if (sv.limits.empty() && sv.domain.empty()) {
+  if (sv.geographic) {
+    const std::string p = key_path(path, "geographic");
+    if (!sv.geographic->lon && !sv.geographic->lat) {
+      fail(ErrorCode::kInvalidInput, what, p, "needs 'lon', 'lat' or both");
+    }
+    for (const auto& [key, range] : {std::pair{"lon", sv.geographic->lon}, std::pair{"lat", sv.geographic->lat}}) {
+      if (!range) continue;
+      const std::string rp = key_path(p, key);
+      check_finite(what, index_path(rp, 0), range->lo);
+      check_finite(what, index_path(rp, 1), range->hi);
+      if (range->lo > range->hi) {
+        fail(ErrorCode::kInvalidInput, what, rp, "lo {} is greater than hi {}", range->lo, range->hi);
+      }
+    }
+    if (sv.geographic->lat && (sv.geographic->lat->lo < -90 || sv.geographic->lat->hi > 90)) {
+      fail(ErrorCode::kInvalidInput, what, key_path(p, "lat"),
+           "[{}, {}] is not within [-90, 90] degrees", sv.geographic->lat->lo,
+           sv.geographic->lat->hi);
+    }
+  }
+  if (sv.limits.empty() && sv.domain.empty() && !sv.geographic) {
     fail(ErrorCode::kInvalidInput, what, path,
-         "a sub-volume needs at least one limit or a domain axis");
+         "a sub-volume needs at least one limit, a domain axis or a geographic box");
   }
 }
 

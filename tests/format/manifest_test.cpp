@@ -86,7 +86,7 @@ TEST(ManifestTest, InvalidVersion) {
   auto bytes = encode_manifest(sample_manifest());
   bytes[8] = std::byte{9};
   expect_error([&] { decode_manifest(bytes, "S/MANIFEST"); }, ErrorCode::kVersionTooNew,
-               {"version 9 is newer than this reader (max 3)"});
+               {fmt::format("version 9 is newer than this reader (max {})", format::kManifestFormatVersion)});
   bytes[8] = std::byte{0};
   expect_error([&] { decode_manifest(bytes, "S/MANIFEST"); }, ErrorCode::kCorrupt,
                {"version 0"});

@@ -21,7 +21,10 @@ TEST(NcargHybridLevelsTest, ScansHybridLevelsAsModelLevels) {
   const InputCatalog c = scan_inputs({kFile}, {});
   ASSERT_EQ(c.variables.size(), 1u);
   EXPECT_EQ(c.variables[0].name, "T");
-  EXPECT_EQ(c.dims(), (Dims3{128, 64, 18}));
+  // 128 longitudes round the Earth: the first meridian is repeated at the end.
+  EXPECT_EQ(c.dims(), (Dims3{129, 64, 18}));
+  EXPECT_TRUE(c.x.periodic);
+  EXPECT_EQ(c.x.values.back(), c.x.values.front() + 360.0);
   EXPECT_EQ(c.z.kind, AxisKind::kModelLevel);
   EXPECT_EQ(c.z.positive, "down");
   EXPECT_EQ(c.z.units, "hybrid_sigma_pressure");
@@ -33,11 +36,13 @@ TEST(NcargHybridLevelsTest, ScansHybridLevelsAsModelLevels) {
 TEST(NcargHybridLevelsTest, ReadsSecondStep) {
   const InputCatalog c = scan_inputs({kFile}, {});
   SlabReader reader(c, {});
-  std::vector<float> level(64 * 128);
+  std::vector<float> level(64 * 129);
   reader.read(0, 1, 17, 18, level);
   const auto raw = read_vara(kFile, "T", {1, 17, 0, 0}, {1, 1, 64, 128});
-  for (std::size_t i = 0; i < level.size(); ++i) {
-    ASSERT_EQ(level[i], static_cast<float>(raw[i])) << i;
+  for (std::size_t j = 0; j < 64; ++j) {
+    for (std::size_t i = 0; i <= 128; ++i) {  // column 128 repeats column 0
+      ASSERT_EQ(level[j * 129 + i], static_cast<float>(raw[j * 128 + i % 128])) << i << ", " << j;
+    }
   }
 }
 

@@ -17,18 +17,23 @@ namespace {
 
 using strielad::testing::ncarg_file;
 using strielad::testing::read_vara;
+using strielad::testing::with_repeated_first_column;
 
 const auto kFile = ncarg_file("nug/rectilinear_grid_3D.nc");
 
 TEST(NcargRectilinearGridTest, AxesKeepStoredValuesAndDirections) {
   const InputCatalog c = scan_inputs({kFile}, {});
-  EXPECT_EQ(c.dims(), (Dims3{192, 96, 17}));
+  // 192 longitudes round the Earth: periodic, the first meridian repeated at 360.
+  EXPECT_EQ(c.dims(), (Dims3{193, 96, 17}));
+  EXPECT_TRUE(c.x.periodic);
 
   EXPECT_EQ(c.x.name, "lon");
   EXPECT_EQ(c.x.kind, AxisKind::kLongitude);
   EXPECT_EQ(c.x.units, "degrees_east");
   EXPECT_EQ(c.x.standard_name, "longitude");
-  EXPECT_EQ(c.x.values, read_vara(kFile, "lon", {0}, {192}));
+  auto lon = read_vara(kFile, "lon", {0}, {192});
+  lon.push_back(lon.front() + 360.0);
+  EXPECT_EQ(c.x.values, lon);
   EXPECT_FALSE(c.x.descending());
 
   EXPECT_EQ(c.y.name, "lat");
@@ -83,17 +88,19 @@ TEST(NcargRectilinearGridTest, SlabReaderReturnsWhatNetcdfReturns) {
   const InputCatalog c = scan_inputs({kFile}, {});
   SlabReader reader(c, {});
   const std::size_t t = c.variable_index("t");
-  std::vector<float> slab(2 * 96 * 192);
+  std::vector<float> slab(2 * 96 * 193);
   reader.read(t, 0, 3, 5, slab);
-  const auto expected = read_vara(kFile, "t", {0, 3, 0, 0}, {1, 2, 96, 192});
+  const auto expected =
+      with_repeated_first_column(read_vara(kFile, "t", {0, 3, 0, 0}, {1, 2, 96, 192}), 192);
   ASSERT_EQ(slab.size(), expected.size());
   for (std::size_t i = 0; i < slab.size(); ++i) {
     ASSERT_EQ(slab[i], static_cast<float>(expected[i])) << "sample " << i;
   }
   // A float variable read into doubles: plain conversion.
-  std::vector<double> top(96 * 192);
+  std::vector<double> top(96 * 193);
   reader.read(t, 0, 16, 17, top);
-  const auto expected_top = read_vara(kFile, "t", {0, 16, 0, 0}, {1, 1, 96, 192});
+  const auto expected_top =
+      with_repeated_first_column(read_vara(kFile, "t", {0, 16, 0, 0}, {1, 1, 96, 192}), 192);
   EXPECT_EQ(top, expected_top);
 }
 

@@ -17,7 +17,7 @@ TEST(UnstructuredGridRejectedTest, IconTriangularGridByDefault) {
   const auto file = ncarg_file("nug/triangular_grid_ICON.nc");
   expect_error([&] { scan_inputs({file}, {}); }, ErrorCode::kUnsupported,
                {file.string(), "unstructured grid", "dimension 'ncells', coordinates clon clat",
-                "only rectilinear lon/lat grids are supported", "cdo remapcon"});
+                "only logically rectangular grids are supported", "cdo remapcon"});
 }
 
 TEST(UnstructuredGridRejectedTest, IconVariableRequestedByName) {
@@ -26,7 +26,7 @@ TEST(UnstructuredGridRejectedTest, IconVariableRequestedByName) {
   o.variables = {"S"};
   expect_error([&] { scan_inputs({file}, o); }, ErrorCode::kUnsupported,
                {"triangular_grid_ICON.nc: variable 'S' is on an unstructured grid (dimension "
-                "'ncells', coordinates clon clat); only rectilinear lon/lat grids are supported "
+                "'ncells', coordinates clon clat); only logically rectangular grids are supported "
                 "— remap it first (e.g. cdo remapcon)"});
 }
 
@@ -48,7 +48,7 @@ TEST(UnstructuredGridRejectedTest, CurvilinearGridWith2DLatLon) {
       .write(dir / "curvilinear.nc");
   expect_error([&] { scan_inputs({dir / "curvilinear.nc"}, {}); }, ErrorCode::kUnsupported,
                {"curvilinear.nc: variable 'T' is on a curvilinear grid", "'y', 'x'", "lon lat",
-                "cdo remapcon"});
+                "cdo remapbil"});
 }
 
 }  // namespace

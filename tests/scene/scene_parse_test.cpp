@@ -179,9 +179,9 @@ TEST(SceneParseTest, DuplicateKeys) {
 }
 
 TEST(SceneParseTest, FormatVersionNewerThanReader) {
-  expect_error([] { parse_scene(R"({"format_version": 3, "slices": [], "subvolumes": []})", "s.json"); },
+  expect_error([] { parse_scene(R"({"format_version": 4, "slices": [], "subvolumes": []})", "s.json"); },
                ErrorCode::kVersionTooNew,
-               {"s.json", "format_version 3 is newer than this reader (max 2)"});
+               {"s.json", "format_version 4 is newer than this reader (max 3)"});
 }
 
 TEST(SceneParseTest, FormatVersionInvalid) {
@@ -200,7 +200,7 @@ TEST(SceneParseTest, UnknownKeys) {
                  {"subvolume: unknown key 'subvolume'",
                   "allowed at the top level: format_version, time, subvolumes, attributes"});
   expect_invalid(one_subvolume(R"("colour": "red", "limits": [{"var": "x", "min": 0}])"),
-                 {"subvolumes[0].colour: unknown key 'colour' (allowed here: id, name, limits, domain)"});
+                 {"subvolumes[0].colour: unknown key 'colour' (allowed here: id, name, limits, domain, geographic)"});
   expect_invalid(with_limit(R"({"var": "x", "min": 0, "inclusive": true})"),
                  {"subvolumes[0].limits[0].inclusive: unknown key", "var, min, max"});
 }
@@ -362,9 +362,9 @@ TEST(SceneParseTest, DomainWithoutLimitsIsABoxOnlySubVolume) {
 
 TEST(SceneParseTest, SubVolumeRestrictingNothing) {
   expect_invalid(one_subvolume(R"("name": "all")"),
-                 {"subvolumes[0]: a sub-volume needs at least one limit or a domain axis"});
+                 {"subvolumes[0]: a sub-volume needs at least one limit, a domain axis or a geographic box"});
   expect_invalid(one_subvolume(R"("limits": [], "domain": {})"),
-                 {"subvolumes[0]: a sub-volume needs at least one limit or a domain axis"});
+                 {"subvolumes[0]: a sub-volume needs at least one limit, a domain axis or a geographic box"});
 }
 
 TEST(SceneParseTest, Attributes) {

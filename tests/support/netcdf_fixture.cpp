@@ -194,6 +194,17 @@ std::vector<double> ramp(std::size_t n, double start, double step) {
   return out;
 }
 
+std::vector<double> with_repeated_first_column(const std::vector<double>& rows, std::size_t nx) {
+  std::vector<double> out;
+  out.reserve(rows.size() / nx * (nx + 1));
+  for (std::size_t r = 0; r < rows.size() / nx; ++r) {
+    out.insert(out.end(), rows.begin() + static_cast<std::ptrdiff_t>(r * nx),
+               rows.begin() + static_cast<std::ptrdiff_t>((r + 1) * nx));
+    out.push_back(rows[r * nx]);
+  }
+  return out;
+}
+
 std::vector<double> read_vara(const std::filesystem::path& path, const std::string& variable,
                               std::vector<std::size_t> start, std::vector<std::size_t> count) {
   int ncid = -1;

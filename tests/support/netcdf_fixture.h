@@ -34,7 +34,7 @@ struct SimpleGrid {
   std::vector<double> time{0.0};
   std::vector<double> lev{1000.0, 850.0};
   std::vector<double> lat{-10.0, 0.0, 10.0};
-  std::vector<double> lon{0.0, 90.0, 180.0, 270.0};
+  std::vector<double> lon{0.0, 10.0, 20.0, 30.0};  // regional: not round the Earth
   std::string time_units = "hours since 2000-01-01 00:00:00";
   std::string calendar = "standard";
   std::string lev_units = "hPa";
@@ -102,6 +102,11 @@ class NetcdfFixture {
 std::vector<double> ramp(std::size_t n, double start = 0.0, double step = 1.0);
 
 // Reads a hyperslab of `variable` ("T" or "grp1/T") directly with nc_get_vara_double.
+// Rows of `nx` values (x fastest) with each row's first value repeated at its end: what a
+// store or catalog holds for a periodic longitude axis whose file lacks the repeated
+// meridian.
+std::vector<double> with_repeated_first_column(const std::vector<double>& rows, std::size_t nx);
+
 std::vector<double> read_vara(const std::filesystem::path& path, const std::string& variable,
                               std::vector<std::size_t> start, std::vector<std::size_t> count);
 
