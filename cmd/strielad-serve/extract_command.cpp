@@ -87,6 +87,7 @@ int run_extract(const ExtractArgs& args) {
   options.step = resolved.time;
   options.level = args.level;
   options.threads = args.threads;
+  options.merge_face_squares = !transform || transform->affine();
   std::unique_ptr<cli::ProgressBar> bar;
   std::mutex bar_mutex;
   options.progress = [&](std::uint64_t done, std::uint64_t total) {

@@ -34,6 +34,11 @@ struct ExtractRequest {
   // where >= 0), bounding the region like the box: a geographic box on a mapped grid
   // (extract/geographic_conditions.h). Their faces are domain-box faces.
   std::vector<std::vector<double>> sample_conditions;
+  // Whole cell squares of the node's faces merged into rectangles (fewer triangles);
+  // false keeps one square per cell, for output frames that are not affine on the grid
+  // (geocentric, or through a map projection), where a rectangle's long edges would
+  // become chords far from the curved face.
+  bool merge_face_squares = true;
   std::vector<std::uint32_t> attribute_fields;  // indices into NodeSamples::fields
   std::vector<std::string> attribute_names;     // same length as attribute_fields
 };

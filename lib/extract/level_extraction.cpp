@@ -42,7 +42,8 @@ LevelExtraction extract_level(const Store& store, const ResolvedScene& scene,
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t i = r.begin(); i != r.end(); ++i) {
                           out.nodes[i] = extract_node(store, &cache, scene, options.step,
-                                                      static_cast<NodeId>(first + i));
+                                                      static_cast<NodeId>(first + i), {},
+                                                      options.merge_face_squares);
                           const std::uint64_t d = done.fetch_add(1) + 1;
                           if (options.progress) options.progress(d, count);
                         }

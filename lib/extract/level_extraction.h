@@ -19,6 +19,8 @@ struct LevelExtractionOptions {
   int threads = 0;                            // 0: all cores
   std::uint64_t cache_bytes = 256ull << 20;   // brick cache shared by the workers
   std::function<void(std::uint64_t done, std::uint64_t total)> progress;
+  // As ExtractRequest::merge_face_squares: false for output frames that bend the lattice.
+  bool merge_face_squares = true;
 };
 
 struct LevelExtractionTotals {

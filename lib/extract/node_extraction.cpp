@@ -287,7 +287,8 @@ std::vector<std::uint32_t> node_brick_variables(const Store& store, const Resolv
 }
 
 NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
-                            std::uint32_t step, NodeId node, std::stop_token stop) {
+                            std::uint32_t step, NodeId node, std::stop_token stop,
+                            bool merge_face_squares) {
   const format::Manifest& m = store.manifest();
   check_node(store, node);
   throw_if_stopped(stop, store, node);
@@ -350,6 +351,7 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
     }
     request.attribute_fields = attribute_fields;
     request.attribute_names = attribute_names;
+    request.merge_face_squares = merge_face_squares;
     // Geographic conditions per horizontal sample, the same on every level of the node.
     for (const auto& horizontal : plan.geographic) {
       std::vector<double>& c = request.sample_conditions.emplace_back();

@@ -67,8 +67,11 @@ struct NodeExtraction {
 // every sub-volume and slice: once stop is requested the call throws kCancelled. Slices
 // (lib/extract/slice_extraction.h) share the node's bricks with the sub-volumes: each
 // needed brick is fetched once.
+// `merge_face_squares`: as ExtractRequest::merge_face_squares (false for output frames
+// that are not affine on the grid).
 NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
-                            std::uint32_t step, NodeId node, std::stop_token stop = {});
+                            std::uint32_t step, NodeId node, std::stop_token stop = {},
+                            bool merge_face_squares = true);
 
 // The variables whose bricks extract_node would read for this node, decided from the
 // index alone (sorted, distinct; empty when every sub-volume is skipped). Prefetching

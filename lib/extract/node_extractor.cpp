@@ -505,7 +505,10 @@ class Kernel {
   // the cut cells and rectangles beside it (and the node sides meeting it at the node's
   // edges) have, so the mesh stays closed; a w x h rectangle takes 2 (w + h) - 2
   // triangles instead of 2 w h. Clears the marks.
-  void inside_rectangles() {
+  // `merge` false: every square on its own (two triangles), for output frames that bend
+  // straight lines of the lattice (a big rectangle's chords would cut through a thin
+  // layer on a curved Earth).
+  void inside_rectangles(bool merge) {
     for (int side = 0; side < 6; ++side) {
       const int a = side / 2;
       const std::size_t nu = dims_[(a + 1) % 3] - 1, nv = dims_[(a + 2) % 3] - 1;
@@ -514,9 +517,9 @@ class Kernel {
         for (std::size_t u0 = 0; u0 < nu; ++u0) {
           if (!sq[v0 * nu + u0]) continue;
           std::size_t w = 1;
-          while (u0 + w < nu && sq[v0 * nu + u0 + w]) ++w;
+          while (merge && u0 + w < nu && sq[v0 * nu + u0 + w]) ++w;
           std::size_t h = 1;
-          for (bool full = true; full && v0 + h < nv; h += full ? 1 : 0) {
+          for (bool full = merge; full && v0 + h < nv; h += full ? 1 : 0) {
             const std::uint8_t* row = sq + (v0 + h) * nu + u0;
             full = std::all_of(row, row + w, [](std::uint8_t b) { return b != 0; });
           }
@@ -985,7 +988,7 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
   } else {
     extract_cells(set.inside64.data(), set, dims, scratch, kernel, local);
   }
-  kernel.inside_rectangles();
+  kernel.inside_rectangles(request.merge_face_squares);
 
   // Lattice to axis coordinates, normals, attributes: once per vertex.
   builder.drop_unused_vertices();

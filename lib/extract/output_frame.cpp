@@ -354,6 +354,12 @@ void FrameTransform::apply(Mesh& mesh) const {
   }
 }
 
+bool FrameTransform::affine() const {
+  if (frame_ == OutputFrame::kAxis) return true;
+  if (frame_ == OutputFrame::kEcef) return false;
+  return projection_.identity() && vertical_.kind == VerticalPlacement::Kind::kHeightAxis;
+}
+
 void transform_mesh(Mesh& mesh, const format::Manifest& manifest, OutputFrame frame) {
   if (frame == OutputFrame::kAxis) return;
   FrameTransform(manifest, frame, choose_vertical_placement(manifest)).apply(mesh);

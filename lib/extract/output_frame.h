@@ -70,6 +70,10 @@ class FrameTransform {
   FrameTransform(const format::Manifest& manifest, OutputFrame frame, VerticalPlacement vertical);
 
   OutputFrame frame() const { return frame_; }
+  // Whether the map from axis coordinates is affine (the axis frame; lonlat and metric of
+  // a longitude/latitude grid on a height axis): straight lattice lines stay straight, so
+  // merged face rectangles stay exact (ExtractRequest::merge_face_squares).
+  bool affine() const;
   const VerticalPlacement& vertical() const { return vertical_; }
 
   // Positions and normals of `mesh`, from axis coordinates into the frame. With a height

@@ -238,12 +238,14 @@ std::string cf_grid_mapping_proj(const GridMapping& mapping, const Axis& x, cons
                      what, x.name, x.units, y.name, y.units, mapping.variable);
   }
   std::string projection;
-  const std::string lat0 = fmt::format(" +lat_0={}", num(p.required_latitude("latitude_of_projection_origin")));
+  auto origin_latitude = [&] {
+    return fmt::format(" +lat_0={}", num(p.required_latitude("latitude_of_projection_origin")));
+  };
   if (name == "lambert_conformal_conic") {
-    projection = "+proj=lcc" + p.standard_parallels() + lat0 +
+    projection = "+proj=lcc" + p.standard_parallels() + origin_latitude() +
                  fmt::format(" +lon_0={}", num(p.required("longitude_of_central_meridian")));
   } else if (name == "albers_conical_equal_area") {
-    projection = "+proj=aea" + p.standard_parallels() + lat0 +
+    projection = "+proj=aea" + p.standard_parallels() + origin_latitude() +
                  fmt::format(" +lon_0={}", num(p.required("longitude_of_central_meridian")));
   } else if (name == "polar_stereographic") {
     const double lat = p.required_latitude("latitude_of_projection_origin");
@@ -253,17 +255,17 @@ std::string cf_grid_mapping_proj(const GridMapping& mapping, const Axis& x, cons
                        "is {}; a polar stereographic projection has +90 or -90",
                        what, mapping.variable, lat);
     }
-    projection = "+proj=stere" + lat0 +
+    projection = "+proj=stere" + origin_latitude() +
                  fmt::format(" +lon_0={}", num(p.required_one_of({"straight_vertical_longitude_from_pole",
                                                                   "longitude_of_projection_origin"}))) +
                  p.true_scale("scale_factor_at_projection_origin");
   } else if (name == "stereographic") {
-    projection = "+proj=stere" + lat0 +
+    projection = "+proj=stere" + origin_latitude() +
                  fmt::format(" +lon_0={} +k_0={}", num(p.required("longitude_of_projection_origin")),
                              num(p.positive("scale_factor_at_projection_origin",
                                             p.optional("scale_factor_at_projection_origin").value_or(1.0))));
   } else if (name == "transverse_mercator") {
-    projection = "+proj=tmerc" + lat0 +
+    projection = "+proj=tmerc" + origin_latitude() +
                  fmt::format(" +lon_0={} +k_0={}", num(p.required("longitude_of_central_meridian")),
                              num(p.positive("scale_factor_at_central_meridian",
                                             p.required("scale_factor_at_central_meridian"))));
@@ -272,13 +274,13 @@ std::string cf_grid_mapping_proj(const GridMapping& mapping, const Axis& x, cons
                  fmt::format(" +lon_0={}", num(p.required("longitude_of_projection_origin"))) +
                  p.true_scale("scale_factor_at_projection_origin");
   } else if (name == "lambert_azimuthal_equal_area") {
-    projection = "+proj=laea" + lat0 +
+    projection = "+proj=laea" + origin_latitude() +
                  fmt::format(" +lon_0={}", num(p.required("longitude_of_projection_origin")));
   } else if (name == "azimuthal_equidistant") {
-    projection = "+proj=aeqd" + lat0 +
+    projection = "+proj=aeqd" + origin_latitude() +
                  fmt::format(" +lon_0={}", num(p.required("longitude_of_projection_origin")));
   } else if (name == "orthographic") {
-    projection = "+proj=ortho" + lat0 +
+    projection = "+proj=ortho" + origin_latitude() +
                  fmt::format(" +lon_0={}", num(p.required("longitude_of_projection_origin")));
   } else if (name == "lambert_cylindrical_equal_area") {
     projection = "+proj=cea" +

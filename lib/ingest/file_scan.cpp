@@ -76,6 +76,26 @@ bool variable_in_scope(int grpid, const std::string& name) {
   return false;
 }
 
+// Whether variable `name` (in group `grpid` or an ancestor) has strictly monotonic values
+// once a wrapped longitude is unwrapped.
+bool monotonic_in_scope(int grpid, const std::string& name) {
+  for (std::optional<int> g = grpid; g; g = parent_group(*g)) {
+    int varid = -1;
+    if (nc_inq_varid(*g, name.c_str(), &varid) != NC_NOERR) continue;
+    Axis a;
+    a.name = name;
+    a.values = read_all_as_double(*g, varid, name);
+    unwrap_longitudes(a.values);
+    try {
+      check_axis_values(a, name);
+      return true;
+    } catch (const Error&) {
+      return false;
+    }
+  }
+  return false;
+}
+
 bool is_unstructured_dimension_name(std::string_view name) {
   static constexpr std::array<std::string_view, 14> kNames{
       "ncells", "ncell",  "cell",  "cells",     "ncol",        "ncols",           "nod2",
@@ -276,6 +296,18 @@ std::optional<Error> FileScanner::detect_unstructured(
       if (c.dimids.size() == 1 && c.dimids[0] == dimids[i]) names.push_back(c.name);
     }
     const std::string dim = dimension_name(grpid, dimids[i]);
+    // Several 1-D coordinates over a dimension of a rectangular grid (their values
+    // monotonic, as cell centres of an unstructured grid never are): which one is the
+    // dimension's coordinate is not for the scanner to guess.
+    if (names.size() > 1 && std::all_of(names.begin(), names.end(), [&](const std::string& n) {
+          return monotonic_in_scope(grpid, n);
+        })) {
+      return make_error(ErrorCode::kInvalidInput,
+                        "{}: variable '{}' dimension '{}' has no coordinate variable, and {} 1-D "
+                        "variables over it could be one ({}); rename the one that is (e.g. "
+                        "ncrename -v {},{})",
+                        file_, name, dim, names.size(), join(names, ", "), names.front(), dim);
+    }
     if (!names.empty() || is_unstructured_dimension_name(dim)) {
       const std::string coordinates =
           names.empty() ? std::string() : ", coordinates " + join(names, " ");

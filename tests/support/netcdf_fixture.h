@@ -101,12 +101,12 @@ class NetcdfFixture {
 // 0, 1, 2, ... scaled: start + i * step.
 std::vector<double> ramp(std::size_t n, double start = 0.0, double step = 1.0);
 
-// Reads a hyperslab of `variable` ("T" or "grp1/T") directly with nc_get_vara_double.
 // Rows of `nx` values (x fastest) with each row's first value repeated at its end: what a
 // store or catalog holds for a periodic longitude axis whose file lacks the repeated
 // meridian.
 std::vector<double> with_repeated_first_column(const std::vector<double>& rows, std::size_t nx);
 
+// Reads a hyperslab of `variable` ("T" or "grp1/T") directly with nc_get_vara_double.
 std::vector<double> read_vara(const std::filesystem::path& path, const std::string& variable,
                               std::vector<std::size_t> start, std::vector<std::size_t> count);
 
