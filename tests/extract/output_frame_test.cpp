@@ -77,15 +77,76 @@ TEST(OutputFrameTest, ClosedMeshesStayClosedAndOutward) {
   }
 }
 
-TEST(OutputFrameTest, PressureAxisHasNoMetricFrame) {
+TEST(OutputFrameTest, PressureLevelsArePlacedByTheStandardAtmosphere) {
   format::Manifest m = lon_lat_height(0, 1, 0, 1, 1, 2);
-  m.z.kind = AxisKind::kPressure;
-  m.z.name = "plev";
+  m.z = Axis{"plev", AxisKind::kPressure, "hPa", "", "", "", {1000, 500}};
+  const VerticalPlacement v = choose_vertical_placement(m);
+  EXPECT_EQ(v.kind, VerticalPlacement::Kind::kStandardAtmosphere);
+  EXPECT_NE(v.description.find("standard atmosphere"), std::string::npos);
   Mesh mesh;
-  testing::expect_error([&] { transform_mesh(mesh, m, OutputFrame::kEcef); },
-                        ErrorCode::kUnsupported, {"plev"});
+  mesh.positions = {{0.5, 0.5, 500}, {0.5, 0.5, 226.32}};
+  transform_mesh(mesh, m, OutputFrame::kLonLat);
+  // ICAO: 500 hPa at 5574 m, 226.32 hPa at the tropopause, 11000 m.
+  EXPECT_NEAR(mesh.positions[0][2], 5574.4, 1.0);
+  EXPECT_NEAR(mesh.positions[1][2], 11000.0, 1.0);
+  EXPECT_EQ(mesh.positions[0][0], 0.5);
+  EXPECT_EQ(mesh.positions[0][1], 0.5);
+}
+
+TEST(OutputFrameTest, AGeopotentialVariablePlacesThemWhenTheStoreHasOne) {
+  format::Manifest m = lon_lat_height(0, 1, 0, 1, 1, 2);
+  m.z = Axis{"plev", AxisKind::kPressure, "Pa", "", "", "", {100000, 50000}};
+  for (const char* name : {"t", "z"}) {
+    format::StoreVariable v;
+    v.name = name;
+    v.units = std::string(name) == "z" ? "m**2 s**-2" : "K";
+    m.variables.push_back(v);
+  }
+  const VerticalPlacement v = choose_vertical_placement(m);
+  ASSERT_EQ(v.kind, VerticalPlacement::Kind::kHeightVariable);
+  EXPECT_EQ(v.variable, "z");
+  EXPECT_DOUBLE_EQ(v.metres_per_unit, 1.0 / 9.80665);
+  Mesh mesh;
+  mesh.positions = {{0.5, 0.5, 50000}};
+  mesh.attribute_names = {"z"};
+  mesh.attributes = {{55000.0f}};
+  FrameTransform(m, OutputFrame::kLonLat, v).apply(mesh);
+  EXPECT_NEAR(mesh.positions[0][2], 55000.0 / 9.80665, 1e-6);
+  // Named explicitly; a variable that is not a height is refused naming its units.
+  testing::expect_error([&] { choose_vertical_placement(m, "t"); }, ErrorCode::kUnsupported,
+                        {"height variable 't' has units 'K'"});
+  testing::expect_error([&] { choose_vertical_placement(m, "nope"); }, ErrorCode::kNotFound, {"nope"});
+  // Meshes must carry it.
+  Mesh bare;
+  bare.positions = {{0.5, 0.5, 50000}};
+  testing::expect_error([&] { FrameTransform(m, OutputFrame::kEcef, v).apply(bare); },
+                        ErrorCode::kInvalidArgument, {"'z'", "attribute"});
+}
+
+TEST(OutputFrameTest, ModelLevelsWithoutAHeightAreRefused) {
+  format::Manifest m = lon_lat_height(0, 1, 0, 1, 1, 2);
+  m.z = Axis{"lev", AxisKind::kModelLevel, "1", "", "", "", {1, 2}};
+  testing::expect_error([&] { choose_vertical_placement(m); }, ErrorCode::kUnsupported,
+                        {"vertical axis 'lev' (model_level) has no height", "--height-var"});
   testing::expect_error([&] { parse_output_frame("utm"); }, ErrorCode::kInvalidArgument,
-                        {"utm", "ecef"});
+                        {"utm", "lonlat", "ecef"});
+}
+
+TEST(OutputFrameTest, ACartesianGridHasNoPlaceOnTheEarth) {
+  format::Manifest m = lon_lat_height(0, 1000, 0, 1000, 100, 2);
+  m.x.kind = AxisKind::kProjectionX;
+  m.y.kind = AxisKind::kProjectionY;
+  m.x.units = m.y.units = "m";
+  m.z.units = "m";
+  const VerticalPlacement v = choose_vertical_placement(m);
+  for (OutputFrame f : {OutputFrame::kLonLat, OutputFrame::kEcef}) {
+    testing::expect_error([&] { FrameTransform(m, f, v); }, ErrorCode::kUnsupported,
+                          {"needs the grid's place on the Earth", "Cartesian"});
+  }
+  Mesh mesh;
+  mesh.positions = {{1000, 0, 50}};
+  FrameTransform(m, OutputFrame::kLocalMetric, v).apply(mesh);  // metres about the centre
+  EXPECT_EQ(mesh.positions[0], (std::array<double, 3>{500, -500, 50}));
 }
 
 }  // namespace
