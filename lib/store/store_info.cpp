@@ -5,9 +5,11 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/text_columns.h"
+#include "geo/grid_projection.h"
 #include "geo/time_axis_dates.h"
 
 namespace strielad {
@@ -54,6 +56,35 @@ void describe_time(const Store& store, std::ostream& out) {
   if (!why_not.empty()) fmt::print(out, "  no dates: {}\n", why_not);
 }
 
+// Where the grid is on the Earth: longitude/latitude axes, a grid mapping (with its PROJ
+// pipeline and the true position of the grid's corners), or nowhere.
+void describe_placement(const format::Manifest& m, std::ostream& out) {
+  if (m.grid_mapping && !m.grid_mapping->proj.empty()) {
+    fmt::print(out, "placed     by grid mapping '{}' ({})\n", m.grid_mapping->variable,
+               m.grid_mapping->name);
+    fmt::print(out, "  proj     {}\n", m.grid_mapping->proj);
+    const geo::GridProjection p(m.grid_mapping->proj);
+    TextColumns corners;
+    for (const auto& [name, x, y] :
+         {std::tuple{"first x, first y", m.x.values.front(), m.y.values.front()},
+          std::tuple{"last x, first y", m.x.values.back(), m.y.values.front()},
+          std::tuple{"first x, last y", m.x.values.front(), m.y.values.back()},
+          std::tuple{"last x, last y", m.x.values.back(), m.y.values.back()}}) {
+      const auto ll = p.to_geographic(x, y);
+      corners.add_row({name, fmt::format("({}, {}) at lon {:.6f}, lat {:.6f}", x, y, ll[0], ll[1])});
+    }
+    corners.print(out, "  ");
+  } else if (m.x.kind == AxisKind::kLongitude && m.y.kind == AxisKind::kLatitude) {
+    fmt::print(out, "placed     longitude and latitude{}\n",
+               m.grid_mapping ? fmt::format(" (grid mapping '{}', {})", m.grid_mapping->variable,
+                                            m.grid_mapping->name)
+                              : std::string());
+  } else {
+    fmt::print(out, "placed     nowhere on the Earth: axes '{}' and '{}' without a grid mapping\n",
+               m.x.name, m.y.name);
+  }
+}
+
 }  // namespace
 
 void describe_store(const Store& store, std::ostream& out) {
@@ -70,9 +101,11 @@ void describe_store(const Store& store, std::ostream& out) {
                   fmt::format("{} ({}, {}): {} .. {}, {}, {}", a->size(), axis_kind_name(a->kind),
                               a->units.empty() ? "no units" : a->units, a->values.front(),
                               a->values.back(), a->descending() ? "descending" : "ascending",
-                              is_uniform(*a) ? "uniform" : "non-uniform")});
+                              is_uniform(*a) ? "uniform" : "non-uniform") +
+                      (a->periodic ? ", periodic (round the Earth)" : "")});
   }
   axes.print(out, "  ");
+  describe_placement(m, out);
   describe_time(store, out);
   fmt::print(out, "variables  {}\n", m.variables.size());
   TextColumns variables;
