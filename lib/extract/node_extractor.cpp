@@ -1201,9 +1201,15 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
   bool equal_bounds = false;
   for (const ExtractLimit& limit : request.limits) equal_bounds = equal_bounds || limit.min == limit.max;
   const bool sheets = equal_bounds || corner_crossings != corner_crossings_before;
-  if (sheets || rounded_onto_sample) remove_collapsed_triangles(mesh, sheets);
-  // Rounding onto samples can also leave three distinct vertices on one line.
-  if (rounded_onto_sample) split_collinear_slivers(mesh);
+  // The general clipper's points on the line where two conditions meet (two box planes:
+  // a domain box's vertical edge) come from different lattice elements and can differ by
+  // an ulp on the lattice while mapping to one axis position (54 zero-area triangles on a
+  // box with a limit over three axes at level 1, robustness case box-on-integer-hpa).
+  const bool clipped = local.clipped_tets > 0;
+  if (sheets || rounded_onto_sample || clipped) remove_collapsed_triangles(mesh, sheets);
+  // Rounding onto samples, and the clipper's points along such a line, can also leave three
+  // distinct vertices on one line.
+  if (rounded_onto_sample || clipped) split_collinear_slivers(mesh);
   if (stats) *stats = local;
   return mesh;
 }

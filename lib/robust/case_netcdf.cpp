@@ -26,10 +26,10 @@ void put_text(int ncid, int varid, const char* name, const std::string& value,
 
 int define_coordinate(int ncid, const char* name, std::size_t length,
                       const std::vector<std::pair<const char*, std::string>>& attributes,
-                      const std::string& context) {
+                      const std::string& context, nc_type type = NC_DOUBLE) {
   int dimid = -1, varid = -1;
   nc_check(nc_def_dim(ncid, name, length, &dimid), context + ": dimension " + name);
-  nc_check(nc_def_var(ncid, name, NC_DOUBLE, 1, &dimid, &varid), context + ": variable " + name);
+  nc_check(nc_def_var(ncid, name, type, 1, &dimid, &varid), context + ": variable " + name);
   for (const auto& [key, value] : attributes) put_text(ncid, varid, key, value, context);
   return varid;
 }
@@ -41,9 +41,17 @@ void write_all(const ExtremeCase& c, int ncid, const std::string& context) {
       {{"standard_name", "time"}, {"units", "seconds since 2020-01-01 00:00:00"},
        {"calendar", "standard"}},
       context);
-  const int v_z = define_coordinate(
-      ncid, "height", in.z.size(),
-      {{"standard_name", "height"}, {"units", "m"}, {"positive", "up"}, {"axis", "Z"}}, context);
+  const char* z_name = in.integer_pressure_levels ? "plev" : "height";
+  const int v_z =
+      in.integer_pressure_levels
+          ? define_coordinate(ncid, z_name, in.z.size(),
+                              {{"standard_name", "air_pressure"}, {"units", "hPa"},
+                               {"positive", "down"}, {"axis", "Z"}},
+                              context, NC_INT)
+          : define_coordinate(ncid, z_name, in.z.size(),
+                              {{"standard_name", "height"}, {"units", "m"}, {"positive", "up"},
+                               {"axis", "Z"}},
+                              context);
   const int v_lat = define_coordinate(
       ncid, "lat", in.lat.size(), {{"standard_name", "latitude"}, {"units", "degrees_north"}},
       context);
@@ -51,7 +59,7 @@ void write_all(const ExtremeCase& c, int ncid, const std::string& context) {
       ncid, "lon", in.lon.size(), {{"standard_name", "longitude"}, {"units", "degrees_east"}},
       context);
   std::array<int, 4> dims{};
-  const char* names[4] = {"time", "height", "lat", "lon"};
+  const char* names[4] = {"time", z_name, "lat", "lon"};
   for (int d = 0; d < 4; ++d) {
     nc_check(nc_inq_dimid(ncid, names[d], &dims[d]), context + ": dimension " + names[d]);
   }

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "grid/axis.h"
+
 namespace strielad::robust {
 namespace {
 
@@ -76,6 +78,18 @@ std::vector<std::vector<double>> reference_level0(const ExtremeCase& c) {
       } else {
         level0[i] = to_store_type(raw, is_double);
       }
+    }
+    // Longitudes round the Earth: the store repeats the first meridian at the end.
+    if (longitudes_close_the_circle(in.lon)) {
+      const std::size_t nx = in.lon.size();
+      std::vector<double> closed;
+      closed.reserve(n / nx * (nx + 1));
+      for (std::size_t row = 0; row < n / nx; ++row) {
+        closed.insert(closed.end(), level0.begin() + static_cast<std::ptrdiff_t>(row * nx),
+                      level0.begin() + static_cast<std::ptrdiff_t>((row + 1) * nx));
+        closed.push_back(level0[row * nx]);
+      }
+      level0 = std::move(closed);
     }
     steps.push_back(std::move(level0));
   }

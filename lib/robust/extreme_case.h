@@ -49,6 +49,9 @@ struct CaseInput {
   // Values (t, z, y, x), x fastest, in the file's type (packed integers for
   // kShortPacked); empty: the variable is declared but never written (huge grids).
   std::vector<double> values;
+  // The vertical axis as integer hPa (NC_INT "plev", positive down) instead of height in
+  // metres: z holds the pressures.
+  bool integer_pressure_levels = false;
   std::optional<double> fill_value;             // _FillValue
   std::optional<double> scale_factor, add_offset;  // kShortPacked: float attributes
 };
@@ -69,6 +72,16 @@ struct ExtremeCase {
   std::vector<Limit> limits;
   // Optional extra sub-volume: a longitude domain [lo, hi] without limits.
   std::optional<std::array<double, 2>> lon_domain;
+  // Further sub-volumes (ids 200, 201, ...): a domain box over any of the axes (x, y, z in
+  // the case's coordinates; absent = unbounded), with the first limit or without limits.
+  struct DomainBox {
+    std::array<std::optional<std::array<double, 2>>, 3> ranges;
+    bool with_limit = false;
+  };
+  std::vector<DomainBox> domains;
+  // Also check each sub-volume's seamless union per level: closed and consistently
+  // oriented, its volume equal to the VTK table-clip pipeline's on the same nodes.
+  bool check_unions = false;
   // Stages not listed are expected kOk (kNotRun after an expected error).
   std::map<Stage, Expectation> expected;
   // What should happen and why, for the table and docs/robustness.md.

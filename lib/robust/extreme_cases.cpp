@@ -427,6 +427,105 @@ std::vector<ExtremeCase> axis_cases() {
   return cases;
 }
 
+// A domain box on one axis [v[i], v[j]] (bounds exactly on samples), with or without the
+// case's limit.
+ExtremeCase::DomainBox on_samples(int axis, const std::vector<double>& v, std::size_t i,
+                                  std::size_t j, bool with_limit) {
+  ExtremeCase::DomainBox box;
+  box.ranges[axis] = std::array<double, 2>{std::min(v[i], v[j]), std::max(v[i], v[j])};
+  box.with_limit = with_limit;
+  return box;
+}
+
+// Boxes whose bounds are sample coordinates (issue 27: round numbers on a 2.5-degree grid,
+// integer pressure levels), on every axis, from a node face to a node face, from a sample
+// inside a node to a node face and between two samples inside nodes; with and without a
+// limit; and one over all three axes.
+void boxes_on_samples(ExtremeCase& c) {
+  const std::array<const std::vector<double>*, 3> axes{&c.input.lon, &c.input.lat, &c.input.z};
+  for (int a = 0; a < 3; ++a) {
+    const auto& v = *axes[a];
+    const std::size_t b = c.brick, n = v.size();
+    for (bool limit : {false, true}) {
+      if (n > 2 * b) c.domains.push_back(on_samples(a, v, b, 2 * b, limit));
+      if (n > b + 2) c.domains.push_back(on_samples(a, v, 1, b, limit));
+      if (n > 4) c.domains.push_back(on_samples(a, v, 1, n - 2, limit));
+    }
+  }
+  ExtremeCase::DomainBox all;
+  for (int a = 0; a < 3; ++a) {
+    const auto& v = *axes[a];
+    all.ranges[a] = std::array<double, 2>{std::min(v[1], v[v.size() - 2]), std::max(v[1], v[v.size() - 2])};
+  }
+  all.with_limit = true;
+  c.domains.push_back(all);
+  c.check_unions = true;
+}
+
+std::vector<ExtremeCase> box_cases() {
+  std::vector<ExtremeCase> cases;
+  {
+    ExtremeCase c;
+    c.name = "box-on-samples";
+    c.extreme = "domain boxes with bounds exactly on samples (node faces and inside nodes) on "
+                "a non-uniform ascending lon, a descending lat and a descending non-uniform "
+                "height axis";
+    c.input = small_grid();
+    for (std::size_t i = 0; i < c.input.lon.size(); ++i) c.input.lon[i] = 5.0 + 0.1 * double(i) + 0.004 * double(i * i);
+    std::reverse(c.input.lat.begin(), c.input.lat.end());
+    for (std::size_t k = 0; k < c.input.z.size(); ++k) c.input.z[k] = 30.0 * double(k * k) + 10.0 * double(k);
+    std::reverse(c.input.z.begin(), c.input.z.end());
+    set_values(c.input, smooth);
+    c.limits = {at_least(0.5)};
+    boxes_on_samples(c);
+    c.expected_text =
+        "ok: every sub-volume's seamless union is closed at every level (a bound on a node "
+        "face makes that face a domain-box face; a limit meeting a bound on a sample plane "
+        "meets it at the edge crossing), boxes exact, volumes VTK's";
+    cases.push_back(std::move(c));
+  }
+  {
+    ExtremeCase c;
+    c.name = "box-on-integer-hpa";
+    c.extreme = "the same boxes on integer pressure levels in hPa (NC_INT, descending)";
+    c.input = small_grid();
+    c.input.integer_pressure_levels = true;
+    c.input.z = {1000, 925, 850, 700, 600, 500, 400, 300, 250};
+    set_values(c.input, smooth);
+    c.limits = {at_least(0.5)};
+    boxes_on_samples(c);
+    c.expected_text = "ok: as box-on-samples, on the pressure axis as stored";
+    cases.push_back(std::move(c));
+  }
+  {
+    ExtremeCase c;
+    c.name = "lon-range-across-seam";
+    c.extreme = "a global grid 0 .. 337.5 E every 22.5 degrees (periodic) with longitude "
+                "ranges across its seam in three conventions, on samples and between them";
+    c.input = small_grid(16, 11, 9);
+    c.input.lon = linspace(0.0, 337.5, 16);
+    c.input.lat = linspace(-25.0, 25.0, 11);
+    set_values(c.input, smooth);
+    c.limits = {at_least(0.5)};
+    for (const auto& range : {std::array<double, 2>{-45, 45}, std::array<double, 2>{315, 405},
+                              std::array<double, 2>{-400, -300}, std::array<double, 2>{300, 380}}) {
+      for (bool limit : {false, true}) {
+        ExtremeCase::DomainBox box;
+        box.ranges[0] = range;
+        box.with_limit = limit;
+        c.domains.push_back(box);
+      }
+    }
+    c.check_unions = true;
+    c.expected_text =
+        "ok: the converter repeats the first meridian at 360 (the cell across the seam is "
+        "kept); each range comes out in its own convention, continuous across the seam, "
+        "its union closed at every level, volumes VTK's";
+    cases.push_back(std::move(c));
+  }
+  return cases;
+}
+
 std::vector<ExtremeCase> size_cases() {
   std::vector<ExtremeCase> cases;
   {
@@ -485,7 +584,7 @@ std::vector<ExtremeCase> size_cases() {
 std::vector<ExtremeCase> extreme_cases() {
   std::vector<ExtremeCase> all;
   for (auto group : {value_cases(), missing_data_cases(), threshold_cases(), axis_cases(),
-                     size_cases()}) {
+                     box_cases(), size_cases()}) {
     for (auto& c : group) all.push_back(std::move(c));
   }
   return all;
