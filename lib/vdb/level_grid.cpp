@@ -4,12 +4,15 @@
 
 #include <openvdb/io/File.h>
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "extract/geographic_conditions.h"
 #include "extract/node_extraction.h"
+#include "grid/longitude_turns.h"
 
 namespace strielad::vdb {
 namespace {
@@ -179,14 +182,28 @@ std::vector<SubVolumeGridSummary> write_subvolume_vdb(const Store& store,
       const std::array<const Axis*, 3> axes{&m.x, &m.y, &m.z};
       for (int a = 0; a < 3 && !skip; ++a) {
         range[a] = {box.hi[a] + 1, box.lo[a]};  // empty until a sample fits
+        // A longitude range holds a sample at any whole turn (grid/longitude_turns.h).
+        const bool turns = a == 0 && m.x.kind == AxisKind::kLongitude &&
+                           std::isfinite(sv.box[0].lo) && std::isfinite(sv.box[0].hi);
         for (std::size_t c = box.lo[a]; c <= box.hi[a]; ++c) {
           const double coord = axes[a]->values[layout.fine_index(level, a, c)];
-          if (coord >= sv.box[a].lo && coord <= sv.box[a].hi) {
+          const bool inside = turns ? !longitude_turns(sv.box[0].lo, sv.box[0].hi, coord, coord).empty()
+                                    : coord >= sv.box[a].lo && coord <= sv.box[a].hi;
+          if (inside) {
             range[a][0] = std::min(range[a][0], c);
             range[a][1] = std::max(range[a][1], c);
           }
         }
         skip = range[a][0] > range[a][1];
+      }
+      // A geographic box on a mapped grid: its conditions at the node's horizontal samples.
+      std::vector<std::vector<double>> geographic;
+      if (!skip && sv.geographic) {
+        std::array<std::vector<std::size_t>, 2> fine;
+        for (int a = 0; a < 2; ++a) {
+          for (std::size_t c = box.lo[a]; c <= box.hi[a]; ++c) fine[a].push_back(layout.fine_index(level, a, c));
+        }
+        geographic = geographic_conditions(*sv.geographic, *GeoLocation::of(m), fine[0], fine[1]);
       }
       if (skip) {
         ++summary.nodes_skipped;
@@ -206,7 +223,10 @@ std::vector<SubVolumeGridSummary> write_subvolume_vdb(const Store& store,
           for (std::size_t x = range[0][0]; x <= range[0][1]; ++x) {
             const std::size_t i =
                 ((z - box.lo[2]) * ny + (y - box.lo[1])) * nx + (x - box.lo[0]);
-            if (inside_limits(ptrs, sv, i)) {
+            const std::size_t h = (y - box.lo[1]) * nx + (x - box.lo[0]);
+            const bool in_geographic = std::all_of(geographic.begin(), geographic.end(),
+                                                   [h](const auto& c) { return c[h] >= 0; });
+            if (in_geographic && inside_limits(ptrs, sv, i)) {
               accessor.setValue(openvdb::Coord(int(x), int(y), int(z)), 1.0f);
             }
           }
