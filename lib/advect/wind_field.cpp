@@ -63,6 +63,13 @@ WindField::WindField(WindGrid grid, double t0, WindSlice at_t0, double t1, WindS
       }
     }
   }
+  if (grid_.periodic_x && (grid_.horizontal != Horizontal::kDegrees ||
+                           std::fabs(grid_.axes[0].back() - grid_.axes[0].front()) != 360.0)) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "wind grid: a periodic x axis is a longitude axis spanning 360 degrees "
+                     "(it spans {} .. {})",
+                     grid_.axes[0].front(), grid_.axes[0].back());
+  }
   if (!std::isfinite(t0) || !std::isfinite(t1) || !(t1 > t0)) {
     throw make_error(ErrorCode::kInvalidArgument, "wind field: times {} and {}: need t0 < t1, finite",
                      t0, t1);
@@ -80,11 +87,18 @@ WindField::WindField(WindGrid grid, double t0, WindSlice at_t0, double t1, WindS
   }
 }
 
+double WindField::grid_x(double x) const {
+  if (!grid_.periodic_x) return x;
+  const auto& ax = grid_.axes[0];
+  const double lo = std::min(ax.front(), ax.back());
+  return lo + std::fmod(std::fmod(x - lo, 360.0) + 360.0, 360.0);
+}
+
 bool WindField::inside(const Vec3& p) const {
   std::size_t i;
   double f;
   for (int a = 0; a < 3; ++a) {
-    if (!locate(grid_.axes[a], p[a], i, f)) return false;
+    if (!locate(grid_.axes[a], a == 0 ? grid_x(p[0]) : p[a], i, f)) return false;
   }
   return true;
 }
@@ -93,7 +107,7 @@ Sample WindField::rate(const Vec3& p, double t, Vec3& rate) const {
   std::array<std::size_t, 3> i{};
   std::array<double, 3> f{};
   for (int a = 0; a < 3; ++a) {
-    if (!locate(grid_.axes[a], p[a], i[a], f[a])) return Sample::kOutside;
+    if (!locate(grid_.axes[a], a == 0 ? grid_x(p[0]) : p[a], i[a], f[a])) return Sample::kOutside;
   }
   const double ft = std::clamp((t - t0_) / (t1_ - t0_), 0.0, 1.0);
   const std::size_t nx = grid_.axes[0].size(), ny = grid_.axes[1].size();

@@ -11,7 +11,8 @@
 // - metric x/y (metres), u/v in m/s: dx/dt = u, dy/dt = v;
 // - vertical height (m) with w in m/s, or pressure (Pa) with w in Pa/s (omega): dz/dt = w.
 // A point outside the grid, or where any of the eight samples around it at either time
-// is fill (NaN), has no rate: the integrators stop there and say why.
+// is fill (NaN), has no rate: the integrators stop there and say why. On a periodic
+// longitude axis no point is outside in x.
 #pragma once
 
 #include <array>
@@ -33,6 +34,10 @@ struct WindGrid {
   std::array<std::vector<double>, 3> axes;  // x, y, z coordinates; each strictly monotonic
   Horizontal horizontal = Horizontal::kDegrees;
   Vertical vertical = Vertical::kMetres;
+  // x is a longitude axis round the Earth whose last value is its first + 360
+  // (formats/store.md, "Grid placement"): a point is located a whole turn back into the
+  // axis, so trajectories cross the seam (their longitudes go on past it, unwrapped).
+  bool periodic_x = false;
   std::size_t count() const { return axes[0].size() * axes[1].size() * axes[2].size(); }
 };
 
@@ -60,6 +65,9 @@ class WindField {
   double t1() const { return t1_; }
 
  private:
+  // x located on the axis: a whole turn back into it on a periodic axis.
+  double grid_x(double x) const;
+
   WindGrid grid_;
   double t0_, t1_;
   std::array<WindSlice, 2> slices_;

@@ -36,6 +36,7 @@ StageFindings check_advection(const Store& store) {
   grid.axes = {m.x.values, m.y.values, m.z.values};
   const bool geographic = m.x.kind == AxisKind::kLongitude && m.y.kind == AxisKind::kLatitude;
   grid.horizontal = geographic ? advect::Horizontal::kDegrees : advect::Horizontal::kMetres;
+  grid.periodic_x = m.x.periodic;
   const double t0 = m.time.values[0], t1 = m.time.values[1];
   std::optional<advect::WindField> field;
   try {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "advect/integrators.h"
 #include "core/error.h"
 #include "wind_fields.h"
 
@@ -110,6 +111,28 @@ TEST(WindFieldTest, BadGridsAndComponentsAreRefusedByName) {
   EXPECT_THROW(make(geo, 0, 1), Error);
   advect::WindSlice short_slice{{1.0f}, {1.0f}, {1.0f}};
   EXPECT_THROW(advect::WindField(g, 0, short_slice, 1, short_slice), Error);
+}
+
+TEST(WindFieldTest, TrajectoriesCrossAPeriodicGridsSeam) {
+  // A global grid 0 .. 360 (the first meridian repeated), 20 m/s eastward at the equator:
+  // a point at 359 E goes on past the seam instead of stopping at the grid's edge.
+  advect::WindGrid g;
+  g.axes = {linspace(0, 360, 145), linspace(-10, 10, 9), linspace(0, 1000, 3)};
+  g.periodic_x = true;
+  const auto field = sample_wind(g, 0, 3600, [](double, double, double, double) { return Vec3{20, 0, 0}; });
+  EXPECT_TRUE(field.inside({365, 0, 500}));
+  EXPECT_TRUE(field.inside({-5, 0, 500}));
+  const advect::AdvectResult r = advect::advect(field, {359.5, 0, 500}, 0, 3600);
+  EXPECT_EQ(r.stop, advect::Stop::kReached);
+  // 72 km east at the equator: 72000 / (6371008.8 pi / 180) = 0.6475 degrees.
+  EXPECT_NEAR(r.position[0], 359.5 + 72000.0 / (advect::kEarthRadiusM * std::numbers::pi / 180), 1e-6);
+  // Without the flag the same grid stops the point at its edge.
+  g.periodic_x = false;
+  const auto bounded = sample_wind(g, 0, 3600, [](double, double, double, double) { return Vec3{20, 0, 0}; });
+  EXPECT_NE(advect::advect(bounded, {359.5, 0, 500}, 0, 3600).stop, advect::Stop::kReached);
+  g.horizontal = advect::Horizontal::kMetres;
+  g.periodic_x = true;
+  EXPECT_THROW(sample_wind(g, 0, 1, [](double, double, double, double) { return Vec3{}; }), Error);
 }
 
 }  // namespace
