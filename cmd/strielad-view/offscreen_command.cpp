@@ -167,6 +167,7 @@ int run_offscreen(const ViewerArgs& args) {
                           {"sun_seen_from", sun ? nlohmann::json({sun->latitude_deg, sun->longitude_deg}) : nlohmann::json()},
                           {"sun_viewpoint", !sun ? nlohmann::json() : sun->viewpoint == view::SunViewpoint::kDomainCentre ? "domain centre" : "sunniest point"},
                           {"vertical_exaggeration", session.exaggeration},
+                          {"vertical_placement", session.vertical_placement},
                           {"nodes_moved", s.nodes_moved},
                           {"tracks_shown", tracks ? tracks->tracks_shown : 0},
                           {"track_segments", tracks ? tracks->segment_count() : 0},

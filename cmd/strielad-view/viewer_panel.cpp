@@ -248,6 +248,11 @@ void draw_panel(PanelState& state, const PanelInfo& info, const format::Manifest
                            ImGuiSliderFlags_Logarithmic)) {
       state.exaggeration_changed = true;
     }
+    if (!info.vertical_placement.empty()) {
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextDisabled("%s", info.vertical_placement.c_str());
+      ImGui::PopTextWrapPos();
+    }
     ImGui::Checkbox("node boxes", &state.boxes);
     ImGui::SameLine();
     if (ImGui::Button("home view")) state.home = true;

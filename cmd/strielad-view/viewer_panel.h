@@ -58,6 +58,7 @@ struct PanelInfo {
   std::optional<double> sun_elevation_deg;  // the true sun's, when the store has a date
   std::string sun_viewpoint;                // where it is seen from (view/sun_direction.h)
   std::string terrain;  // terrain status line (empty: no --terrain)
+  std::string vertical_placement;  // how heights are placed (view/height_placement.h)
 };
 
 void draw_panel(PanelState& state, const PanelInfo& info, const format::Manifest& manifest);

@@ -17,7 +17,9 @@
 #include "net/socket.h"
 #include "net/token_file.h"
 #include "view/default_exaggeration.h"
+#include "store/store.h"
 #include "view/default_scene.h"
+#include "view/height_placement.h"
 #include "view/local_server.h"
 #include "view/simulation_time.h"
 #include "view/sun_direction.h"
@@ -82,8 +84,10 @@ std::string sun_choice(const ViewerArgs& args, const ViewerSession& session) {
                                            session.scene.time)) {
       return fmt::format("{} (--sun time, step {})", view::describe_sun(*sun), session.scene.time);
     }
-    return "fixed, the built-in light from the south-southeast, 54 degrees up: the store's time "
-           "axis or grid gives no real date or place";
+    const auto& frame = session.link->placer().frame();
+    return fmt::format("fixed, the built-in light from the south-southeast, 54 degrees up: {}",
+                       frame.on_earth() ? "the store's time axis gives no real date"
+                                        : frame.no_earth_reason());
   }
   if (const auto& d = args.sun_fixed_direction) {
     return fmt::format("fixed, from the scene file: {:.1f} degrees up, azimuth {:.1f} degrees",
@@ -126,7 +130,29 @@ ViewerSession open_session(const ViewerArgs& args) {
   } else {
     session.shader_name = "built-in clouds.glsl";
   }
-  session.link = std::make_unique<view::ViewLink>(std::move(client));
+  // Heights from a geopotential variable need the store's index for the node boxes: a
+  // local store is opened (for its index only) when it has such a variable.
+  std::shared_ptr<const Store> local_store;
+  if (!args.store.empty() && manifest.z.kind == AxisKind::kPressure) {
+    local_store = Store::open(args.store);
+  }
+  view::HeightPlacement heights = view::choose_height_placement(manifest, local_store.get());
+  session.vertical_placement = heights.description;
+  session.link = std::make_unique<view::ViewLink>(std::move(client), std::move(heights));
+  const lod::WorldFrame& frame = session.link->placer().frame();
+  spdlog::info("world frame: {}", frame.describe_horizontal());
+  spdlog::info("vertical placement: {}", session.vertical_placement);
+  if (!frame.on_earth() && args.sun == "time") {
+    // The true sun needs a place on the Earth: refused when asked for, else the fixed
+    // light with a warning.
+    if (args.sun_given || args.sun_time_asked) {
+      throw make_error(ErrorCode::kUnsupported, "{}: the true sun cannot be placed: {}",
+                       args.sun_given ? "--sun time" : "the scene's sun {\"mode\": \"time\"}",
+                       frame.no_earth_reason());
+    }
+    spdlog::warn("the true sun cannot be placed ({}): lit by the fixed light",
+                 frame.no_earth_reason());
+  }
   std::string exaggeration_rule;
   std::tie(session.exaggeration, exaggeration_rule) =
       starting_exaggeration(args, session.link->placer().frame());
@@ -143,10 +169,9 @@ ViewerSession open_session(const ViewerArgs& args) {
                        args.tracks_file, manifest.time.name, manifest.time.units,
                        manifest.time.calendar);
     }
-    if (session.link->placer().frame().horizontal() != lod::HorizontalMap::kGeographic) {
-      throw make_error(ErrorCode::kUnsupported,
-                       "--tracks {}: the store's grid has no longitude/latitude axes",
-                       args.tracks_file);
+    if (!frame.on_earth()) {
+      throw make_error(ErrorCode::kUnsupported, "--tracks {}: flight tracks cannot be placed: {}",
+                       args.tracks_file, frame.no_earth_reason());
     }
     session.tracks = std::make_shared<const geo::FlightTracks>(
         geo::load_flight_tracks(args.tracks_file));
@@ -154,6 +179,10 @@ ViewerSession open_session(const ViewerArgs& args) {
                  session.tracks->tracks.size(), session.tracks->reports);
   }
   if (!args.terrain_file.empty()) {
+    if (!frame.on_earth()) {
+      throw make_error(ErrorCode::kUnsupported, "--terrain {}: terrain cannot be placed: {}",
+                       args.terrain_file, frame.no_earth_reason());
+    }
     std::shared_ptr<const geo::DemSource> dem = geo::open_dem(args.terrain_file, args.terrain_var);
     std::shared_ptr<const geo::DrapeImage> drape;
     if (!args.terrain_image.empty()) {
@@ -163,8 +192,8 @@ ViewerSession open_session(const ViewerArgs& args) {
     view::TerrainOptions options;
     options.error_pixels = args.terrain_error;
     options.cache_bytes = static_cast<std::size_t>(args.terrain_cache_mib * 1048576.0);
-    session.terrain = std::make_unique<view::TerrainTiles>(
-        std::move(dem), session.link->placer().frame(), options, std::move(drape));
+    session.terrain =
+        std::make_unique<view::TerrainTiles>(std::move(dem), frame, options, std::move(drape));
   }
   spdlog::info("{}: {} x {} x {} grid, {} variables, {} time steps, {} octree nodes",
                session.dataset_name, manifest.x.size(), manifest.y.size(), manifest.z.size(),
@@ -192,6 +221,7 @@ ViewerArgs with_scene_settings(ViewerArgs args) {
     args.tracks_file = beside_scene(scene.trajectories->file);
     args.track_minutes = scene.trajectories->minutes;
   }
+  if (scene.sun && scene.sun->from_time && !args.sun_given) args.sun_time_asked = true;
   if (scene.sun && !scene.sun->from_time && !args.sun_given) {
     constexpr double kRad = std::numbers::pi / 180.0;
     const double el = scene.sun->elevation_deg * kRad, az = scene.sun->azimuth_deg * kRad;

@@ -35,6 +35,8 @@ struct ViewerSession {
   std::shared_ptr<const geo::FlightTracks> tracks;
   // Terrain (--terrain), null when none; tiles load on its own thread.
   std::unique_ptr<view::TerrainTiles> terrain;
+  // How the meshes' heights are placed (view/height_placement.h), for the panel and log.
+  std::string vertical_placement;
 };
 
 // The tracks to draw at time step `step` plus `seconds_after` (null without --tracks).

@@ -151,6 +151,7 @@ int run_window(const ViewerArgs& args) {
   Mouse mouse;
   PanelInfo info;
   info.advect_status = session.advection_status;
+  info.vertical_placement = "heights: " + session.vertical_placement;
   info.dataset = session.dataset_name;
   auto last_frame = clock_type::now();
   auto last_stats = last_frame;

@@ -11,8 +11,11 @@
 #include <optional>
 
 #include "core/error.h"
+#include "geo/cf_grid_mapping.h"
 #include "geo/dem_source.h"
+#include "geo/grid_projection.h"
 #include "ingest/cf_attributes.h"
+#include "ingest/grid_mapping_reader.h"
 #include "ingest/netcdf_call.h"
 #include "ingest/netcdf_file.h"
 #include "ingest/variable_meta.h"
@@ -109,7 +112,7 @@ class NetcdfDem final : public DemSource {
                        "{}: units '{}' are not a height (m or km)", describe(), units);
     }
     georeference_axes(grp, dimids[ndims_ - 1], dimids[ndims_ - 2]);
-    if (rotated_) check_auxiliary_coordinates(grp);
+    if (!proj_.empty()) check_auxiliary_coordinates(grp);
   }
 
   std::size_t width() const override { return width_; }
@@ -117,9 +120,16 @@ class NetcdfDem final : public DemSource {
 
   void georeference(std::span<const double> cols, std::span<const double> rows,
                     std::span<LonLat> out) const override {
+    if (proj_.empty()) {
+      for (std::size_t i = 0; i < out.size(); ++i) {
+        out[i] = LonLat{axis_at(x_axis_, cols[i]), axis_at(y_axis_, rows[i])};
+      }
+      return;
+    }
+    const GridProjection& projection = GridProjection::for_this_thread(proj_);
     for (std::size_t i = 0; i < out.size(); ++i) {
-      const double x = axis_at(x_axis_, cols[i]), y = axis_at(y_axis_, rows[i]);
-      out[i] = rotated_ ? rotated_to_geographic(pole_, x, y) : LonLat{x, y};
+      const auto g = projection.to_geographic(axis_at(x_axis_, cols[i]), axis_at(y_axis_, rows[i]));
+      out[i] = LonLat{g[0], g[1]};
     }
   }
 
@@ -158,8 +168,9 @@ class NetcdfDem final : public DemSource {
     return name_.empty() ? path_.string() : path_.string() + ":" + name_;
   }
   std::string georeferencing() const override {
-    return rotated_ ? fmt::format("rotated pole (lat {}, lon {})", pole_.pole_lat, pole_.pole_lon)
-                    : std::string("longitude/latitude axes");
+    return proj_.empty() ? std::string("longitude/latitude axes")
+                         : fmt::format("grid mapping '{}' ({}) through PROJ: {}", mapping_variable_,
+                                       mapping_name_, proj_);
   }
 
  private:
@@ -191,57 +202,14 @@ class NetcdfDem final : public DemSource {
   void georeference_axes(int grp, int xdim, int ydim) {
     const auto xvar = find_coordinate_variable(grp, xdim);
     const auto yvar = find_coordinate_variable(grp, ydim);
-    const std::string grid_mapping = text_attribute_or_empty(grp, varid_, "grid_mapping");
-    std::optional<int> mapping_var;
-    std::string mapping_name;
-    if (!grid_mapping.empty()) {
-      int m = -1;
-      if (nc_inq_varid(grp, grid_mapping.c_str(), &m) == NC_NOERR) {
-        mapping_var = m;
-        mapping_name = text_attribute_or_empty(grp, m, "grid_mapping_name");
-      }
-    }
     if (!xvar || !yvar) {
       throw make_error(ErrorCode::kInvalidInput,
                        "{}: no georeferencing: dimensions {} and {} have no coordinate "
-                       "variables (1-D longitude/latitude or rotated-pole axes)",
+                       "variables (1-D longitude/latitude or map axes with a grid_mapping)",
                        describe(), dimension_name(grp, ydim), dimension_name(grp, xdim));
     }
     x_axis_ = read_all_as_double(xvar->grpid, xvar->varid, describe());
     y_axis_ = read_all_as_double(yvar->grpid, yvar->varid, describe());
-    const auto sn_x = text_attribute_or_empty(xvar->grpid, xvar->varid, "standard_name");
-    if (mapping_name == "rotated_latitude_longitude" || sn_x == "grid_longitude") {
-      if (!mapping_var || mapping_name != "rotated_latitude_longitude") {
-        throw make_error(ErrorCode::kInvalidInput,
-                         "{}: rotated grid axes but no rotated_latitude_longitude grid_mapping "
-                         "variable (grid_mapping '{}')",
-                         describe(), grid_mapping);
-      }
-      const auto lat = numeric_attribute(grp, *mapping_var, "grid_north_pole_latitude");
-      const auto lon = numeric_attribute(grp, *mapping_var, "grid_north_pole_longitude");
-      const auto npgl = numeric_attribute(grp, *mapping_var, "north_pole_grid_longitude");
-      if (lat.empty() || lon.empty()) {
-        throw make_error(ErrorCode::kInvalidInput,
-                         "{}: grid_mapping {} lacks grid_north_pole_latitude/longitude",
-                         describe(), grid_mapping);
-      }
-      pole_ = RotatedPole{static_cast<double>(lat[0]), static_cast<double>(lon[0]),
-                          npgl.empty() ? 0.0 : static_cast<double>(npgl[0])};
-      rotated_ = true;
-    } else if (!is_longitude(xvar->grpid, xvar->varid) || !is_latitude(yvar->grpid, yvar->varid)) {
-      if (!mapping_name.empty()) {
-        throw make_error(ErrorCode::kUnsupported,
-                         "{}: grid_mapping '{}' is not supported for NetCDF DEMs (rotated_"
-                         "latitude_longitude and plain longitude/latitude are); GDAL reads it: "
-                         "convert with gdal_translate to a GeoTIFF",
-                         describe(), mapping_name);
-      }
-      throw make_error(ErrorCode::kInvalidInput,
-                       "{}: no georeferencing: axes {} and {} are neither longitude/latitude "
-                       "(units degrees_east/degrees_north) nor rotated-pole axes",
-                       describe(), variable_name(yvar->grpid, yvar->varid),
-                       variable_name(xvar->grpid, xvar->varid));
-    }
     for (const auto* axis : {&x_axis_, &y_axis_}) {
       for (const double v : *axis) {
         if (!std::isfinite(v)) {
@@ -250,10 +218,41 @@ class NetcdfDem final : public DemSource {
         }
       }
     }
+    const auto axis = [&](const VariableRef& v, const std::vector<double>& values) {
+      Axis a;
+      a.name = variable_name(v.grpid, v.varid);
+      a.units = text_attribute_or_empty(v.grpid, v.varid, "units");
+      a.standard_name = text_attribute_or_empty(v.grpid, v.varid, "standard_name");
+      a.values = values;
+      return a;
+    };
+    const Axis x = axis(*xvar, x_axis_), y = axis(*yvar, y_axis_);
+    std::optional<GridMapping> mapping = read_grid_mapping(grp, varid_, describe());
+    if (mapping && lower(mapping->name) == "latitude_longitude") mapping.reset();
+    if (mapping) {
+      // The one mechanism that places stores: the CF attributes to a PROJ pipeline.
+      proj_ = cf_grid_mapping_proj(*mapping, x, y, describe());
+      mapping_variable_ = mapping->variable;
+      mapping_name_ = mapping->name;
+      (void)GridProjection::for_this_thread(proj_);  // kUnsupported now if PROJ rejects it
+      return;
+    }
+    if (x.standard_name == "grid_longitude" || y.standard_name == "grid_latitude") {
+      throw make_error(ErrorCode::kInvalidInput,
+                       "{}: rotated grid axes {} and {} but no grid_mapping attribute naming a "
+                       "rotated_latitude_longitude variable: where the pole is is unknown",
+                       describe(), y.name, x.name);
+    }
+    if (!is_longitude(xvar->grpid, xvar->varid) || !is_latitude(yvar->grpid, yvar->varid)) {
+      throw make_error(ErrorCode::kInvalidInput,
+                       "{}: no georeferencing: axes {} and {} are neither longitude/latitude "
+                       "(units degrees_east/degrees_north) nor map axes with a grid_mapping",
+                       describe(), y.name, x.name);
+    }
   }
 
   // The file's own 2-D lat/lon (the "coordinates" attribute) at the corners and centre
-  // against the pole formula: a mismatch means the grid_mapping is wrong.
+  // against the grid mapping: a mismatch means the grid_mapping is wrong.
   void check_auxiliary_coordinates(int grp) const {
     int lon_var = -1, lat_var = -1;
     for (const auto& name : split_words(text_attribute_or_empty(grp, varid_, "coordinates"))) {
@@ -273,15 +272,14 @@ class NetcdfDem final : public DemSource {
           nc_get_var1_double(grp, lat_var, index, &lat) != NC_NOERR) {
         return;
       }
-      const auto g = rotated_to_geographic(pole_, x_axis_[c], y_axis_[r]);
-      double dlon = std::fabs(g.lon - lon);
-      dlon = std::min(dlon, 360.0 - dlon);
-      worst = std::max({worst, dlon, std::fabs(g.lat - lat)});
+      const auto g = GridProjection::for_this_thread(proj_).to_geographic(x_axis_[c], y_axis_[r]);
+      const double dlon = std::fabs(std::remainder(g[0] - lon, 360.0));
+      worst = std::max({worst, dlon, std::fabs(g[1] - lat)});
     }
-    if (worst > 1e-3) {
-      spdlog::warn("{}: the rotated pole places samples up to {:.4f} degrees from the file's "
-                   "own 2-D longitude/latitude; the pole formula is used",
-                   describe(), worst);
+    if (!(worst <= 1e-3)) {
+      spdlog::warn("{}: grid mapping '{}' places samples up to {:.4f} degrees from the file's "
+                   "own 2-D longitude/latitude; the grid mapping is used",
+                   describe(), mapping_variable_, worst);
     }
   }
 
@@ -293,8 +291,8 @@ class NetcdfDem final : public DemSource {
   CfValueAttributes attributes_;
   double metres_per_unit_ = 1.0;
   std::vector<double> x_axis_, y_axis_;
-  bool rotated_ = false;
-  RotatedPole pole_;
+  std::string proj_;  // the grid mapping's PROJ pipeline; empty: longitude/latitude axes
+  std::string mapping_variable_, mapping_name_;
 };
 
 }  // namespace

@@ -7,8 +7,11 @@
 // - CF-NetCDF: a 2-D variable (leading dimensions of length 1, e.g. time, are allowed)
 //   chosen by name, or else the first with standard_name surface_altitude, or named
 //   HSURF, z_ifc, topography_c, orog or elevation; georeferenced by 1-D longitude and
-//   latitude axes (ascending or descending, any spacing) or by rotated grid axes with a
-//   rotated_latitude_longitude grid_mapping (geo/rotated_pole.h); units m or km.
+//   latitude axes (ascending or descending, any spacing) or by 1-D map axes with a CF
+//   grid_mapping (a rotated_latitude_longitude pole as COSMO, CCLM and EURO-CORDEX write
+//   it, or any projection geo/cf_grid_mapping.h translates), placed through the
+//   mapping's PROJ pipeline (geo/grid_projection.h), the mechanism that places the
+//   stores; units m or km.
 //   Fill: _FillValue (or netCDF's default fill when none is declared), missing_value,
 //   valid_range/valid_min/valid_max; packed values unpacked with scale_factor/add_offset.
 // - any raster GDAL reads (GeoTIFF, ...): band 1, georeferenced by its geotransform,
@@ -27,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "geo/rotated_pole.h"
+#include "geo/lon_lat.h"
 
 namespace strielad::geo {
 
@@ -46,7 +49,8 @@ class DemSource {
   virtual std::size_t height() const = 0;  // rows
 
   // Geographic lon/lat of (possibly fractional) sample positions, n at a time
-  // (cols.size() == rows.size() == out.size()); positions outside the grid extrapolate.
+  // (cols.size() == rows.size() == out.size()); positions outside the grid extrapolate;
+  // NaN where a projection has no geographic position.
   virtual void georeference(std::span<const double> cols, std::span<const double> rows,
                             std::span<LonLat> out) const = 0;
   LonLat georeference(double col, double row) const;
@@ -58,7 +62,8 @@ class DemSource {
 
   // "FILE:VARIABLE" or "FILE (GDAL driver GTiff)", for messages and the panel.
   virtual std::string describe() const = 0;
-  // How samples are placed: "lon/lat axes", "rotated pole (39.25, -162)", the CRS name...
+  // How samples are placed: "longitude/latitude axes", "grid mapping 'rotated_pole'
+  // (rotated_latitude_longitude) through PROJ: +proj=...", the CRS name...
   virtual std::string georeferencing() const = 0;
 };
 

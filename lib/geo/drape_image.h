@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "geo/rotated_pole.h"
+#include "geo/lon_lat.h"
 
 namespace strielad::geo {
 

@@ -3,24 +3,38 @@
 // right-handed frame in kilometres, x east, y north, z up, origin at the domain's
 // horizontal centre and height 0 (sea level or ground, as the height axis says).
 //
-// Dataset axis coordinates (format::Manifest axes x, y, z) map axis by axis, each map
-// monotonic, so the world box of a block of samples is spanned by its corner samples:
-// - geographic x/y (longitude/latitude in degrees): an equirectangular plane tangent at
-//   the domain centre (lon0, lat0): x = (lon - lon0) * K * cos(lat0), y = (lat - lat0) * K
-//   with K = 111.195 km per degree (R = 6371.0088 km, the IUGG mean radius, as the
-//   "metric" output frame of formats/scene.md). lon0/lat0 are the midpoints of the
-//   axes' ranges.
-// - metric x/y (units m or km, e.g. a projected grid): kilometres from the range midpoint.
+// Horizontal placement, by what the store's x and y are (HorizontalMap):
+// - kGeographic, longitude/latitude axes: an equirectangular plane tangent at the domain
+//   centre (lon0, lat0): x = (lon - lon0) * K * cos(lat0), y = (lat - lat0) * K with
+//   K = 111.195 km per degree (R = 6371.0088 km, the IUGG mean radius, as the "metric"
+//   output frame of formats/scene.md). lon0/lat0 are the midpoints of the axes' ranges.
+//   Each axis maps by itself.
+// - kMapped, map-projection axes with a grid mapping (a rotated pole in degrees, a
+//   projected grid in m or km; Manifest::grid_mapping): the same plane on TRUE longitude
+//   and latitude, reached through the mapping's PROJ pipeline (geo/grid_projection.h),
+//   tangent at the true position of the centre of the axes' ranges (as the "metric"
+//   output frame, in km). x and y do not map separately: a grid line is a curve in the
+//   world. Longitudes are taken the short way round from lon0; a grid whose image folds
+//   or tears (it crosses the meridian opposite its centre, or encloses a pole) is refused.
+// - kMetric, a Cartesian grid in m or km without a grid mapping: kilometres from the
+//   range midpoints. It has no place on the Earth: on_earth() is false, and terrain,
+//   flight tracks and the true sun cannot be placed on it.
+// Vertical, the same on every frame and separable:
 // - height (m or km; no units means metres): z = height_km * vertical_exaggeration.
 // - pressure (Pa, hPa, mbar, kPa, bar, atm): the ICAO standard atmosphere height of the
 //   pressure (geo/standard_atmosphere.h), then as height.
 // Descending axes (latitude north to south, height top down, pressure) map the same way:
 // world coordinates do not depend on storage order.
+//
+// Thread safety: const members may be called from any thread (a mapped frame runs PROJ
+// through a per-thread GridProjection).
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "format/manifest.h"
@@ -43,58 +57,137 @@ struct WorldFrameOptions {
   double vertical_exaggeration = kDefaultVerticalExaggeration;  // finite, > 0
 };
 
-enum class HorizontalMap { kGeographic, kMetric };
+enum class HorizontalMap { kGeographic, kMapped, kMetric };
 enum class VerticalMap { kHeight, kPressure };
+
+// True longitude/latitude extent of a domain (degrees): longitudes continuous about the
+// domain's centre (lon_lo may be < -180 or lon_hi > 180), lon_lo <= lon_hi.
+struct GeographicBounds {
+  double lon_lo = 0, lon_hi = 0, lat_lo = 0, lat_hi = 0;
+};
 
 class WorldFrame {
  public:
   // \error kUnsupported naming the axis for axes without a world position: x/y neither
-  // longitude/latitude nor in length units; a vertical axis that is neither height nor
-  // pressure (model levels, depth, unknown), or has units it cannot convert.
+  // longitude/latitude, nor mapped by a grid mapping, nor in length units; a vertical
+  // axis that is neither height nor pressure (model levels, depth, unknown), or has units
+  // it cannot convert; a grid mapping PROJ rejects, that leaves a sample without a
+  // geographic position, or whose image folds or crosses the meridian opposite the
+  // domain's centre (naming the sample).
   // \error kInvalidInput for empty, non-finite or non-monotonic axis values (as
   // check_axis_values) and for a pressure axis with a value <= 0.
   // \error kInvalidArgument for a vertical exaggeration that is not finite and > 0.
   explicit WorldFrame(const format::Manifest& manifest, WorldFrameOptions options = {});
+  // The same frame at another vertical exaggeration, without redoing the horizontal
+  // placement (a mapped frame's sample table is shared).
+  // \error kInvalidArgument for an exaggeration that is not finite and > 0.
+  WorldFrame with_exaggeration(double vertical_exaggeration) const;
 
   // Axis coordinates (x, y, z of the manifest, in the axes' own units) to world km.
-  // Pressures <= 0 give NaN in z (callers check them: camera_path.h does).
+  // Pressures <= 0 give NaN in z (callers check them: camera_path.h does); on a mapped
+  // frame, a position the mapping cannot place gives NaN in x and y.
   Vec3 to_world(const Vec3& axis) const;
-  // World km back to axis coordinates (the exact inverse up to rounding).
+  // World km back to axis coordinates (the exact inverse up to rounding); NaN in x and y
+  // on a mapped frame where the world point has no latitude (beyond the poles) or the
+  // mapping no inverse.
   Vec3 to_axis(const Vec3& world) const;
-  double axis_to_world(int axis, double value) const;
-  double world_to_axis(int axis, double world) const;
+  // The vertical map alone (every frame's z maps by itself).
+  double vertical_to_world(double z) const;
+  double world_to_vertical(double world_z) const;
 
-  // World coordinate of level-0 sample `index` along `axis` (precomputed).
-  double sample_world(int axis, std::size_t index) const { return samples_[axis][index]; }
+  // A unit normal at axis position `axis` (axis coordinates) to the world frame: the
+  // inverse transpose of the map's Jacobian, renormalized; straight up when it vanishes.
+  Vec3 normal_to_world(const Vec3& axis, const Vec3& normal) const;
+  // True when the map reverses orientation (an odd number of decreasing axis maps, e.g.
+  // a pressure axis, or a horizontal Jacobian of negative determinant).
+  bool mirrored() const { return mirrored_; }
+
+  // Whether the frame has a place on the Earth (geographic and mapped frames).
+  bool on_earth() const { return horizontal_ != HorizontalMap::kMetric; }
+  // Why not, naming the axes, for the errors of callers that need it ("axes 'x' (m) and
+  // 'y' (m) are Cartesian coordinates without a grid_mapping ..."); "" when on_earth().
+  const std::string& no_earth_reason() const { return no_earth_reason_; }
+  // True longitude/latitude (degrees) to world x/y km, the longitude taken the short way
+  // round from lon0. \error kUnsupported with no_earth_reason() when !on_earth().
+  std::array<double, 2> geographic_to_world(double lon, double lat) const;
+  // World x/y km to true longitude/latitude (longitude continuous about lon0; latitude
+  // beyond +-90 where the plane is beyond the poles). \error as geographic_to_world.
+  std::array<double, 2> world_to_geographic(double x, double y) const;
+  // True longitude/latitude to the store's axis x/y (NaN where the mapping has none).
+  // \error as geographic_to_world.
+  std::array<double, 2> geographic_to_axis(double lon, double lat) const;
+  // The true position of the plane's tangent point (degrees). \error as geographic_to_world.
+  double lon0() const;
+  double lat0() const;
+  // The true longitude/latitude box of the domain (the world box's corners through the
+  // plane). \error as geographic_to_world.
+  GeographicBounds geographic_bounds() const;
+
+  // World x/y of level-0 sample (i, j) (precomputed; on a mapped frame through PROJ).
+  std::array<double, 2> sample_world_xy(std::size_t i, std::size_t j) const;
+  // World z of level-0 sample `k` of the vertical axis.
+  double sample_world_z(std::size_t k) const { return z_samples_[k]; }
   Dims3 dims() const { return dims_; }
-  // The box spanned by all samples.
+  // The smallest and largest axis values of x and y: {x lo, x hi, y lo, y hi}.
+  const std::array<double, 4>& axis_ranges() const { return axis_ranges_; }
+  // The box that holds every point of the grid: on a mapped frame the box of the
+  // boundary's image, padded as node_world_boxes pads.
   const WorldBox& domain() const { return domain_; }
+  // The box of the level-0 index box `box` (inclusive sample indices) as
+  // node_world_boxes computes it.
+  WorldBox index_box_world(const IndexBox& box) const;
 
   HorizontalMap horizontal() const { return horizontal_; }
   VerticalMap vertical() const { return vertical_; }
   double vertical_exaggeration() const { return exaggeration_; }
-  // Axis-unit value of the origin along x and y (lon0/lat0 for geographic frames).
-  double origin(int axis) const { return origin_[axis]; }
-  // World km per axis unit along x or y (geographic: per degree, longitude at lat0).
-  double km_per_unit(int axis) const { return km_per_unit_[axis]; }
+  // Kilometres per axis unit of x or y when they are lengths (Cartesian or projected:
+  // map coordinates, not distances on the ground); 0 for degrees (longitude/latitude,
+  // a rotated pole).
+  double axis_length_km(int axis) const { return axis_km_[axis]; }
   // Metres (height) or pascals (pressure) per unit of the vertical axis.
   double vertical_unit() const { return vertical_unit_; }
+  // "longitude/latitude axes", "grid mapping 'rotated_pole' (rotated_latitude_longitude)
+  // through PROJ, centred at 50.75 N, 18.00 E", "Cartesian axes 'x' and 'y' (m) ...".
+  std::string describe_horizontal() const;
 
  private:
+  struct Mapped;  // a mapped frame's pipeline and sample table (shared by copies)
+
+  double separable_to_world(int axis, double value) const;
+  double separable_to_axis(int axis, double world) const;
+  void check_on_earth() const;
+  std::array<double, 2> mapped_xy(double x, double y) const;
+  WorldBox mapped_index_box(const IndexBox& box) const;
+
   HorizontalMap horizontal_ = HorizontalMap::kGeographic;
   VerticalMap vertical_ = VerticalMap::kHeight;
   double exaggeration_ = kDefaultVerticalExaggeration;
-  std::array<double, 2> origin_{};  // axis units
-  std::array<double, 2> km_per_unit_{};
-  double vertical_unit_ = 1.0;      // metres (height) or pascals (pressure) per axis unit
+  std::array<double, 2> origin_{};       // separable frames: axis value of the origin
+  std::array<double, 2> km_per_unit_{};  // separable frames: world km per axis unit
+  std::array<double, 2> axis_km_{};      // see axis_length_km
+  std::array<double, 4> axis_ranges_{};
+  double lon0_ = 0, lat0_ = 0;           // frames on the Earth: the tangent point
+  double km_per_lon_ = 0;                // K cos(lat0)
+  double vertical_unit_ = 1.0;  // metres (height) or pascals (pressure) per axis unit
+  bool mirrored_ = false;
+  std::string no_earth_reason_;
+  std::string axis_names_;      // for describe_horizontal
   Dims3 dims_;
-  std::array<std::vector<double>, 3> samples_;
+  std::array<std::vector<double>, 2> xy_samples_;  // separable frames
+  std::vector<double> z_axis_, z_samples_;
+  std::shared_ptr<const Mapped> mapped_;
   WorldBox domain_;
 };
 
 // The world box of every octree node, indexed by NodeId: spanned by the node's brick's
-// corner samples (OctreeLayout::fine_box), so a child's box lies inside its parent's and
-// neighbours share faces.
+// corner samples (OctreeLayout::fine_box) on geographic and Cartesian frames, so a
+// child's box lies inside its parent's and neighbours share faces. On a mapped frame the
+// horizontal box is the box of the images of every level-0 sample on the brick's
+// horizontal boundary, padded per side by twice the estimated bow of the boundary
+// curves between samples (h^2 / 8 max|f''|, with f'' from the samples' second
+// differences along each grid line): the image of a grid cell's edge is a curve, not the
+// chord between its samples. A map without folds sends the brick's interior inside the
+// image of its boundary, so every placed vertex of the node's meshes is in its box.
 // \error kInvalidArgument when the layout's grid is not the frame's dims.
 std::vector<WorldBox> node_world_boxes(const OctreeLayout& layout, const WorldFrame& frame);
 

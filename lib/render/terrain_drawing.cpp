@@ -14,6 +14,7 @@ layout(location = 0) in vec3 a_position;  // x, y km; height km
 layout(location = 1) in vec2 a_gradient;  // dh/dx, dh/dy
 layout(location = 2) in vec2 a_uv;
 layout(location = 3) in float a_water;  // 1: no value or below sea level (at 0 m)
+layout(location = 4) in vec2 a_clip;    // clip coordinates (view/terrain_tiles.h)
 uniform mat4 u_view_projection;
 uniform float u_vertical_exaggeration;
 out vec3 v_world;
@@ -21,12 +22,14 @@ out vec3 v_normal;
 out float v_height_m;
 out vec2 v_uv;
 out float v_water;
+out vec2 v_clip;
 void main() {
   v_world = vec3(a_position.xy, a_position.z * u_vertical_exaggeration);
   v_normal = normalize(vec3(-a_gradient * u_vertical_exaggeration, 1.0));
   v_height_m = a_position.z * 1000.0;
   v_uv = a_uv;
   v_water = a_water;
+  v_clip = a_clip;
   gl_Position = u_view_projection * vec4(v_world, 1.0);
 }
 )";
@@ -37,8 +40,9 @@ in vec3 v_normal;
 in float v_height_m;
 in vec2 v_uv;
 in float v_water;
+in vec2 v_clip;
 uniform vec3 u_sun;
-uniform vec4 u_clip;  // x lo, y lo, x hi, y hi (world km)
+uniform vec4 u_clip;  // clip coordinates: x lo, y lo, x hi, y hi
 uniform bool u_has_drape;
 layout(binding = 0) uniform sampler2D u_drape;
 out vec4 o_color;
@@ -55,7 +59,11 @@ vec3 hypsometric(float h) {
   return colors[5];
 }
 void main() {
-  if (v_world.x < u_clip.x || v_world.y < u_clip.y || v_world.x > u_clip.z || v_world.y > u_clip.w) discard;
+  // Written so that NaN clip coordinates (no place in the store's axes) are cut too.
+  if (!(v_clip.x >= u_clip.x && v_clip.y >= u_clip.y && v_clip.x <= u_clip.z &&
+        v_clip.y <= u_clip.w)) {
+    discard;
+  }
   vec3 base;
   if (u_has_drape && all(greaterThanEqual(v_uv, vec2(0.0))) && all(lessThanEqual(v_uv, vec2(1.0)))) {
     base = texture(u_drape, v_uv).rgb;
@@ -112,8 +120,8 @@ TerrainDrawStats TerrainDrawing::draw(const view::TerrainFrame& frame,
       const GLuint vao = tile.vertex_array.get();
       glVertexArrayVertexBuffer(vao, 0, tile.vertices.get(), 0, kStride);
       glVertexArrayElementBuffer(vao, tile.indices.get());
-      const std::pair<int, int> attributes[4] = {{3, 0}, {2, 3}, {2, 5}, {1, 7}};
-      for (GLuint a = 0; a < 4; ++a) {
+      const std::pair<int, int> attributes[5] = {{3, 0}, {2, 3}, {2, 5}, {1, 7}, {2, 8}};
+      for (GLuint a = 0; a < 5; ++a) {
         glEnableVertexArrayAttrib(vao, a);
         glVertexArrayAttribFormat(vao, a, attributes[a].first, GL_FLOAT, GL_FALSE,
                                   GLuint(attributes[a].second * sizeof(float)));

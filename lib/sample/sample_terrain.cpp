@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "core/error.h"
-#include "geo/rotated_pole.h"
+#include "geo/cf_grid_mapping.h"
+#include "geo/grid_projection.h"
+#include "geo/lon_lat.h"
 #include "ingest/netcdf_call.h"
 #include "sample/hash_noise.h"
 #include "sample/sample_grid.h"
@@ -18,8 +20,26 @@
 namespace strielad::sample {
 namespace {
 
-constexpr geo::RotatedPole kPole{39.25, -162.0, 0.0};
+// The rotated pole of the regional models (COSMO-DE, EURO-CORDEX), as the file's CF
+// grid mapping writes it.
+constexpr double kPoleLat = 39.25, kPoleLon = -162.0;
 constexpr float kFill = -9999.0f;
+
+// The file's grid mapping placed as stores and DEMs are placed: its CF attributes
+// through geo::cf_grid_mapping_proj, run by PROJ.
+geo::GridProjection pole_projection() {
+  GridMapping mapping;
+  mapping.variable = "rotated_pole";
+  mapping.name = "rotated_latitude_longitude";
+  mapping.attributes = {{"grid_mapping_name", mapping.name},
+                        {"grid_north_pole_latitude", kPoleLat},
+                        {"grid_north_pole_longitude", kPoleLon}};
+  Axis rlon, rlat;
+  rlon.name = "rlon";
+  rlat.name = "rlat";
+  rlon.units = rlat.units = "degrees";
+  return geo::GridProjection(geo::cf_grid_mapping_proj(mapping, rlon, rlat, "sample terrain"));
+}
 
 double smoothstep(double e0, double e1, double x) {
   const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
@@ -58,6 +78,7 @@ SampleTerrainResult write_sample_terrain(const SampleTerrainSpec& spec,
     throw make_error(ErrorCode::kInvalidArgument, "--terrain {}: must be 2 to 16384 samples",
                      spec.samples);
   }
+  const geo::GridProjection pole = pole_projection();
   // The rotated box around the domain's boundary, 3% wider on each side.
   double rlon0 = INFINITY, rlon1 = -INFINITY, rlat0 = INFINITY, rlat1 = -INFINITY;
   for (int i = 0; i <= 100; ++i) {
@@ -65,11 +86,11 @@ SampleTerrainResult write_sample_terrain(const SampleTerrainSpec& spec,
     const double lon = kLonMin + t * (kLonMax - kLonMin), lat = kLatMin + t * (kLatMax - kLatMin);
     for (const auto& [x, y] : {std::pair{lon, kLatMin}, std::pair{lon, kLatMax},
                                std::pair{kLonMin, lat}, std::pair{kLonMax, lat}}) {
-      const auto r = geo::geographic_to_rotated(kPole, x, y);
-      rlon0 = std::min(rlon0, r.lon);
-      rlon1 = std::max(rlon1, r.lon);
-      rlat0 = std::min(rlat0, r.lat);
-      rlat1 = std::max(rlat1, r.lat);
+      const auto r = pole.to_axis(x, y);
+      rlon0 = std::min(rlon0, r[0]);
+      rlon1 = std::max(rlon1, r[0]);
+      rlat0 = std::min(rlat0, r[1]);
+      rlat1 = std::max(rlat1, r[1]);
     }
   }
   const double mx = 0.03 * (rlon1 - rlon0), my = 0.03 * (rlat1 - rlat0);
@@ -95,7 +116,8 @@ SampleTerrainResult write_sample_terrain(const SampleTerrainSpec& spec,
     detail.row(j, row_detail);
     ridges.row(j, row_ridges);
     for (std::size_t i = 0; i < n; ++i) {
-      const auto g = geo::rotated_to_geographic(kPole, rlon[i], rlat[j]);
+      const auto [lon, lat] = pole.to_geographic(rlon[i], rlat[j]);
+      const geo::LonLat g{lon, lat};
       lon2[j * n + i] = static_cast<float>(g.lon);
       lat2[j * n + i] = static_cast<float>(g.lat);
       if (is_sea(g.lon, g.lat)) {
@@ -142,7 +164,7 @@ SampleTerrainResult write_sample_terrain(const SampleTerrainSpec& spec,
     text(vrlon, "units", "degrees");
     check(nc_def_var(nc, "rotated_pole", NC_CHAR, 0, nullptr, &vpole), tmp);
     text(vpole, "grid_mapping_name", "rotated_latitude_longitude");
-    const double pole_lat = kPole.pole_lat, pole_lon = kPole.pole_lon;
+    const double pole_lat = kPoleLat, pole_lon = kPoleLon;
     check(nc_put_att_double(nc, vpole, "grid_north_pole_latitude", NC_DOUBLE, 1, &pole_lat), tmp);
     check(nc_put_att_double(nc, vpole, "grid_north_pole_longitude", NC_DOUBLE, 1, &pole_lon), tmp);
     const int dims2[2] = {drlat, drlon};

@@ -9,54 +9,31 @@
 #include "core/error.h"
 
 namespace strielad::view {
-namespace {
-
-// d world / d axis along one axis at `value`, by a central difference scaled to the
-// value (the maps are smooth and monotonic; linear ones give their exact slope).
-double axis_slope(const lod::WorldFrame& frame, int axis, double value) {
-  const double h = std::max(std::abs(value), 1.0) * 1e-6;
-  return (frame.axis_to_world(axis, value + h) - frame.axis_to_world(axis, value - h)) /
-         (2 * h);
-}
-
-}  // namespace
-
-GeometryPlacer::GeometryPlacer(const format::Manifest& manifest)
-    : frame_(manifest, lod::WorldFrameOptions{.vertical_exaggeration = 1.0}) {
-  int negative = 0;
-  for (int axis = 0; axis < 3; ++axis) {
-    const auto& domain = frame_.domain();
-    const double mid = frame_.world_to_axis(axis, 0.5 * (domain.lo[axis] + domain.hi[axis]));
-    if (axis_slope(frame_, axis, mid) < 0) ++negative;
-  }
-  mirrored_ = (negative % 2) == 1;
-}
+GeometryPlacer::GeometryPlacer(const format::Manifest& manifest, HeightPlacement heights)
+    : frame_(manifest, lod::WorldFrameOptions{.vertical_exaggeration = 1.0}),
+      mirrored_(frame_.mirrored()),
+      heights_(std::move(heights)) {}
 
 namespace {
 
 // Places vertex v of `mesh` in the world frame: its position into position[0..2] and
-// its normal (the inverse transpose of the diagonal axis-to-world Jacobian: divided by
-// the slopes, renormalized; straight up if it vanishes) into normal[0..2].
+// its normal (the inverse transpose of the axis-to-world Jacobian, renormalized;
+// straight up if it vanishes: lod::WorldFrame::normal_to_world) into normal[0..2].
 // \error kInvalidInput naming the node and `what` for a vertex without a world position.
 void place_vertex(const lod::WorldFrame& frame, const Mesh& mesh, std::size_t v, NodeId node,
                   std::string_view what, float* position, float* normal_out) {
   const auto& p = mesh.positions[v];
-  lod::Vec3 normal{0, 0, 0};
+  const lod::Vec3 world = frame.to_world(p);
   for (int axis = 0; axis < 3; ++axis) {
-    const double world = frame.axis_to_world(axis, p[axis]);
-    if (!std::isfinite(world)) {
+    if (!std::isfinite(world[axis])) {
       throw make_error(ErrorCode::kInvalidInput, "node {}: {} {}: vertex {} has no world position",
                        node, what, mesh.subvolume_id, v);
     }
-    position[axis] = static_cast<float>(world);
-    normal[axis] = mesh.normals[v][axis] / axis_slope(frame, axis, p[axis]);
+    position[axis] = static_cast<float>(world[axis]);
   }
-  const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] +
-                                  normal[2] * normal[2]);
-  for (int axis = 0; axis < 3; ++axis) {
-    normal_out[axis] = length > 0 ? static_cast<float>(normal[axis] / length)
-                                  : (axis == 2 ? 1.0f : 0.0f);
-  }
+  const auto& n = mesh.normals[v];
+  const lod::Vec3 normal = frame.normal_to_world(p, {n[0], n[1], n[2]});
+  for (int axis = 0; axis < 3; ++axis) normal_out[axis] = static_cast<float>(normal[axis]);
 }
 
 // Appends the mesh's triangles, their indices offset by `first`.
@@ -106,7 +83,8 @@ void GeometryPlacer::append_slice(const Mesh& mesh, std::uint32_t slot, NodeGeom
   append_triangles(mesh, first, out.node, "slice", out.slice_indices);
 }
 
-void GeometryPlacer::append_mesh(const Mesh& mesh, std::uint32_t slot, NodeGeometry& out) const {
+void GeometryPlacer::append_mesh(const Mesh& mesh, std::uint32_t slot, int height_attribute,
+                                 NodeGeometry& out) const {
   const std::size_t first = out.vertex_count();
   const std::size_t n = mesh.vertex_count();
   if (first + n > std::numeric_limits<std::uint32_t>::max()) {
@@ -124,7 +102,54 @@ void GeometryPlacer::append_mesh(const Mesh& mesh, std::uint32_t slot, NodeGeome
                                                   : std::numeric_limits<float>::quiet_NaN();
     }
   }
+  const std::size_t first_triangle_index = out.indices.size();
   append_triangles(mesh, first, out.node, "sub-volume", out.indices);
+  if (heights_.kind == HeightPlacement::Kind::kVariable && height_attribute >= 0) {
+    const auto a = static_cast<std::size_t>(height_attribute);
+    if (a >= mesh.attributes.size() || mesh.attributes[a].size() != n) {
+      throw make_error(ErrorCode::kInvalidInput,
+                       "node {}: sub-volume {}: {} attributes; the heights '{}' were asked "
+                       "for as attribute {}",
+                       out.node, mesh.subvolume_id, mesh.attributes.size(), heights_.variable, a);
+    }
+    place_heights(mesh.attributes[a], first, first_triangle_index, out);
+  }
+}
+
+void GeometryPlacer::place_heights(const std::vector<float>& values, std::size_t first,
+                                   std::size_t first_triangle_index, NodeGeometry& out) const {
+  // z from the variable where it has a value (the frame's height where it is missing).
+  const std::size_t n = values.size();
+  for (std::size_t v = 0; v < n; ++v) {
+    const float value = values[v];
+    if (!std::isfinite(value)) continue;
+    out.vertices[(first + v) * kVertexFloats + kVertexPosition + 2] =
+        static_cast<float>(double(value) * heights_.metres_per_unit * 1e-3);
+  }
+  // Normals of the placed surface: area-weighted face normals, outward (flipped where
+  // the map reverses orientation, as the renderer's front-face rule is).
+  std::vector<lod::Vec3> sum(n, lod::Vec3{0, 0, 0});
+  const auto position = [&](std::uint32_t i) {
+    const float* p = &out.vertices[std::size_t(i) * kVertexFloats + kVertexPosition];
+    return lod::Vec3{p[0], p[1], p[2]};
+  };
+  const double sign = mirrored_ ? -1.0 : 1.0;
+  const auto first_index = static_cast<std::uint32_t>(first);
+  for (std::size_t k = first_triangle_index; k + 2 < out.indices.size(); k += 3) {
+    const std::uint32_t i0 = out.indices[k], i1 = out.indices[k + 1], i2 = out.indices[k + 2];
+    const lod::Vec3 p0 = position(i0);
+    const lod::Vec3 f =
+        lod::scale(lod::cross(lod::sub(position(i1), p0), lod::sub(position(i2), p0)), sign);
+    for (const std::uint32_t i : {i0, i1, i2}) {
+      for (int c = 0; c < 3; ++c) sum[i - first_index][c] += f[c];
+    }
+  }
+  for (std::size_t v = 0; v < n; ++v) {
+    const double len = lod::length(sum[v]);
+    if (!(len > 0) || !std::isfinite(len)) continue;  // keeps the frame's normal
+    float* normal = &out.vertices[(first + v) * kVertexFloats + kVertexNormal];
+    for (int c = 0; c < 3; ++c) normal[c] = static_cast<float>(sum[v][c] / len);
+  }
 }
 
 }  // namespace strielad::view

@@ -9,6 +9,10 @@
 // km); the renderer applies the exaggeration as a scale of z, so changing it needs no
 // new geometry. Normals are transformed with the inverse transpose of the axis-to-world
 // Jacobian, so they stay outward and perpendicular to the surface in the world frame.
+// With heights from a variable (view/height_placement.h) a sub-volume vertex's z is the
+// variable's value (carried as a mesh attribute), and its normal the placed surface's
+// own (area-weighted face normals): the map's vertical derivatives are not known per
+// vertex. Vertices where the value is missing, and slices, keep the frame's height.
 #pragma once
 
 #include <array>
@@ -21,6 +25,7 @@
 #include "lod/world_frame.h"
 #include "octree/octree_layout.h"
 #include "protocol/messages.h"
+#include "view/height_placement.h"
 
 namespace strielad::view {
 
@@ -79,17 +84,20 @@ struct NodeGeometry {
 class GeometryPlacer {
  public:
   // \error as lod::WorldFrame for axes without a world position.
-  explicit GeometryPlacer(const format::Manifest& manifest);
+  explicit GeometryPlacer(const format::Manifest& manifest, HeightPlacement heights = {});
 
   // The node's meshes of time step `step` packed. `slot_of_id(id)` gives the slot of a sub-volume id (the
   // position of the sub-volume in the scene); a mesh whose id has no slot is left out.
   // Slice meshes are packed with their position in result.slices (the scene's slice
-  // order) as their slot; those beyond kMaxViewSlices are left out.
+  // order) as their slot; those beyond kMaxViewSlices are left out. `height_attribute`:
+  // the position of heights().variable among the meshes' attributes (the scene's
+  // attributes as sent); -1 places every vertex by the frame.
   // \error kInvalidInput naming the node when a mesh has a non-finite position or an
   // index out of range (the decoder checks both; this guards the upload).
   template <typename SlotOf>
   std::shared_ptr<const NodeGeometry> place(const protocol::NodeResult& result,
-                                            std::uint32_t step, SlotOf slot_of_id) const;
+                                            std::uint32_t step, SlotOf slot_of_id,
+                                            int height_attribute = -1) const;
 
   // True when the axis-to-world map reverses orientation (an odd number of decreasing
   // axis maps, e.g. a pressure axis): counter-clockwise triangles seen from outside in
@@ -97,19 +105,27 @@ class GeometryPlacer {
   // front-face rule.
   bool mirrored() const { return mirrored_; }
   const lod::WorldFrame& frame() const { return frame_; }
+  const HeightPlacement& heights() const { return heights_; }
 
  private:
-  void append_mesh(const Mesh& mesh, std::uint32_t slot, NodeGeometry& out) const;
+  void append_mesh(const Mesh& mesh, std::uint32_t slot, int height_attribute,
+                   NodeGeometry& out) const;
   void append_slice(const Mesh& mesh, std::uint32_t slot, NodeGeometry& out) const;
+  // Heights (and normals) of the vertices from `first` on from the variable's values;
+  // their triangles start at out.indices[first_triangle_index].
+  void place_heights(const std::vector<float>& values, std::size_t first,
+                     std::size_t first_triangle_index, NodeGeometry& out) const;
 
   lod::WorldFrame frame_;
   bool mirrored_ = false;
+  HeightPlacement heights_;
 };
 
 template <typename SlotOf>
 std::shared_ptr<const NodeGeometry> GeometryPlacer::place(const protocol::NodeResult& result,
                                                           std::uint32_t step,
-                                                          SlotOf slot_of_id) const {
+                                                          SlotOf slot_of_id,
+                                                          int height_attribute) const {
   auto geometry = std::make_shared<NodeGeometry>();
   geometry->node = result.node;
   geometry->step = step;
@@ -117,7 +133,7 @@ std::shared_ptr<const NodeGeometry> GeometryPlacer::place(const protocol::NodeRe
     if (sub.outcome != NodeOutcome::kMesh || sub.mesh.empty()) continue;
     const int slot = slot_of_id(sub.subvolume_id);
     if (slot < 0) continue;
-    append_mesh(sub.mesh, static_cast<std::uint32_t>(slot), *geometry);
+    append_mesh(sub.mesh, static_cast<std::uint32_t>(slot), height_attribute, *geometry);
   }
   for (std::size_t i = 0; i < result.slices.size() && i < kMaxViewSlices; ++i) {
     const auto& slice = result.slices[i];

@@ -44,9 +44,9 @@ SunAtTime seen_from(double julian_day, double lat, double lon) {
 }  // namespace
 
 double domain_longitude_span_deg(const lod::WorldFrame& frame) {
-  if (frame.horizontal() != lod::HorizontalMap::kGeographic) return 0;
-  const auto& d = frame.domain();
-  return std::fabs(frame.world_to_axis(0, d.hi[0]) - frame.world_to_axis(0, d.lo[0]));
+  if (!frame.on_earth()) return 0;
+  const auto b = frame.geographic_bounds();
+  return b.lon_hi - b.lon_lo;
 }
 
 SunAtTime sun_for_domain(double julian_day, double lon_lo, double lon_hi, double lat_lo,
@@ -92,15 +92,12 @@ SunAtTime sun_for_domain(double julian_day, double lon_lo, double lon_hi, double
 
 std::optional<SunAtTime> sun_at_step(const lod::WorldFrame& frame, const format::Manifest& manifest,
                                      std::uint32_t step, double seconds_after) {
-  if (frame.horizontal() != lod::HorizontalMap::kGeographic) return std::nullopt;
+  if (!frame.on_earth()) return std::nullopt;
   const auto jd = step_julian_day(manifest, step, seconds_after);
   if (!jd) return std::nullopt;
-  const auto& d = frame.domain();
-  const double lon_a = frame.world_to_axis(0, d.lo[0]), lon_b = frame.world_to_axis(0, d.hi[0]);
-  const double lat_a = frame.world_to_axis(1, d.lo[1]), lat_b = frame.world_to_axis(1, d.hi[1]);
-  return sun_for_domain(*jd, std::min(lon_a, lon_b), std::max(lon_a, lon_b),
-                        std::min(lat_a, lat_b), std::max(lat_a, lat_b), frame.origin(0),
-                        frame.origin(1));
+  const auto b = frame.geographic_bounds();
+  return sun_for_domain(*jd, b.lon_lo, b.lon_hi, std::max(b.lat_lo, -90.0),
+                        std::min(b.lat_hi, 90.0), frame.lon0(), frame.lat0());
 }
 
 std::string describe_sun(const SunAtTime& sun) {

@@ -40,13 +40,15 @@ struct SunAtTime {
   double domain_longitude_span_deg = 0;
 };
 
-// Degrees of longitude a geographic frame's domain spans (0 for other frames).
+// Degrees of true longitude a frame's domain spans (its geographic_bounds; 0 for a
+// frame without a place on the Earth).
 double domain_longitude_span_deg(const lod::WorldFrame& frame);
 
 // The sun at time step `step` plus `seconds_after` seconds, seen from the point the
-// rule above picks. Nothing when the frame is not geographic (no longitude/latitude to
-// stand on) or the time axis has no real date (units not "<unit> since <date>", or a
-// model calendar such as 360_day).
+// rule above picks, by true longitude and latitude (through the grid mapping on a
+// mapped frame). Nothing when the frame has no place on the Earth (a Cartesian grid:
+// WorldFrame::no_earth_reason) or the time axis has no real date (units not "<unit>
+// since <date>", or a model calendar such as 360_day).
 std::optional<SunAtTime> sun_at_step(const lod::WorldFrame& frame, const format::Manifest& manifest,
                                      std::uint32_t step, double seconds_after = 0);
 

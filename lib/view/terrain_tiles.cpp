@@ -72,6 +72,8 @@ double box_distance(const lod::WorldBox& box, const lod::Vec3& p) {
 // height alone does not tell them apart.
 bool is_water(float metres) { return !(metres >= 0.0f); }
 
+constexpr float kFarOutside = 3.0e38f;
+
 // `lon` moved by whole turns into [reference - 180, reference + 180].
 double near_longitude(double lon, double reference) {
   while (lon < reference - 180) lon += 360;
@@ -131,22 +133,28 @@ lod::WorldBox exaggerated(lod::WorldBox box, double e) {
 TerrainTiles::TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod::WorldFrame& frame,
                            TerrainOptions options, std::shared_ptr<const geo::DrapeImage> drape)
     : dem_(std::move(dem)), drape_(std::move(drape)), frame_(frame), options_(options) {
-  if (frame.horizontal() != lod::HorizontalMap::kGeographic) {
-    throw make_error(ErrorCode::kUnsupported,
-                     "{}: terrain needs a store with longitude/latitude axes", dem_->describe());
+  if (!frame.on_earth()) {
+    throw make_error(ErrorCode::kUnsupported, "terrain {}: cannot be placed: {}",
+                     dem_->describe(), frame.no_earth_reason());
   }
   if (!(options_.error_pixels > 0)) {
     throw make_error(ErrorCode::kInvalidArgument, "terrain error {} pixels: must be > 0",
                      options_.error_pixels);
   }
   const auto& d = frame.domain();
+  const auto axes = frame.axis_ranges();
+  mapped_ = frame.horizontal() == lod::HorizontalMap::kMapped;
+  // Clip coordinates: world x/y on a geographic frame (the domain is its world box), the
+  // store's own axis x/y on a mapped one (the domain is their box, a curved shape in the
+  // world).
   clip_ = d;
-  const double lon_lo = frame.world_to_axis(0, d.lo[0]), lon_hi = frame.world_to_axis(0, d.hi[0]);
-  const double lat_lo = frame.world_to_axis(1, d.lo[1]), lat_hi = frame.world_to_axis(1, d.hi[1]);
-  const double lon_min = std::min(lon_lo, lon_hi), lon_max = std::max(lon_lo, lon_hi);
-  const double lat_min = std::min(lat_lo, lat_hi), lat_max = std::max(lat_lo, lat_hi);
-  // The DEM's samples inside the store's lon/lat box, found on a lattice of at most
-  // 512 x 512 samples (then widened by one lattice step).
+  if (mapped_) clip_ = {{axes[0], axes[2], 0}, {axes[1], axes[3], 0}};
+  const auto bounds = frame.geographic_bounds();
+  const double lon_min = bounds.lon_lo, lon_max = bounds.lon_hi;
+  const double lat_min = bounds.lat_lo, lat_max = bounds.lat_hi;
+  // The DEM's samples inside the store's axis box (each sample's true lon/lat through the
+  // frame's inverse map), found on a lattice of at most 512 x 512 samples (then widened
+  // by one lattice step).
   const std::size_t w = dem_->width(), h = dem_->height();
   const std::size_t step = std::max<std::size_t>(1, (std::max(w, h) + 511) / 512);
   std::vector<double> cs, rs;
@@ -160,16 +168,15 @@ TerrainTiles::TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod:
   dem_->georeference(cs, rs, ll);
   std::size_t c0 = w, c1 = 0, r0 = h, r1 = 0;
   double dem_lon_min = INFINITY, dem_lon_max = -INFINITY, dem_lat_min = INFINITY, dem_lat_max = -INFINITY;
+  const double o = frame.lon0();
   for (std::size_t i = 0; i < ll.size(); ++i) {
-    double lon = ll[i].lon;
-    const double o = frame.origin(0);
-    while (lon < o - 180) lon += 360;
-    while (lon > o + 180) lon -= 360;
+    const double lon = o + std::remainder(ll[i].lon - o, 360.0);
     dem_lon_min = std::min(dem_lon_min, lon);
     dem_lon_max = std::max(dem_lon_max, lon);
     dem_lat_min = std::min(dem_lat_min, ll[i].lat);
     dem_lat_max = std::max(dem_lat_max, ll[i].lat);
-    if (lon >= lon_min && lon <= lon_max && ll[i].lat >= lat_min && ll[i].lat <= lat_max) {
+    const auto a = frame.geographic_to_axis(ll[i].lon, ll[i].lat);
+    if (a[0] >= axes[0] && a[0] <= axes[1] && a[1] >= axes[2] && a[1] <= axes[3]) {
       const auto c = static_cast<std::size_t>(cs[i]), r = static_cast<std::size_t>(rs[i]);
       c0 = std::min(c0, c);
       c1 = std::max(c1, c);
@@ -194,7 +201,7 @@ TerrainTiles::TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod:
     // the store's western edge to its eastern one, wherever the DEM's own columns start,
     // and never comes within 1.5 columns of the turn around the store's centre, where
     // placed longitudes jump by 360 degrees.
-    const double o = frame.origin(0), a = std::fabs(global.step);
+    const double a = std::fabs(global.step);
     const double margin = double(step) * a;
     const double west = std::max(lon_min - margin, o - 180 + 1.5 * a);
     const double east = std::min(lon_max + margin, o + 180 - 1.5 * a);
@@ -262,8 +269,18 @@ TerrainTileSamples TerrainTiles::samples(const TerrainTileKey& k) const {
 }
 
 lod::Vec3 TerrainTiles::place(const geo::LonLat& ll) const {
-  const double lon = near_longitude(ll.lon, frame_.origin(0));
-  return {frame_.axis_to_world(0, lon), frame_.axis_to_world(1, ll.lat), 0.0};
+  const auto xy = frame_.geographic_to_world(ll.lon, ll.lat);
+  return {xy[0], xy[1], 0.0};
+}
+
+std::array<float, 2> TerrainTiles::clip_coordinates(const geo::LonLat& ll,
+                                                    const lod::Vec3& world) const {
+  if (!mapped_) return {float(world[0]), float(world[1])};
+  const auto a = frame_.geographic_to_axis(ll.lon, ll.lat);
+  // No place in the store's axes: far outside every clip box (NaN would compare
+  // unpredictably on the GPU).
+  if (!std::isfinite(a[0]) || !std::isfinite(a[1])) return {kFarOutside, kFarOutside};
+  return {float(a[0]), float(a[1])};
 }
 
 std::size_t TerrainTiles::dem_column(std::size_t column) const {
@@ -339,9 +356,10 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
       }
       const bool water = is_water(heights[i]);
       const float x = float(p[i][0]), y = float(p[i][1]), z = float(p[i][2]);
+      const auto clip = clip_coordinates(ll[i], p[i]);
       mesh->vertices.insert(mesh->vertices.end(),
                             {x, y, z, float(gx), float(gy), u[r * nc + c], v[r * nc + c],
-                             water ? 1.0f : 0.0f});
+                             water ? 1.0f : 0.0f, clip[0], clip[1]});
       for (int a2 = 0; a2 < 3; ++a2) {
         box.lo[a2] = std::min(box.lo[a2], p[i][a2]);
         box.hi[a2] = std::max(box.hi[a2], p[i][a2]);

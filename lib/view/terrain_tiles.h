@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // The terrain's level-of-detail height field (issue 8, "Terrain"): a quadtree of tiles
-// over the part of a DEM (geo/dem_source.h) that overlaps the store's longitude/latitude
-// extent, each tile kTerrainTileCells x kTerrainTileCells cells of the DEM sampled at its
-// level's stride (the finest level takes every sample), placed in the store's world
-// frame (lod/world_frame.h) through the DEM's own georeferencing, heights in km so that
-// the renderer's vertical exaggeration lifts terrain and clouds alike.
+// over the part of a DEM (geo/dem_source.h) that overlaps the store's domain (the DEM
+// samples whose true longitude/latitude falls inside the store's axis box, through the
+// grid mapping on a mapped grid), each tile kTerrainTileCells x kTerrainTileCells cells
+// of the DEM sampled at its level's stride (the finest level takes every sample), placed
+// in the store's world frame (lod/world_frame.h) by each sample's true longitude and
+// latitude from the DEM's own georeferencing (WorldFrame::geographic_to_world), heights
+// in km so that the renderer's vertical exaggeration lifts terrain and clouds alike.
 //
 // - Selection (every frame, TerrainTiles::update): from the root, a tile in the view
 //   frustum is split while its screen-space error, error_km * viewport height /
@@ -62,8 +64,11 @@ inline constexpr int kTerrainTileCells = 64;  // 65 x 65 vertices per tile
 inline constexpr double kDefaultTerrainErrorPixels = 2.0;
 inline constexpr std::size_t kDefaultTerrainCacheBytes = 256ull << 20;
 // Per vertex: x, y (world km), height (km, 0 on water), dh/dx, dh/dy (km per km),
-// u, v (drape texture; < 0 off the image), water (1 or 0: no value or below sea level).
-inline constexpr int kTerrainVertexFloats = 8;
+// u, v (drape texture; < 0 off the image), water (1 or 0: no value or below sea level),
+// clip x, clip y (the coordinates TerrainFrame::clip bounds: world x/y on a geographic
+// frame, the store's axis x/y on a mapped one; far outside where the store's axes do
+// not reach).
+inline constexpr int kTerrainVertexFloats = 10;
 
 struct TerrainTileKey {
   int level = 0, x = 0, y = 0;
@@ -95,7 +100,10 @@ struct TerrainTileMesh {
 // What the renderer draws of the terrain in one frame.
 struct TerrainFrame {
   std::vector<std::shared_ptr<const TerrainTileMesh>> tiles;
-  lod::WorldBox clip;  // world x/y box the terrain is cut to (the store's domain)
+  // The box in clip coordinates (x and y; kTerrainVertexFloats) the terrain is cut to:
+  // the store's domain. World km on a geographic frame; on a mapped frame the store's
+  // axis box (rlon/rlat, projected x/y), whose image in the world is a curved shape.
+  lod::WorldBox clip;
   std::size_t triangles() const {
     std::size_t n = 0;
     for (const auto& t : tiles) n += t->triangles();
@@ -123,8 +131,9 @@ struct TerrainStatus {
 
 class TerrainTiles {
  public:
-  // \error kUnsupported when the frame is not geographic (no longitude/latitude axes);
-  // kInvalidInput when the DEM does not overlap the store's extent (naming both extents).
+  // \error kUnsupported when the frame has no place on the Earth (a Cartesian grid
+  // without a grid mapping: WorldFrame::no_earth_reason); kInvalidInput when the DEM does
+  // not overlap the store's extent (naming both extents).
   TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod::WorldFrame& frame,
                TerrainOptions options = {}, std::shared_ptr<const geo::DrapeImage> drape = nullptr);
   ~TerrainTiles();
@@ -162,6 +171,7 @@ class TerrainTiles {
   std::size_t stride(int level) const { return std::size_t{1} << (finest_level_ - level); }
   lod::WorldBox estimated_box(const TerrainTileKey& key, const lod::WorldBox* parent) const;
   lod::Vec3 place(const geo::LonLat& ll) const;
+  std::array<float, 2> clip_coordinates(const geo::LonLat& ll, const lod::Vec3& world) const;
   std::size_t dem_column(std::size_t column) const;
   std::vector<std::size_t> dem_columns(std::vector<std::size_t> columns) const;
   void worker_loop(std::stop_token stop);
@@ -175,6 +185,7 @@ class TerrainTiles {
   std::size_t wrap_columns_ = 0;
   int finest_level_ = 0;
   lod::WorldBox clip_;
+  bool mapped_ = false;  // the frame is mapped: clip coordinates are axis x/y
 
   mutable std::mutex mutex_;
   std::condition_variable_any wake_;

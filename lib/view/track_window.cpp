@@ -21,8 +21,9 @@ Point interpolate(const geo::FlightTrack& t, std::size_t i, double s) {
 }
 
 void push(std::vector<float>& out, const lod::WorldFrame& frame, const Point& p) {
-  out.push_back(static_cast<float>(frame.axis_to_world(0, p.lon)));
-  out.push_back(static_cast<float>(frame.axis_to_world(1, p.lat)));
+  const auto xy = frame.geographic_to_world(p.lon, p.lat);
+  out.push_back(static_cast<float>(xy[0]));
+  out.push_back(static_cast<float>(xy[1]));
   out.push_back(static_cast<float>(p.altitude_m / 1000.0));
 }
 
@@ -31,7 +32,7 @@ void push(std::vector<float>& out, const lod::WorldFrame& frame, const Point& p)
 TrackLines window_tracks(const geo::FlightTracks& tracks, double now, double window,
                          const lod::WorldFrame& frame) {
   TrackLines out;
-  if (frame.horizontal() != lod::HorizontalMap::kGeographic) return out;
+  if (!frame.on_earth()) return out;
   const double from = now - std::max(window, 0.0);
   for (const auto& t : tracks.tracks) {
     if (t.size() == 0 || t.seconds.front() > now || t.seconds.back() < from) continue;

@@ -4,7 +4,9 @@
 // segments, cut at both ends by linear interpolation between reports, and the
 // aircraft's position at `now` when the track spans it. A track that ended before the
 // window or starts after `now` shows nothing. World frame km at exaggeration 1 (z =
-// altitude in km), like the meshes.
+// altitude in km), like the meshes; each position placed by its true longitude and
+// latitude (lod::WorldFrame::geographic_to_world, through the grid mapping's plane on a
+// mapped grid). Positions are interpolated in longitude/latitude between reports.
 #pragma once
 
 #include <cstddef>
@@ -25,8 +27,10 @@ struct TrackLines {
   std::size_t head_count() const { return heads.size() / 3; }
 };
 
-// `now` in seconds since tracks.reference_julian_day. Needs a geographic frame
-// (longitude/latitude axes); others get nothing. A window <= 0 shows only the heads.
+// `now` in seconds since tracks.reference_julian_day. Needs a frame on the Earth
+// (longitude/latitude axes or a grid mapping); a Cartesian frame gets nothing (the
+// viewer refuses tracks on it before: WorldFrame::no_earth_reason). A window <= 0 shows
+// only the heads.
 TrackLines window_tracks(const geo::FlightTracks& tracks, double now, double window,
                          const lod::WorldFrame& frame);
 

@@ -41,8 +41,9 @@ void ViewController::set_vertical_exaggeration(double exaggeration) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "vertical exaggeration {} must be finite and > 0", exaggeration);
   }
+  // The link's frame, at the new exaggeration (its horizontal placement is shared).
   frame_ = std::make_unique<lod::WorldFrame>(
-      link_.manifest(), lod::WorldFrameOptions{.vertical_exaggeration = exaggeration});
+      link_.placer().frame().with_exaggeration(exaggeration));
   options_.vertical_exaggeration = exaggeration;
   rebuild_cut();
 }
@@ -56,6 +57,7 @@ void ViewController::set_lod_options(const lod::LodOptions& options) {
 void ViewController::rebuild_cut() {
   cut_rebuilt_ = cut_ != nullptr;
   auto boxes = lod::node_world_boxes(link_.octree(), *frame_);
+  link_.placer().heights().widen_boxes(boxes, options_.vertical_exaggeration);
   cut_ = std::make_unique<lod::LodCut>(link_.octree(), std::move(boxes), options_.lod);
 }
 

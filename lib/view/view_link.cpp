@@ -28,11 +28,11 @@ LinkEvent message_event(LinkEvent::Kind kind, std::uint64_t epoch, NodeId node,
 
 }  // namespace
 
-ViewLink::ViewLink(std::unique_ptr<client::ServerClient> client)
+ViewLink::ViewLink(std::unique_ptr<client::ServerClient> client, HeightPlacement heights)
     : client_(std::move(client)),
       manifest_(client_->manifest()),
       octree_(std::make_unique<OctreeLayout>(client_->octree())),
-      placer_(manifest_) {
+      placer_(manifest_, std::move(heights)) {
   thread_ = std::thread([this] { run(); });
 }
 
@@ -162,7 +162,17 @@ void ViewLink::execute(Command& command) {
 void ViewLink::start_generation(const Scene* scene, std::uint32_t step, std::uint64_t epoch) {
   protocol::GenerationStarted started;
   if (scene != nullptr) {
-    started = client_->set_scene(*scene);
+    const HeightPlacement& heights = placer_.heights();
+    if (heights.kind == HeightPlacement::Kind::kVariable) {
+      // The heights travel as one more attribute of the scene.
+      Scene sent = *scene;
+      const auto it = std::find(sent.attributes.begin(), sent.attributes.end(), heights.variable);
+      height_attribute_ = static_cast<int>(it - sent.attributes.begin());
+      if (it == sent.attributes.end()) sent.attributes.push_back(heights.variable);
+      started = client_->set_scene(sent);
+    } else {
+      started = client_->set_scene(*scene);
+    }
     slot_ids_.clear();
     for (const auto& sub : scene->subvolumes) slot_ids_.push_back(sub.id);
   } else {
@@ -190,10 +200,13 @@ void ViewLink::receive(protocol::Message& message) {
   if (auto* result = std::get_if<protocol::NodeResult>(&message)) {
     LinkEvent event = message_event(LinkEvent::Kind::kResult, epoch_, result->node, {});
     try {
-      event.geometry = placer_.place(*result, step_, [&](std::uint32_t id) {
-        const auto it = std::find(slot_ids_.begin(), slot_ids_.end(), id);
-        return it == slot_ids_.end() ? -1 : static_cast<int>(it - slot_ids_.begin());
-      });
+      event.geometry = placer_.place(
+          *result, step_,
+          [&](std::uint32_t id) {
+            const auto it = std::find(slot_ids_.begin(), slot_ids_.end(), id);
+            return it == slot_ids_.end() ? -1 : static_cast<int>(it - slot_ids_.begin());
+          },
+          height_attribute_);
     } catch (const Error& e) {
       event.kind = LinkEvent::Kind::kFailed;
       event.message = e.what();

@@ -28,6 +28,7 @@
 #include "client/server_client.h"
 #include "lod/lod_cut.h"
 #include "scene/scene.h"
+#include "view/height_placement.h"
 #include "view/node_geometry.h"
 
 namespace strielad::view {
@@ -59,8 +60,11 @@ struct LinkCounters {
 
 class ViewLink {
  public:
-  // Takes over a client whose dataset is open.
-  explicit ViewLink(std::unique_ptr<client::ServerClient> client);
+  // Takes over a client whose dataset is open. With heights from a variable
+  // (view/height_placement.h) every scene is sent with that variable as one more
+  // attribute (at the end, unless the scene carries it already) and the meshes are
+  // placed by it.
+  explicit ViewLink(std::unique_ptr<client::ServerClient> client, HeightPlacement heights = {});
   ~ViewLink();  // stops the thread; the client says Goodbye
   ViewLink(const ViewLink&) = delete;
   ViewLink& operator=(const ViewLink&) = delete;
@@ -100,6 +104,7 @@ class ViewLink {
   // Link thread only.
   std::unordered_map<NodeId, float> cut_;  // the render thread's cut, as sent
   std::vector<std::uint32_t> slot_ids_;    // sub-volume id per slot, current scene
+  int height_attribute_ = -1;              // the heights' attribute in the scene as sent
   std::uint64_t epoch_ = 0;                // in effect
   std::uint32_t step_ = 0;                 // time step of the generation in effect
   bool generation_active_ = false;

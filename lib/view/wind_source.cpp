@@ -62,13 +62,17 @@ WindNames parse_wind_names(const std::string& text) {
 
 WindUnits wind_units(const lod::WorldFrame& frame) {
   WindUnits units;
-  if (frame.horizontal() == lod::HorizontalMap::kGeographic) {
+  // Degrees on longitude/latitude axes and on a rotated pole (a longitude/latitude grid
+  // on a turned sphere: its grid-relative winds move it as winds move a geographic grid);
+  // metres of map coordinates on Cartesian and projected axes (a projected grid's map
+  // scale factor is not applied: a few percent off its standard parallels).
+  if (frame.axis_length_km(0) == 0 || frame.axis_length_km(1) == 0) {
     units.horizontal = advect::Horizontal::kDegrees;
     units.scale[0] = units.scale[1] = 1.0;
   } else {
     units.horizontal = advect::Horizontal::kMetres;
-    units.scale[0] = frame.km_per_unit(0) * 1000.0;
-    units.scale[1] = frame.km_per_unit(1) * 1000.0;
+    units.scale[0] = frame.axis_length_km(0) * 1000.0;
+    units.scale[1] = frame.axis_length_km(1) * 1000.0;
   }
   units.vertical = frame.vertical() == lod::VerticalMap::kPressure ? advect::Vertical::kPascals
                                                                     : advect::Vertical::kMetres;

@@ -217,6 +217,75 @@ echo '{"format_version": 2, "subvolumes": [{"id": 1, "limits": [{"var": "clw", "
        "terrain": {"dem": "missing-dem.nc"}}' > "$work/scenes/missing.json"
 expect 3 "missing-dem.nc" -- "$work/store" --scene "$work/scenes/missing.json" --offscreen --out "$work/x.png"
 
+# Placement by the grid (issue 27): a Cartesian grid (x, y in metres, no grid_mapping)
+# refuses terrain and an explicit true sun with one line naming its axes, and falls back
+# to the fixed light with a warning by default; a rotated-pole grid is placed through
+# its grid mapping, with the terrain on the same pole.
+hsurf=/usr/share/ncarg/data/nug/HSURF_regional_model_0.11deg.nc
+if command -v ncgen >/dev/null; then
+  python3 - "$work/cartesian.cdl" "$work/rotated.cdl" <<'PY'
+import math, sys
+def cdl(path, xname, yname, xunits, yvals, xvals, extra_x, extra_y, mapping):
+    zs = [0, 1000, 2000, 3000]
+    with open(path, "w") as o:
+        o.write("netcdf g {\ndimensions:\n %s = %d ;\n %s = %d ;\n height = 4 ;\n time = 1 ;\n"
+                % (xname, len(xvals), yname, len(yvals)))
+        o.write("variables:\n double %s(%s) ; %s:units = \"%s\" ; %s\n" % (xname, xname, xname, xunits, extra_x))
+        o.write(" double %s(%s) ; %s:units = \"%s\" ; %s\n" % (yname, yname, yname, xunits, extra_y))
+        o.write(' double height(height) ; height:units = "m" ; height:positive = "up" ; height:standard_name = "height" ;\n')
+        o.write(' double time(time) ; time:units = "hours since 2006-01-16 12:00:00" ;\n')
+        o.write(' float ta(time, height, %s, %s) ; ta:units = "K" ;%s\n' % (yname, xname, mapping[0]))
+        o.write(mapping[1] + "data:\n")
+        o.write(" %s = %s ;\n %s = %s ;\n height = 0, 1000, 2000, 3000 ;\n time = 0 ;\n"
+                % (xname, ", ".join(map(str, xvals)), yname, ", ".join(map(str, yvals))))
+        ta = [260 + 2 * math.hypot(i - len(xvals) / 2, j - len(yvals) / 2) + 0.003 * z
+              for z in zs for j in range(len(yvals)) for i in range(len(xvals))]
+        o.write(" ta = " + ", ".join("%.2f" % v for v in ta) + " ;\n}\n")
+cdl(sys.argv[1], "x", "y", "m", [2000.0 * j for j in range(12)], [2000.0 * i for i in range(12)],
+    'x:standard_name = "projection_x_coordinate" ;', 'y:standard_name = "projection_y_coordinate" ;', ("", ""))
+cdl(sys.argv[2], "rlon", "rlat", "degrees", [-6.0 + 0.25 * j for j in range(17)],
+    [-8.0 + 0.25 * i for i in range(21)],
+    'rlon:standard_name = "grid_longitude" ;', 'rlat:standard_name = "grid_latitude" ;',
+    (' ta:grid_mapping = "rotated_pole" ;',
+     ' char rotated_pole ; rotated_pole:grid_mapping_name = "rotated_latitude_longitude" ;'
+     ' rotated_pole:grid_north_pole_latitude = 39.25 ; rotated_pole:grid_north_pole_longitude = -162. ;\n'))
+PY
+  ncgen -o "$work/cartesian.nc" "$work/cartesian.cdl" && ncgen -o "$work/rotated.nc" "$work/rotated.cdl" &&
+    "$convert" "$work/cartesian.nc" -o "$work/cartesian" --brick 4 -q &&
+    "$convert" "$work/rotated.nc" -o "$work/rotated" --brick 4 -q || fail "placement stores"
+  if [[ -f "$hsurf" ]]; then
+    expect 5 "--terrain $hsurf: terrain cannot be placed: axes 'x' (m) and 'y' (m) are Cartesian" \
+      -- "$work/cartesian" --terrain "$hsurf" --offscreen --out "$work/x.png"
+  fi
+  expect 5 "--sun time: the true sun cannot be placed: axes 'x' (m) and 'y' (m)" \
+    -- "$work/cartesian" --sun time --offscreen --out "$work/x.png"
+  if "$view" "$work/cartesian" --offscreen --size 96x64 --threads 2 --out "$work/cartesian.png" \
+      2>"$work/cartesian.err"; then
+    grep -q ' warning\] the true sun cannot be placed (axes .x. (m) and .y. (m)' "$work/cartesian.err" ||
+      fail "no warning for the default sun on a Cartesian grid: $(cat "$work/cartesian.err")"
+    echo "ok: a Cartesian grid refuses terrain and the true sun"
+  else
+    fail "Cartesian grid"; cat "$work/cartesian.err"
+  fi
+  rotated_args=("$work/rotated" --offscreen --size 96x64 --threads 2 --out "$work/rotated.png" --json)
+  [[ -f "$hsurf" ]] && rotated_args+=(--terrain "$hsurf")
+  if "$view" "${rotated_args[@]}" >"$work/rotated.json" 2>"$work/rotated.err"; then
+    is_png "$work/rotated.png" || fail "rotated.png is not a PNG image"
+    grep -q "world frame: axes 'rlon' and 'rlat' placed by grid mapping 'rotated_pole'" "$work/rotated.err" ||
+      fail "rotated placement not logged: $(cat "$work/rotated.err")"
+    grep -q '"vertical_placement":"height axis' "$work/rotated.json" ||
+      fail "vertical placement: $(cat "$work/rotated.json")"
+    if [[ -f "$hsurf" ]]; then
+      grep -q '"terrain_tiles":[1-9]' "$work/rotated.json" || fail "no terrain: $(cat "$work/rotated.json")"
+    fi
+    echo "ok: a rotated-pole grid placed by its grid mapping"
+  else
+    fail "rotated-pole grid"; cat "$work/rotated.err"
+  fi
+else
+  echo "skip: placement by the grid (no ncgen)"
+fi
+
 # The window: a few frames under Xvfb, then a screenshot.
 if command -v xvfb-run >/dev/null; then
   if xvfb-run -a -s "-screen 0 800x600x24" "$view" "$work/store" --size 640x400 --threads 2 \

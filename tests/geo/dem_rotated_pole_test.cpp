@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The real rotated-pole DEM of a regional model (HSURF in libncarg-data): samples placed
-// by the pole formula match the file's own 2-D lat/lon; heights in a known range;
-// strided reads equal the full read's samples.
+// through the grid mapping (PROJ, as the stores are placed) match PROJ's cs2cs and the
+// file's own 2-D lat/lon; heights in a known range; strided reads equal the full read's
+// samples.
 #include <gtest/gtest.h>
 #include <netcdf.h>
 
@@ -9,7 +10,7 @@
 #include <filesystem>
 
 #include "geo/dem_source.h"
-#include "geo/rotated_pole.h"
+#include "support/cs2cs.h"
 
 namespace strielad {
 namespace {
@@ -31,19 +32,40 @@ float file_value(const char* var, std::size_t row, std::size_t col) {
   return value;
 }
 
-TEST(RotatedPoleTest, RoundTripAndCentre) {
-  const geo::RotatedPole pole{39.25, -162.0, 0.0};
-  const auto centre = geo::rotated_to_geographic(pole, 0, 0);
-  EXPECT_NEAR(centre.lon, 18.0, 1e-12);
-  EXPECT_NEAR(centre.lat, 50.75, 1e-12);
-  for (double rlon = -20; rlon <= 20; rlon += 5) {
-    for (double rlat = -20; rlat <= 20; rlat += 5) {
-      const auto g = geo::rotated_to_geographic(pole, rlon, rlat);
-      const auto r = geo::geographic_to_rotated(pole, g.lon, g.lat);
-      EXPECT_NEAR(r.lon, rlon, 1e-9);
-      EXPECT_NEAR(r.lat, rlat, 1e-9);
-    }
+// The file's rotated axis value (rlon or rlat) at `index`.
+double axis_value(const char* var, std::size_t index) {
+  int nc = -1, v = -1;
+  EXPECT_EQ(nc_open(kHsurf.c_str(), NC_NOWRITE, &nc), NC_NOERR);
+  EXPECT_EQ(nc_inq_varid(nc, var, &v), NC_NOERR);
+  double value = NAN;
+  EXPECT_EQ(nc_get_var1_double(nc, v, &index, &value), NC_NOERR);
+  nc_close(nc);
+  return value;
+}
+
+TEST(DemRotatedPoleTest, SamplesLieWhereCs2csPutsThem) {
+  if (!std::filesystem::exists(kHsurf)) GTEST_SKIP() << kHsurf << " missing (libncarg-data)";
+  if (!testing::have_cs2cs()) GTEST_SKIP() << "cs2cs (proj-bin) missing";
+  const auto dem = geo::open_dem(kHsurf);
+  std::vector<std::pair<std::size_t, std::size_t>> samples;  // (row, col)
+  for (std::size_t row = 0; row < 438; row += 73) {
+    for (std::size_t col = 0; col < 450; col += 89) samples.emplace_back(row, col);
   }
+  samples.emplace_back(437, 449);
+  std::vector<std::array<double, 2>> rotated;
+  for (const auto& [row, col] : samples) rotated.push_back({axis_value("rlon", col), axis_value("rlat", row)});
+  const auto expected = testing::cs2cs(testing::kEuroCordexRotatedPole, "+proj=longlat", rotated);
+  ASSERT_TRUE(expected);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const auto ll = dem->georeference(double(samples[i].second), double(samples[i].first));
+    EXPECT_NEAR(std::remainder(ll.lon - (*expected)[i][0], 360.0), 0.0, 1e-9) << i;
+    EXPECT_NEAR(ll.lat, (*expected)[i][1], 1e-9) << i;
+  }
+  // The pole's meridian runs through the grid's centre: rotated (0, 0) is 18 E, 50.75 N.
+  const auto centre = testing::cs2cs(testing::kEuroCordexRotatedPole, "+proj=longlat", {{0.0, 0.0}});
+  ASSERT_TRUE(centre);
+  EXPECT_NEAR((*centre)[0][0], 18.0, 1e-9);
+  EXPECT_NEAR((*centre)[0][1], 50.75, 1e-9);
 }
 
 TEST(DemRotatedPoleTest, SamplesMatchTheFilesLatLon) {
@@ -52,7 +74,7 @@ TEST(DemRotatedPoleTest, SamplesMatchTheFilesLatLon) {
   ASSERT_EQ(dem->width(), 450u);
   ASSERT_EQ(dem->height(), 438u);
   EXPECT_NE(dem->describe().find("HSURF"), std::string::npos);
-  EXPECT_NE(dem->georeferencing().find("rotated pole"), std::string::npos);
+  EXPECT_NE(dem->georeferencing().find("rotated_latitude_longitude"), std::string::npos);
   for (const auto& [row, col] : {std::pair<std::size_t, std::size_t>{0, 0}, {0, 449}, {437, 0},
                                  {437, 449}, {219, 225}}) {
     const auto ll = dem->georeference(double(col), double(row));

@@ -170,9 +170,9 @@ TEST(CameraPathTest, PressurePathsMoveEvenlyInHeight) {
                         {"t": 1, "eye": [9, 48, 100], "target": [9, 51, 1000]}]})",
       "p");
   const WorldCameraPath w(p, frame, "p");
-  const double z0 = frame.axis_to_world(2, 1000), z1 = frame.axis_to_world(2, 100);
+  const double z0 = frame.vertical_to_world(1000), z1 = frame.vertical_to_world(100);
   EXPECT_NEAR(w.sample(0.5).eye[2], 0.5 * (z0 + z1), 1e-9);
-  EXPECT_NE(frame.world_to_axis(2, w.sample(0.5).eye[2]), 550.0);  // not halfway in hPa
+  EXPECT_NE(frame.world_to_vertical(w.sample(0.5).eye[2]), 550.0);  // not halfway in hPa
 }
 
 TEST(CameraPathTest, PlacementRejectsPointsTheStoreCannotPlace) {

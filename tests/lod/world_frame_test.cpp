@@ -30,8 +30,8 @@ TEST(WorldFrameTest, GeographicAxesBecomeKilometresFromTheDomainCentre) {
   const WorldFrame f(heights_manifest());
   EXPECT_EQ(f.horizontal(), HorizontalMap::kGeographic);
   EXPECT_EQ(f.vertical(), VerticalMap::kHeight);
-  EXPECT_DOUBLE_EQ(f.origin(0), 9.5);   // midpoint of 4.5..14.5
-  EXPECT_DOUBLE_EQ(f.origin(1), 51.0);  // midpoint of 54.5..47.5
+  EXPECT_DOUBLE_EQ(f.lon0(), 9.5);   // midpoint of 4.5..14.5
+  EXPECT_DOUBLE_EQ(f.lat0(), 51.0);  // midpoint of 54.5..47.5
   const Vec3 c = f.to_world({9.5, 51.0, 0.0});
   EXPECT_NEAR(c[0], 0, 1e-12);
   EXPECT_NEAR(c[1], 0, 1e-12);
@@ -45,10 +45,10 @@ TEST(WorldFrameTest, GeographicAxesBecomeKilometresFromTheDomainCentre) {
 TEST(WorldFrameTest, DescendingAxesMapByValueNotStorageOrder) {
   const WorldFrame f(heights_manifest());
   // Latitude stored north to south: sample 0 is the northernmost, largest y.
-  EXPECT_GT(f.sample_world(1, 0), f.sample_world(1, 7));
+  EXPECT_GT(f.sample_world_xy(0, 0)[1], f.sample_world_xy(0, 7)[1]);
   // Height stored top down: sample 0 is the highest.
-  EXPECT_DOUBLE_EQ(f.sample_world(2, 0), 120.0);
-  EXPECT_DOUBLE_EQ(f.sample_world(2, 2), 0.0);
+  EXPECT_DOUBLE_EQ(f.sample_world_z(0), 120.0);
+  EXPECT_DOUBLE_EQ(f.sample_world_z(2), 0.0);
   const WorldBox& d = f.domain();
   for (int a = 0; a < 3; ++a) EXPECT_LT(d.lo[a], d.hi[a]);
   EXPECT_NEAR(d.lo[1], -3.5 * 111.195, 1e-2);
@@ -120,16 +120,16 @@ TEST(WorldFrameTest, PressureAxesMapThroughTheStandardAtmosphere) {
   const WorldFrame hpa(geographic_manifest(5, 5, {1000, 850, 500, 200, 100}, AxisKind::kPressure,
                                            "hPa"));
   EXPECT_EQ(hpa.vertical(), VerticalMap::kPressure);
-  EXPECT_NEAR(hpa.sample_world(2, 2), 5.574 * kDefaultVerticalExaggeration, 0.02);
-  EXPECT_GT(hpa.sample_world(2, 4), hpa.sample_world(2, 0));  // low pressure is high up
+  EXPECT_NEAR(hpa.sample_world_z(2), 5.574 * kDefaultVerticalExaggeration, 0.02);
+  EXPECT_GT(hpa.sample_world_z(4), hpa.sample_world_z(0));  // low pressure is high up
   const WorldFrame pa(geographic_manifest(5, 5, {100000, 85000, 50000, 20000, 10000},
                                           AxisKind::kPressure, "Pa"));
   for (std::size_t i = 0; i < 5; ++i) {
-    EXPECT_NEAR(pa.sample_world(2, i), hpa.sample_world(2, i), 1e-9);
+    EXPECT_NEAR(pa.sample_world_z(i), hpa.sample_world_z(i), 1e-9);
   }
   const WorldFrame mbar(geographic_manifest(5, 5, {1000, 850, 500, 200, 100}, AxisKind::kPressure,
                                             "mbar"));
-  EXPECT_NEAR(mbar.sample_world(2, 3), hpa.sample_world(2, 3), 1e-9);
+  EXPECT_NEAR(mbar.sample_world_z(3), hpa.sample_world_z(3), 1e-9);
 }
 
 TEST(WorldFrameTest, ToAxisInvertsToWorld) {

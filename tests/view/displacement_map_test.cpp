@@ -46,7 +46,7 @@ TEST(DisplacementMapTest, AUniformWindMovesEveryPointByWindTimesTime) {
   EXPECT_EQ(map.step, 3u);
   EXPECT_EQ(map.keyframes, 5u);
   ASSERT_EQ(map.displacement.size(), map.points() * 3 * map.keyframes);
-  const double lat0 = frame.origin(1);
+  const double lat0 = frame.lat0();
   std::size_t checked = 0;
   for (double fx : {0.1, 0.4, 0.8}) {
     for (double fy : {0.05, 0.5, 0.95}) {

@@ -31,8 +31,8 @@ TEST(SunDirectionTest, TheTrueSunOverTheDomainCentre) {
   EXPECT_LT(midnight->position.elevation_deg, -20);  // 51 N in late April
   EXPECT_GT(noon->position.elevation_deg, 50);
   EXPECT_LT(noon->direction[1], 0);  // from the south
-  const auto expected = geo::solar_position(geo::julian_day(2013, 4, 26, 43200), frame.origin(1),
-                                            frame.origin(0));
+  const auto expected = geo::solar_position(geo::julian_day(2013, 4, 26, 43200), frame.lat0(),
+                                            frame.lon0());
   for (int a = 0; a < 3; ++a) EXPECT_DOUBLE_EQ(noon->direction[a], expected.east_north_up[a]);
   // Seconds within a step: step 1 (06:00) plus 6 h is noon.
   const auto later = sun_at_step(frame, m, 1, 21600);
@@ -75,7 +75,7 @@ TEST(SunDirectionTest, GlobalDomainIsLitAsItsDaySide) {
   ASSERT_TRUE(sun);
   // The centre's own sun is far below the horizon...
   const double jd = geo::julian_day(2024, 6, 21, 43200);
-  EXPECT_LT(geo::solar_position(jd, frame.origin(1), frame.origin(0)).elevation_deg, -60);
+  EXPECT_LT(geo::solar_position(jd, frame.lat0(), frame.lon0()).elevation_deg, -60);
   // ...the viewer's is overhead: seen from the sub-solar point (23.4 N, near 0 E at noon
   // UTC), which the domain holds.
   EXPECT_EQ(sun->viewpoint, SunViewpoint::kSunniestPoint);

@@ -206,7 +206,7 @@ TEST(TerrainTilesTest, SeaBelowZeroIsWaterAtHeightZero) {
   });
   view::TerrainTiles tiles(dem, frame);
   const auto root = tiles.load_tile({0, 0, 0});
-  const double coast_x = frame.axis_to_world(0, 9.5);
+  const double coast_x = frame.geographic_to_world(9.5, 51.0)[0];
   std::size_t sea = 0, land = 0;
   for (std::size_t i = 0; i < root->vertices.size(); i += view::kTerrainVertexFloats) {
     const float* v = &root->vertices[i];

@@ -28,7 +28,7 @@ class TrackWindowTest : public ::testing::Test {
  protected:
   lod::WorldFrame frame{lod::testing::geographic_manifest(11, 8, {0.0, 12000.0}),
                         lod::WorldFrameOptions{.vertical_exaggeration = 1.0}};
-  double x(double lon) const { return frame.axis_to_world(0, lon); }
+  double x(double lon) const { return frame.geographic_to_world(lon, frame.lat0())[0]; }
 };
 
 TEST_F(TrackWindowTest, TheLastTwoMinutesCutByInterpolation) {

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: Apache-2.0
+// How the viewer places its meshes' heights (issue 27, item 4). The world frame's
+// vertical map (lod/world_frame.h) places a height axis as it is and a pressure axis by
+// the ICAO standard atmosphere; a pressure-level store that also holds geopotential or
+// geopotential height (zg, gh, z, phi ...: choose_vertical_placement in
+// extract/output_frame.h) is placed by that field instead: the viewer asks the server for
+// it as one more per-vertex attribute of the scene it sends (view/view_link.h) and sets
+// each vertex's height from its value (view/node_geometry.h). The frame's own map stays
+// the standard atmosphere for what has no field value: camera positions, the advection
+// lattice, slices (the server sends no attribute with them) and vertices where the field
+// is missing.
+//
+// Node boxes stay conservative: each node's vertical extent is widened to the field's
+// exact range in the node over every time step, read from the store's index (the
+// per-node minimum and maximum the converter wrote), so every placed vertex is inside
+// its node's box. That needs the store on this machine; through --connect the viewer
+// keeps the standard atmosphere and says why.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "format/manifest.h"
+#include "lod/geometry.h"
+
+namespace strielad {
+class Store;
+}
+
+namespace strielad::view {
+
+struct HeightPlacement {
+  enum class Kind {
+    kFrame,     // the world frame's vertical map: a height axis, or the standard atmosphere
+    kVariable,  // a store variable per vertex
+  };
+  Kind kind = Kind::kFrame;
+  std::string variable;        // kVariable: carried as an extra attribute of the scene
+  double metres_per_unit = 1;  // kVariable: the variable's units to metres
+  // kVariable: per node (NodeId), the lowest and highest height in metres a vertex of the
+  // node can be given: the field's range over the node and every step, joined with the
+  // standard atmosphere's range of the node's pressures (the fallback where the field is
+  // missing).
+  std::vector<std::array<double, 2>> node_heights_m;
+  std::string description;  // one line for the log and the panel
+
+  // The vertical extent of every box (world km at `exaggeration`) widened to
+  // node_heights_m; nothing for kFrame.
+  void widen_boxes(std::vector<lod::WorldBox>& boxes, double exaggeration) const;
+};
+
+// The placement of store `manifest`: kVariable when its vertical axis is a pressure axis,
+// choose_vertical_placement finds a geopotential or height variable and `store` (the
+// same store, opened on this machine) is given to bound the node boxes; kFrame otherwise,
+// with the reason in the description.
+// \error kCorrupt naming the file when the store's index cannot be read.
+HeightPlacement choose_height_placement(const format::Manifest& manifest, const Store* store);
+
+}  // namespace strielad::view
