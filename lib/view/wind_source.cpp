@@ -137,6 +137,7 @@ WindStep load_wind_step(const Store& store, std::uint32_t step, const WindNames&
   advect::WindGrid grid;
   grid.horizontal = units.horizontal;
   grid.vertical = units.vertical;
+  grid.periodic_x = manifest.x.periodic;  // clouds drift across a global grid's seam
   const LevelShape& shape = layout.level(level);
   const std::array<const std::vector<double>*, 3> axis_values{&manifest.x.values,
                                                               &manifest.y.values,
