@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "format/manifest.h"
 
+#include <cmath>
 #include <cstring>
 
 #include "core/byte_io.h"
@@ -228,15 +229,25 @@ json manifest_plan_json(const Manifest& m) {
             {"standard_name", v.standard_name},
             {"dtype", std::string(dtype_name(v.dtype))},
             {"source_type", v.source_type}};
+    // JSON has no NaN or Inf (nlohmann writes null, which no reader accepts). A
+    // non-finite fill, missing value or bound is left out: it says nothing about the
+    // stored samples (formats/store.md, "Manifest"). Packing attributes must be finite.
     auto put = [&](const char* key, const std::optional<double>& value) {
-      if (value) jv[key] = *value;
+      if (value && std::isfinite(*value)) jv[key] = *value;
+    };
+    auto put_finite = [&](const char* key, const std::optional<double>& value) {
+      if (value && !std::isfinite(*value)) {
+        throw make_error(ErrorCode::kInvalidArgument, "variable '{}': {} {} is not finite", v.name,
+                         key, *value);
+      }
+      put(key, value);
     };
     put("fill_value", v.fill_value);
     put("missing_value", v.missing_value);
     put("valid_min", v.valid_min);
     put("valid_max", v.valid_max);
-    put("scale_factor", v.scale_factor);
-    put("add_offset", v.add_offset);
+    put_finite("scale_factor", v.scale_factor);
+    put_finite("add_offset", v.add_offset);
     if (v.codec) jv["codec"] = codec_json(*v.codec, version);
     vars.push_back(std::move(jv));
   }

@@ -53,6 +53,9 @@ struct StoreVariable {
   std::string name, units, long_name, standard_name;
   DType dtype = DType::kFloat32;
   std::string source_type;
+  // As the source had them. A NaN or infinite fill_value, missing_value, valid_min or
+  // valid_max is not written (JSON has no such numbers; the stored samples do not depend
+  // on it), so it reads back absent; scale_factor and add_offset must be finite.
   std::optional<double> fill_value, missing_value, valid_min, valid_max, scale_factor, add_offset;
   // The variable's own codec (format version 2); absent: the store-wide Manifest::codec.
   std::optional<CodecSpec> codec = std::nullopt;

@@ -16,8 +16,9 @@ namespace strielad::ingest {
 class NcFile {
  public:
   NcFile() = default;
-  // Throws kNotFound when the file does not exist, kIo when it cannot be read and
-  // kInvalidInput (with netCDF's message) when it is not a readable netCDF file.
+  // Throws kNotFound when the file does not exist, kIo when the system cannot open or
+  // read it, and kInvalidInput (with netCDF's message) when it is not a readable netCDF
+  // file, including the damaged headers netCDF-C answers with a system errno (EINVAL).
   explicit NcFile(const std::filesystem::path& path);
   NcFile(NcFile&& other) noexcept;
   NcFile& operator=(NcFile&& other) noexcept;

@@ -4,16 +4,19 @@
 // outside valid_min/valid_max; all compared in the raw (packed) type before unpacking.
 // Then value * scale_factor + add_offset in double, stored in the output type (a value
 // beyond that type's range is reported). NaN/Inf that is not declared missing is
-// reported (or masked when nan_as_fill). `raw` and `out` may be the same memory when Raw
-// is Out (in-place conversion of a buffer that netCDF filled).
+// reported (or masked when nan_as_fill), and so is a 64-bit integer that a double cannot
+// hold exactly (beyond 2^53). `raw` and `out` may be the same memory when Raw is Out
+// (in-place conversion of a buffer that netCDF filled).
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <optional>
 #include <span>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -31,6 +34,11 @@ struct ConversionResult {
   // (the store holds only finite values; --nan-as-fill does not apply).
   std::optional<std::size_t> first_overflow;
   double overflow_raw = 0, overflow_value = 0;
+  // First valid sample of a 64-bit integer type that a double cannot hold exactly (its
+  // significant bits span more than 53): set to NaN in the output, and always an error
+  // for the caller (the store keeps values exactly or not at all).
+  std::optional<std::size_t> first_inexact;
+  std::string inexact_raw;  // its value in decimal
 };
 
 namespace detail {
@@ -53,6 +61,19 @@ std::optional<Raw> as_raw(long double v) {
 template <typename Raw>
 inline constexpr Raw kNaNRawImpl = std::numeric_limits<Raw>::quiet_NaN();
 
+// Whether the integer `r` is exactly a double: its significant bits span at most 53.
+template <typename Int>
+bool exact_in_double(Int r) {
+  using U = std::make_unsigned_t<Int>;
+  U magnitude = static_cast<U>(r);
+  if constexpr (std::is_signed_v<Int>) {
+    if (r < 0) magnitude = static_cast<U>(U{0} - magnitude);  // INT64_MIN: 2^63, exact
+  }
+  if (magnitude == 0) return true;
+  return std::bit_width(magnitude) - static_cast<unsigned>(std::countr_zero(magnitude)) <=
+         static_cast<unsigned>(std::numeric_limits<double>::digits);
+}
+
 }  // namespace detail
 
 // A NaN of a floating raw type: compares unequal to everything, so an absent fill value
@@ -63,8 +84,10 @@ inline constexpr Raw kNaNRaw = detail::kNaNRawImpl<Raw>;
 template <typename Raw, typename Out>
 ConversionResult convert_samples(std::span<const Raw> raw, const CfValueAttributes& attrs,
                                  bool nan_as_fill, std::span<Out> out) {
+  check_usable(attrs);  // throws: scale_factor 0, an empty valid range...
   // Integers of 64 bits are compared in long double (exact), the rest in double.
-  using Cmp = std::conditional_t<std::is_integral_v<Raw> && sizeof(Raw) == 8, long double, double>;
+  constexpr bool kWideInteger = std::is_integral_v<Raw> && sizeof(Raw) == 8;
+  using Cmp = std::conditional_t<kWideInteger, long double, double>;
   constexpr bool kFloating = std::is_floating_point_v<Raw>;
   constexpr Out kNaN = std::numeric_limits<Out>::quiet_NaN();
 
@@ -149,6 +172,18 @@ ConversionResult convert_samples(std::span<const Raw> raw, const CfValueAttribut
         if (!nan_as_fill && !result.first_non_finite) {
           result.first_non_finite = i;
           result.non_finite_value = static_cast<double>(r);
+        }
+        continue;
+      }
+    }
+    if constexpr (kWideInteger) {
+      // Unpacking starts from the raw value as a double: one it cannot hold would be
+      // rounded (2^53 + 1 stored as 2^53), packed or not.
+      if (!detail::exact_in_double(r)) {
+        out[i] = kNaN;
+        if (!result.first_inexact) {
+          result.first_inexact = i;
+          result.inexact_raw = std::to_string(r);
         }
         continue;
       }

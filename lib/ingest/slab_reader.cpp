@@ -164,6 +164,7 @@ const VariableHandle& SlabReader::Impl::variable(OpenFile& of, std::size_t file,
     throw make_error(ErrorCode::kInvalidInput, "{}: variable '{}' has non-numeric type {}", path,
                      name, nc_type_name(h.attrs.type));
   }
+  check_usable(h.attrs);  // before any read: scale_factor 0, an empty valid range...
   if (of.direct) {
     std::string why_not;
     h.planes = Hdf5PlaneLayout::open(path, name, h.attrs.type, h.has_time, dims, &why_not);
@@ -242,6 +243,10 @@ ConversionResult SlabReader::Impl::read_direct(const DirectReadFile& file,
           result.first_overflow = done + *r.first_overflow;
           result.overflow_raw = r.overflow_raw;
           result.overflow_value = r.overflow_value;
+        }
+        if (r.first_inexact && !result.first_inexact) {
+          result.first_inexact = done + *r.first_inexact;
+          result.inexact_raw = r.inexact_raw;
         }
         done += m;
       }
@@ -373,6 +378,16 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
                      context, i % dims.x, (i % plane) / dims.x, z0 + i / plane, r.overflow_value,
                      r.overflow_raw, attrs.scale_factor.value_or(1.0), attrs.add_offset.value_or(0.0),
                      sizeof(Out) == 4 ? "float32" : "float64");
+  }
+  if (r.first_inexact) {
+    const std::size_t i = *r.first_inexact;
+    const std::size_t plane = dims.x * dims.y;
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: sample (lon {}, lat {}, level {}) is {} ({}), which a float64 cannot hold "
+                     "exactly (integers beyond 2^53 would be rounded); the store keeps values "
+                     "exactly, so the variable cannot be converted",
+                     context, i % dims.x, (i % plane) / dims.x, z0 + i / plane, r.inexact_raw,
+                     nc_type_name(attrs.type));
   }
 }
 

@@ -1,12 +1,78 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ingest/variable_meta.h"
 
+#include <fmt/format.h>
 #include <netcdf.h>
 
+#include <cmath>
+#include <cstring>
+
+#include "core/error.h"
 #include "ingest/cf_attributes.h"
 #include "ingest/netcdf_file.h"
 
 namespace strielad::ingest {
+namespace {
+
+// "FILE: variable 'grp/T'" for messages (the path as the file was opened).
+std::string describe_variable(int grpid, int varid) {
+  std::string path;
+  std::size_t len = 0;
+  if (nc_inq_path(grpid, &len, nullptr) == NC_NOERR) {
+    path.assign(len + 1, '\0');
+    if (nc_inq_path(grpid, &len, path.data()) != NC_NOERR) path.clear();
+    path.resize(std::strlen(path.c_str()));
+  }
+  std::string name = variable_name(grpid, varid);
+  if (const std::string group = group_path(grpid); !group.empty()) name = group + "/" + name;
+  return path.empty() ? fmt::format("variable '{}'", name)
+                      : fmt::format("{}: variable '{}'", path, name);
+}
+
+double as_double(long double v) { return static_cast<double>(v); }
+
+// Why `a` cannot convert any sample ("" when it can): attributes that would silently
+// turn every value into one constant, or every value into missing.
+std::string why_unusable(const CfValueAttributes& a, bool from_valid_range) {
+  if (a.scale_factor && !std::isfinite(*a.scale_factor)) {
+    return fmt::format("scale_factor is {}, so no value would unpack to a finite number",
+                       *a.scale_factor);
+  }
+  if (a.scale_factor && *a.scale_factor == 0) {
+    return fmt::format("scale_factor is 0, so every value would unpack to add_offset ({})",
+                       a.add_offset.value_or(0.0));
+  }
+  if (a.add_offset && !std::isfinite(*a.add_offset)) {
+    return fmt::format("add_offset is {}, so no value would unpack to a finite number",
+                       *a.add_offset);
+  }
+  if (a.valid_min && a.valid_max && *a.valid_min > *a.valid_max) {
+    return from_valid_range
+               ? fmt::format("valid_range [{}, {}] is inverted (its minimum is above its maximum), "
+                             "so every value would be missing",
+                             as_double(*a.valid_min), as_double(*a.valid_max))
+               : fmt::format("valid_min {} is above valid_max {}, so every value would be missing",
+                             as_double(*a.valid_min), as_double(*a.valid_max));
+  }
+  // A bound that excludes every finite value (and the infinite ones are refused as data).
+  if (a.valid_min && std::isinf(*a.valid_min) && *a.valid_min > 0) {
+    return fmt::format("{} is +Inf, so every value would be missing",
+                       from_valid_range ? "valid_range's minimum" : "valid_min");
+  }
+  if (a.valid_max && std::isinf(*a.valid_max) && *a.valid_max < 0) {
+    return fmt::format("{} is -Inf, so every value would be missing",
+                       from_valid_range ? "valid_range's maximum" : "valid_max");
+  }
+  return {};
+}
+
+// A bound as CF applies it: a NaN bound excludes nothing, so it is no bound.
+std::optional<long double> bound(long double v) {
+  if (std::isnan(v)) return std::nullopt;
+  return v;
+}
+
+}  // namespace
 
 long double netcdf_default_fill(int type) {
   switch (type) {
@@ -32,12 +98,14 @@ CfValueAttributes read_value_attributes(int grpid, int varid) {
     a.fill_value = fill.front();
   }
   a.missing_values = numeric_attribute(grpid, varid, "missing_value");
-  if (auto range = numeric_attribute(grpid, varid, "valid_range"); range.size() >= 2) {
-    a.valid_min = range[0];
-    a.valid_max = range[1];
+  const auto range = numeric_attribute(grpid, varid, "valid_range");
+  const bool from_valid_range = range.size() >= 2;
+  if (from_valid_range) {
+    a.valid_min = bound(range[0]);
+    a.valid_max = bound(range[1]);
   } else {
-    if (auto v = numeric_attribute(grpid, varid, "valid_min"); !v.empty()) a.valid_min = v[0];
-    if (auto v = numeric_attribute(grpid, varid, "valid_max"); !v.empty()) a.valid_max = v[0];
+    if (auto v = numeric_attribute(grpid, varid, "valid_min"); !v.empty()) a.valid_min = bound(v[0]);
+    if (auto v = numeric_attribute(grpid, varid, "valid_max"); !v.empty()) a.valid_max = bound(v[0]);
   }
   if (auto v = numeric_attribute(grpid, varid, "scale_factor"); !v.empty()) {
     a.scale_factor = static_cast<double>(v[0]);
@@ -52,7 +120,15 @@ CfValueAttributes read_value_attributes(int grpid, int varid) {
     if (nc_inq_var_fill(grpid, varid, &no_fill, nullptr) != NC_NOERR) no_fill = 0;
     if (no_fill != 1) a.default_fill = netcdf_default_fill(a.type);
   }
+  if (std::string why = why_unusable(a, from_valid_range); !why.empty()) {
+    a.unusable = fmt::format("{}: {}; refusing to convert it (correct or delete the attribute)",
+                             describe_variable(grpid, varid), why);
+  }
   return a;
+}
+
+void check_usable(const CfValueAttributes& a) {
+  if (!a.unusable.empty()) throw Error(ErrorCode::kInvalidInput, a.unusable);
 }
 
 DType store_type_for(int var_type, std::optional<int> packing_type) {

@@ -7,8 +7,11 @@
 
 namespace strielad::net {
 
-// Warns (spdlog) when the file is readable by group or others.
-// \error kNotFound when the file cannot be read; kInvalidInput when it is empty or too long.
+// Like ssh with a private key, refuses a file that group or others have any permission
+// on: a secret others can read protects nothing.
+// \error kNotFound when the file cannot be opened; kInvalidInput naming the file and its
+// mode when group or others have permissions on it (chmod 600 fixes it), and when it is
+// empty or too long; kIo when reading it fails.
 std::string read_token_file(const std::string& path);
 
 }  // namespace strielad::net

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "serve/dataset_registry.h"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 
 #include "core/error.h"
 #include "protocol/messages.h"
+#include "serve/client_error_text.h"
 #include "store/store.h"
 
 namespace strielad::serve {
@@ -74,7 +77,10 @@ std::shared_ptr<const Store> DatasetRegistry::open(std::string_view name) {
   try {
     store = Store::open(resolved, StoreOpenOptions{.direct_reads = direct_reads_});
   } catch (const Error& e) {
-    throw e.with_context(fmt::format("dataset '{}'", name));
+    // The store's errors name its files; clients learn the dataset's name, the log the path.
+    spdlog::warn("dataset '{}': {}", name, e.what());
+    throw Error(e.code(), fmt::format("dataset '{}': {}", name,
+                                      name_dataset_not_path(e.what(), resolved, name)));
   }
   open_.emplace(resolved, store);
   return store;

@@ -27,7 +27,8 @@ class DatasetRegistry {
 
   // \error kInvalidArgument for a name that could leave the root (absolute, "..",
   // empty components, a symbolic link pointing outside); kNotFound when there is no
-  // store by that name; the store's own errors (kCorrupt, ...) otherwise.
+  // store by that name; the store's own errors (kCorrupt, ...) otherwise, naming the
+  // dataset instead of its directory (they go to clients; the log keeps the path).
   std::shared_ptr<const Store> open(std::string_view name);
 
  private:

@@ -18,6 +18,7 @@
 
 #include "core/error.h"
 #include "protocol/message_codec.h"
+#include "serve/client_error_text.h"
 #include "serve/dataset_registry.h"
 #include "serve/mpi_messages.h"
 #include "serve/node_executor.h"
@@ -268,7 +269,8 @@ mpi::TaskReply Worker::run_job(const Job& job) {
       reply.kind = NodeOutputKind::kFailed;
       reply.frame = protocol::encode_frame(protocol::NodeFailed{
           r.generation, r.node, protocol::wire_error(e.code()),
-          clipped(fmt::format("MPI rank {} on {}: {}", runtime_.rank(), runtime_.host(), e.what()))});
+          clipped(fmt::format("MPI rank {} on {}: {}", runtime_.rank(), runtime_.host(),
+                              hide_root(e.what(), datasets_->root())))});
     }
     reply.cache = cache_.stats();
     return reply;

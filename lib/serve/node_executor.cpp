@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "serve/node_executor.h"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 
 #include "core/error.h"
 #include "extract/node_extraction.h"
 #include "protocol/message_codec.h"
+#include "serve/client_error_text.h"
 #include "store/store.h"
 
 namespace strielad::serve {
@@ -23,11 +26,15 @@ std::string clipped(std::string text) {
   return text;
 }
 
-NodeOutput failed(const NodeTask& task, protocol::WireError code, std::string message) {
+// The client's NodeFailed names the dataset where the error names the store's files; the
+// log keeps the paths.
+NodeOutput failed(const NodeTask& task, protocol::WireError code, std::string_view message) {
+  spdlog::warn("dataset '{}' node {}: {}", task.dataset, task.node, message);
   NodeOutput out;
   out.kind = NodeOutputKind::kFailed;
-  out.frame = protocol::encode_frame(
-      protocol::NodeFailed{task.generation, task.node, code, clipped(std::move(message))});
+  out.frame = protocol::encode_frame(protocol::NodeFailed{
+      task.generation, task.node, code,
+      clipped(name_dataset_not_path(message, task.store->path(), task.dataset))});
   return out;
 }
 

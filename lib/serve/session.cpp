@@ -10,6 +10,7 @@
 #include "format/manifest.h"
 #include "net/message_stream.h"
 #include "protocol/message_codec.h"
+#include "serve/client_error_text.h"
 #include "serve/dataset_registry.h"
 #include "store/store.h"
 
@@ -42,6 +43,8 @@ void Session::send(const protocol::Message& message) {
 void Session::send_error(protocol::WireError code, std::string message, bool fatal) {
   spdlog::log(fatal ? spdlog::level::warn : spdlog::level::info, "client {} ({}): {}: {}", id_,
               peer(), protocol::wire_error_name(code), message);
+  // Errors name datasets already (DatasetRegistry); no path under the root leaves the server.
+  message = hide_root(message, context_.datasets.root());
   if (message.size() > protocol::kMaxMessageTextBytes) message.resize(protocol::kMaxMessageTextBytes);
   send(protocol::ErrorMessage{code, fatal, std::move(message)});
 }

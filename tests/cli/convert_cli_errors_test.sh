@@ -27,6 +27,32 @@ head -c 1000 "$work/data/sample_t000.nc" > "$work/truncated.nc"
 expect 4 "truncated.nc" -- "$work/truncated.nc" -o "$work/s5"
 echo "not netcdf" > "$work/text.nc"
 expect 4 "text.nc" -- "$work/text.nc" -o "$work/s6"
+# Only a classic magic, or one followed by bytes netCDF-C answers with EINVAL: invalid
+# input (4), not an I/O error (7).
+printf 'CDF\001' > "$work/magic.nc"
+expect 4 "magic.nc" -- "$work/magic.nc" -o "$work/s7"
+printf 'CDF\001\377\377\377\377\377\377\377\377\377\377\377\377' > "$work/damaged-header.nc"
+expect 4 "damaged-header.nc: not a readable netCDF file" -- "$work/damaged-header.nc" -o "$work/s8"
+# Attributes that would change every value: refused before anything is written.
+cat > "$work/attrs.cdl" <<'CDL'
+netcdf attrs {
+dimensions:
+  lev = 2 ; lat = 3 ; lon = 4 ;
+variables:
+  double lev(lev) ; lev:units = "hPa" ; lev:positive = "down" ; lev:axis = "Z" ;
+  double lat(lat) ; lat:units = "degrees_north" ; lat:standard_name = "latitude" ;
+  double lon(lon) ; lon:units = "degrees_east" ; lon:standard_name = "longitude" ;
+  short packed(lev, lat, lon) ; packed:scale_factor = 0.f ; packed:add_offset = 280.f ;
+  float ranged(lev, lat, lon) ; ranged:valid_range = 10.f, 0.f ;
+data:
+  lev = 1000, 850 ; lat = -10, 0, 10 ; lon = 0, 10, 20, 30 ;
+  packed = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23 ;
+  ranged = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23 ;
+}
+CDL
+ncgen -o "$work/attrs.nc" "$work/attrs.cdl"
+expect 4 "variable 'packed': scale_factor is 0" -- "$work/attrs.nc" -o "$work/s9" --vars packed
+expect 4 "variable 'ranged': valid_range [10, 0] is inverted" -- "$work/attrs.nc" -o "$work/s10" --vars ranged
 expect 3 "not a STRIELAD store" -- info "$work/nowhere"
 expect 3 "variable 'nope'" -- export-vdb "$work/store" --var nope -o "$work/x.vdb"
 
@@ -46,7 +72,7 @@ fi
 # No temporaries or stores left behind by failed runs.
 leftovers=$(find "$work" -name '*.tmp.*' | wc -l)
 [[ $leftovers -eq 0 ]] || { echo "FAIL: $leftovers temporary files left"; failures=$((failures + 1)); }
-for s in s1 s3 s4 s5 s6; do
+for s in s1 s3 s4 s5 s6 s7 s8 s9 s10; do
   [[ ! -e "$work/$s/MANIFEST" ]] || { echo "FAIL: $s has a MANIFEST after a failed run"; failures=$((failures + 1)); }
 done
 

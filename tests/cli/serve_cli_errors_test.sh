@@ -20,6 +20,9 @@ mkdir -p "$work/root"
 "$convert" "$work"/data/*.nc -o "$work/root/store" --brick 4 -q
 echo '{"subvolumes": [{"id": 1, "limits": [{"var": "clw", "min": 1e-6}]}]}' > "$work/scene.json"
 : > "$work/empty-token"
+chmod 600 "$work/empty-token"
+echo "s3cret" > "$work/open-token"
+chmod 644 "$work/open-token"
 
 expect 2 "--frame metric" -- extract --store "$work/root/store" --scene "$work/scene.json" \
   -o "$work/out.vdb" --frame metric
@@ -27,6 +30,8 @@ expect 3 "dataset root is not a directory" -- --root "$work/no-such-root"
 expect 2 "--listen" -- --root "$work/root" --listen nonsense
 expect 3 "cannot read the token file" -- --root "$work/root" --token-file "$work/no-token"
 expect 4 "token file is empty" -- --root "$work/root" --token-file "$work/empty-token"
+# A secret others can read protects nothing: refused, as ssh refuses such a key.
+expect 4 "open-token: the token file has mode 0644" -- --root "$work/root" --token-file "$work/open-token"
 
 # A running server stops cleanly on SIGTERM.
 "$serve" --root "$work/root" --listen 127.0.0.1:0 --json -q >"$work/endpoint" 2>"$work/serve.err" &

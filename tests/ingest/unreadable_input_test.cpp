@@ -49,6 +49,32 @@ TEST(UnreadableInputTest, ClassicFileTruncatedInsideHeader) {
                {(dir / "head.nc").string(), "truncated"});
 }
 
+TEST(UnreadableInputTest, ClassicMagicAloneIsInvalidInput) {
+  // Only the 4 bytes of a classic, 64-bit offset or CDF-5 magic (and a few more): an
+  // unusable input naming the file (exit 4), not an I/O error.
+  TempDir dir;
+  for (const std::string& bytes : {std::string("CDF\x01", 4), std::string("CDF\x02", 4),
+                                  std::string("CDF\x05", 4), std::string("CDF\x01\0\0", 6)}) {
+    const auto path = dir / "magic.nc";
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+    expect_error([&] { scan_inputs({path}, {}); }, ErrorCode::kInvalidInput,
+                 {path.string(), "truncated"});
+  }
+}
+
+TEST(UnreadableInputTest, ClassicHeaderNetcdfAnswersWithAnErrnoIsInvalidInput) {
+  // The classic magic followed by 0xff bytes: netCDF-C answers EINVAL, a system errno,
+  // which was taken for an I/O error (kIo, exit 7). The file reads fine; its content is bad.
+  TempDir dir;
+  for (const std::size_t n : {12, 32}) {
+    const auto path = dir / "damaged.nc";
+    std::ofstream(path, std::ios::binary | std::ios::trunc)
+        << std::string("CDF\x01", 4) + std::string(n, '\xff');
+    expect_error([&] { scan_inputs({path}, {}); }, ErrorCode::kInvalidInput,
+                 {path.string(), "not a readable netCDF file", "Invalid argument"});
+  }
+}
+
 TEST(UnreadableInputTest, Netcdf4FileTruncatedToHalf) {
   TempDir dir;
   const auto src = ncarg_file("cdf/nc4uvt.nc");

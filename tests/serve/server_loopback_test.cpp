@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <condition_variable>
+#include <fstream>
 #include <mutex>
 #include <map>
 #include <set>
@@ -296,6 +297,66 @@ TEST_F(ServerLoopbackTest, DatasetsOnlyFromUnderTheRoot) {
   }
   std::filesystem::remove(*dir_ / "root" / "escape");
   EXPECT_EQ(c->open_dataset("small").variables.size(), 3u);  // the connection still works
+}
+
+TEST_F(ServerLoopbackTest, ErrorsNameTheDatasetNotTheServersPath) {
+  // A damaged manifest (open fails) and damaged chunks (nodes fail): the client learns
+  // the dataset's name, never where the server keeps it.
+  namespace fs = std::filesystem;
+  const fs::path root = fs::canonical(*dir_ / "root");
+  fs::copy(root / "small", root / "bad-manifest", fs::copy_options::recursive);
+  {
+    std::fstream f(root / "bad-manifest" / "MANIFEST", std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(100);
+    f.put('#');
+  }
+  fs::copy(root / "small", root / "bad-chunks", fs::copy_options::recursive);
+  {
+    const auto store = Store::open(root / "bad-chunks");
+    std::fstream f(root / "bad-chunks" / format::step_file_name(0),
+                   std::ios::in | std::ios::out | std::ios::binary);
+    for (std::uint32_t v = 0; v < store->variable_count(); ++v) {
+      for (const format::IndexEntry& e : store->index(0, v)) {
+        if (e.kind != format::BrickKind::kData) continue;
+        f.seekp(static_cast<std::streamoff>(e.chunk_offset + e.chunk_size / 2));
+        f.put('\xa5');
+        f.put('\x5a');
+      }
+    }
+  }
+  auto server = start_server();
+  auto c = connect(*server);
+  const std::string private_path = dir_->path().string();
+  try {
+    c->open_dataset("bad-manifest");
+    ADD_FAILURE() << "opened a damaged manifest";
+  } catch (const Error& e) {
+    const std::string text = e.what();
+    EXPECT_EQ(e.code(), ErrorCode::kCorrupt) << text;
+    EXPECT_NE(text.find("dataset 'bad-manifest': bad-manifest/MANIFEST: checksum mismatch"),
+              std::string::npos) << text;
+    EXPECT_EQ(text.find(private_path), std::string::npos) << text;
+  }
+  c->open_dataset("bad-chunks");
+  const auto started = c->set_scene(parse_scene(kSceneJson, "test"));
+  c->update_cut(whole_octree(c->octree()), {}, {});
+  std::size_t failed = 0, answers = 0;
+  while (answers < c->octree().node_count()) {
+    auto m = c->wait(20s);
+    ASSERT_TRUE(m) << c->close_reason();
+    if (const auto* f = std::get_if<protocol::NodeFailed>(&*m)) {
+      ++failed;
+      EXPECT_EQ(f->generation, started.generation);
+      EXPECT_NE(f->message.find("bad-chunks/steps/step-000000.bricks"), std::string::npos)
+          << f->message;
+      EXPECT_EQ(f->message.find(private_path), std::string::npos) << f->message;
+    }
+    answers += std::holds_alternative<protocol::NodeFailed>(*m) ||
+               std::holds_alternative<protocol::NodeResult>(*m);
+  }
+  EXPECT_GT(failed, 0u);
+  fs::remove_all(root / "bad-manifest");
+  fs::remove_all(root / "bad-chunks");
 }
 
 TEST_F(ServerLoopbackTest, MalformedMessageClosesOnlyThatConnection) {
