@@ -6,6 +6,7 @@
 #include "store/fpzip_stream_check.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -41,9 +42,10 @@ class AdaptiveFrequencies {
 
   // The symbol whose interval holds `target` (< kFrequencyTotal), counted as decoded.
   Interval decode(std::uint32_t target) {
-    // cumulative_[0] is 0 and the counts strictly increase: one symbol holds the target.
-    const auto above = std::upper_bound(cumulative_.begin(), cumulative_.end() - 1, target);
-    const auto symbol = static_cast<unsigned>(above - cumulative_.begin()) - 1;
+    // cumulative_[0] is 0 and the counts strictly increase: one symbol holds the target,
+    // at or after the one that holds the start of the target's bucket.
+    unsigned symbol = bucket_start_[target >> kBucketShift];
+    while (cumulative_[symbol + 1] <= target) ++symbol;
     const Interval interval{symbol, cumulative_[symbol],
                             cumulative_[symbol + 1] - cumulative_[symbol]};
     if (until_refresh_ == 0) refresh();
@@ -69,12 +71,21 @@ class AdaptiveFrequencies {
       frequency_[s] = (frequency_[s] >> 1) | 1;
       unshared -= frequency_[s];
     }
+    for (unsigned bucket = 0, symbol = 0; bucket < kBuckets; ++bucket) {
+      while (cumulative_[symbol + 1] <= bucket << kBucketShift) ++symbol;
+      bucket_start_[bucket] = symbol;
+    }
     increment_ = unshared / rescale_interval_;
     with_larger_increment_ = unshared % rescale_interval_;
     until_refresh_ = rescale_interval_ - with_larger_increment_;
   }
 
+  // Where to start looking for a target: buckets of 2^9 cumulative counts.
+  static constexpr unsigned kBucketShift = 9;
+  static constexpr unsigned kBuckets = kFrequencyTotal >> kBucketShift;
+
   std::vector<std::uint32_t> frequency_;
+  std::array<unsigned, kBuckets> bucket_start_{};
   std::vector<std::uint32_t> cumulative_;
   std::uint32_t rescale_interval_;
   std::uint32_t increment_ = 0;
