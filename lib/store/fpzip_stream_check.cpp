@@ -40,6 +40,9 @@ class AdaptiveFrequencies {
     refresh();
   }
 
+  // Whether every refresh found the frequencies adding up to the total.
+  bool balanced() const { return balanced_; }
+
   // The symbol whose interval holds `target` (< kFrequencyTotal), counted as decoded.
   Interval decode(std::uint32_t target) {
     // cumulative_[0] is 0 and the counts strictly increase: one symbol holds the target,
@@ -71,6 +74,10 @@ class AdaptiveFrequencies {
       frequency_[s] = (frequency_[s] >> 1) | 1;
       unshared -= frequency_[s];
     }
+    // The frequencies always add up to the total again here (the increments of a period
+    // share out exactly what halving left over), so the counts start at 0, as fpzip's
+    // lookup table needs; checked all the same, since the walk's argument rests on it.
+    balanced_ = balanced_ && cumulative == 0;
     for (unsigned bucket = 0, symbol = 0; bucket < kBuckets; ++bucket) {
       while (cumulative_[symbol + 1] <= bucket << kBucketShift) ++symbol;
       bucket_start_[bucket] = symbol;
@@ -91,6 +98,7 @@ class AdaptiveFrequencies {
   std::uint32_t increment_ = 0;
   std::uint32_t with_larger_increment_ = 0;
   std::uint32_t until_refresh_ = 0;
+  bool balanced_ = true;
 };
 
 // fpzip's range decoder state (low end, length of the interval, incoming code) over a
@@ -116,6 +124,11 @@ class RangeWalk {
                        what_, next_, stream_.size());
     }
     const AdaptiveFrequencies::Interval interval = model.decode(target);
+    if (!model.balanced()) {
+      throw make_error(ErrorCode::kInternal,
+                       "{}: fpzip's frequency model lost its balance at stream byte {}", what_,
+                       next_);
+    }
     low_ += range_ * interval.start;
     range_ *= interval.size;
     renormalize();
