@@ -10,13 +10,13 @@
 #include "core/byte_io.h"
 #include "core/checksum.h"
 #include "core/error.h"
+#include "store/fpzip_stream_check.h"
 
 namespace strielad {
 namespace {
 
-// Zero bytes after a copied stream: fpzip's range decoder fetches a few bytes ahead of the
-// symbols it returns, so the copy it reads from is padded.
-constexpr std::size_t kReadPadding = 64;
+// The fpzip codec whose decoding check_fpzip_stream walks (fpzip 1.3).
+constexpr unsigned kWalkedFpzipCodec = 0x0110;
 
 struct WriterClose {
   void operator()(FPZ* f) const { fpzip_write_close(f); }
@@ -41,8 +41,9 @@ std::size_t brick_bytes(DType dtype, BrickDims dims) {
   return dims[0] * dims[1] * dims[2] * dtype_size(dtype);
 }
 
-// The stream checksum is seeded with the brick's shape and type (formats/store.md), so a
-// stream is never decoded as another shape or type: fpzip would then read past it.
+// The stream checksum is seeded with the brick's shape and type (formats/store.md): damage
+// and a chunk filed under another brick show as a mismatch. It is no defence against a
+// crafted chunk (anyone can recompute it); check_fpzip_stream is.
 std::uint64_t stream_checksum(std::span<const std::byte> stream, DType dtype, BrickDims dims) {
   const std::uint64_t seed = std::uint64_t{dims[0]} | std::uint64_t{dims[1]} << 20 |
                              std::uint64_t{dims[2]} << 40 |
@@ -57,6 +58,9 @@ std::optional<std::vector<std::byte>> compress_brick_fpzip(std::span<const std::
   if (samples.size() != brick_bytes(dtype, dims)) {
     throw make_error(ErrorCode::kInternal, "compress_brick_fpzip: {} bytes for a {}x{}x{} brick of {}",
                      samples.size(), dims[0], dims[1], dims[2], dtype_name(dtype));
+  }
+  for (const std::size_t side : dims) {
+    if (side == 0 || side > kMaxFpzipBrickSide) return std::nullopt;  // a reader rejects it
   }
   // A chunk larger than the raw samples is of no use.
   std::vector<std::byte> chunk(kFpzipChunkHeaderSize + samples.size());
@@ -105,8 +109,14 @@ void decompress_brick_fpzip(std::span<const std::byte> chunk, DType dtype, Brick
                      "brick of {})",
                      what, dims[0], dims[1], dims[2], dtype_name(dtype));
   }
-  std::vector<std::uint64_t> padded((stream.size() + kReadPadding + 7) / 8, 0);
-  std::memcpy(padded.data(), stream.data(), stream.size());
+  if ((fpzip_codec_version >> 8) != kWalkedFpzipCodec) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "{}: fpzip codec {:#x} is not the one this reader checks streams for ({:#x})",
+                     what, fpzip_codec_version >> 8, kWalkedFpzipCodec);
+  }
+  // fpzip bounds neither its reads nor its table lookups: it sees only streams it decodes
+  // within their bytes and tables (formats/store.md, "What fpzip sees").
+  const std::size_t walked = check_fpzip_stream(stream, dtype, dims, what);
   std::vector<std::uint64_t> copy;
   void* values = out.data();
   if (!is_aligned(values)) {
@@ -115,14 +125,15 @@ void decompress_brick_fpzip(std::span<const std::byte> chunk, DType dtype, Brick
   }
   std::size_t read = 0;
   {
-    std::unique_ptr<FPZ, ReaderClose> f(fpzip_read_from_buffer(padded.data()));
+    std::unique_ptr<FPZ, ReaderClose> f(fpzip_read_from_buffer(stream.data()));
     if (!f) throw make_error(ErrorCode::kInternal, "fpzip_read_from_buffer failed");
     describe_brick(f.get(), dtype, dims);
     read = fpzip_read(f.get(), values);
   }
-  if (read == 0 || read > stream.size()) {
-    throw make_error(ErrorCode::kCorrupt, "{}: fpzip chunk does not decode ({} of {} stream bytes read)",
-                     what, read, stream.size());
+  if (read != walked) {
+    throw make_error(ErrorCode::kInternal,
+                     "{}: fpzip read {} stream bytes where the check walked {} (of {})", what, read,
+                     walked, stream.size());
   }
   if (!copy.empty()) std::memcpy(out.data(), copy.data(), out.size());
   if (checksum64(out) != samples_sum) {

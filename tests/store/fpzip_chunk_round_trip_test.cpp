@@ -127,8 +127,9 @@ TEST(FpzipChunkTest, AChunkReadAsAnotherShapeOrTypeIsRejected) {
   const auto samples = smooth_samples<float>(d);
   const auto chunk = compress_brick_fpzip(bytes_of(samples), DType::kFloat32, d);
   ASSERT_TRUE(chunk.has_value());
-  // The stream checksum is seeded with the shape and type, so the stream never reaches
-  // fpzip as another shape (even of the same sample count) or type.
+  // The stream checksum is seeded with the shape and type, so a sound stream filed under
+  // another shape (even of the same sample count) or type is named as such. (A crafted
+  // chunk recomputes it; the stream check stops that one: fpzip_hostile_chunks_test.)
   std::vector<std::byte> out(samples.size() * 4);
   expect_error([&] { decompress_brick_fpzip(*chunk, DType::kFloat32, {7, 8, 9}, out, "f"); },
                ErrorCode::kCorrupt, {"f: fpzip chunk's stream checksum", "not a 7x8x9 brick of float32"});
