@@ -2,6 +2,8 @@
 // `strielad-serve --root DIR`: the extraction server (formats/protocol.md).
 #include <spdlog/spdlog.h>
 
+#include <chrono>
+#include <cmath>
 #include <csignal>
 #include <iostream>
 #include <memory>
@@ -30,6 +32,9 @@ struct ServeArgs {
   unsigned threads = 0;
   double cache_mib = 1024;
   std::size_t max_clients = 64;
+  std::size_t max_handshakes = 64;
+  double handshake_timeout_s = 10;
+  double max_send_queue_mib = 64;
   bool no_prefetch = false;
   bool direct_io = false;
   std::uint32_t max_nodes_per_update = protocol::kMaxNodesPerUpdate;
@@ -131,6 +136,10 @@ int run_serve(const ServeArgs& args) {
   config.cache_bytes = static_cast<std::uint64_t>(args.cache_mib * 1024 * 1024);
   config.direct_reads = args.direct_io;
   config.max_clients = args.max_clients;
+  config.max_handshakes = args.max_handshakes;
+  config.handshake_timeout = std::chrono::milliseconds(
+      static_cast<std::int64_t>(std::llround(args.handshake_timeout_s * 1000)));
+  config.max_pending_send_bytes = static_cast<std::uint64_t>(args.max_send_queue_mib * 1024 * 1024);
   config.prefetch = !args.no_prefetch;
   config.limits.max_nodes_per_update = args.max_nodes_per_update;
   // Before MPI starts its threads too, so that only the watcher takes the signals.
@@ -159,7 +168,23 @@ void register_serve(CLI::App& app, cli::Action& action) {
   app.add_option("--cache-mib", args->cache_mib,
                  "Brick cache budget in MiB shared by all clients (default 1024); under MPI, "
                  "per worker rank");
-  app.add_option("--max-clients", args->max_clients, "Refuse clients beyond this many (default 64)");
+  app.add_option("--max-clients", args->max_clients,
+                 "Clients served at once (past the handshake); one more is refused with "
+                 "ServerBusy (default 64)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
+  app.add_option("--max-handshakes", args->max_handshakes,
+                 "Connections still in their handshake (before Welcome), counted apart from "
+                 "--max-clients; when this many wait, a new connection closes the oldest "
+                 "(default 64)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
+  app.add_option("--handshake-timeout", args->handshake_timeout_s,
+                 "Seconds a connection has for its whole handshake, however its bytes "
+                 "trickle in (default 10)")
+      ->check(CLI::Range(0.001, 3600.0));
+  app.add_option("--max-send-queue-mib", args->max_send_queue_mib,
+                 "Replies waiting for one client, in MiB; above this its extraction pauses "
+                 "and its requests are not read until it reads (default 64)")
+      ->check(CLI::Range(0.0625, 65536.0));
   app.add_option("--max-nodes-per-update", args->max_nodes_per_update,
                  "Largest node list one CutUpdate may carry");
   app.add_flag("--direct-io", args->direct_io,

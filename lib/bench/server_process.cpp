@@ -86,6 +86,19 @@ BenchServer::BenchServer(const std::filesystem::path& binary, const serve::Serve
                                 "--cache-mib", std::to_string(config.cache_bytes >> 20),
                                 "--max-clients", std::to_string(config.max_clients), "-q"});
   if (!config.prefetch) argv.push_back("--no-prefetch");
+  // Only limits that differ from the defaults, so that an older server binary can be run.
+  const serve::ServerConfig defaults;
+  if (config.max_handshakes != defaults.max_handshakes) {
+    argv.insert(argv.end(), {"--max-handshakes", std::to_string(config.max_handshakes)});
+  }
+  if (config.handshake_timeout != defaults.handshake_timeout) {
+    argv.insert(argv.end(), {"--handshake-timeout",
+                             fmt::format("{}", double(config.handshake_timeout.count()) / 1000)});
+  }
+  if (config.max_pending_send_bytes != defaults.max_pending_send_bytes) {
+    argv.insert(argv.end(), {"--max-send-queue-mib",
+                             fmt::format("{}", double(config.max_pending_send_bytes) / (1 << 20))});
+  }
   std::vector<char*> args;
   for (auto& a : argv) args.push_back(a.data());
   args.push_back(nullptr);

@@ -9,10 +9,17 @@
 
 namespace strielad::net {
 
-ReceivedMessage read_message(const Socket& socket, std::uint32_t max_payload_bytes) {
+namespace {
+
+bool read_exact(const Socket& socket, std::span<std::byte> bytes, const Deadline* deadline) {
+  return deadline ? socket.read_exact(bytes, *deadline) : socket.read_exact(bytes);
+}
+
+ReceivedMessage read_message_until(const Socket& socket, std::uint32_t max_payload_bytes,
+                                   const Deadline* deadline) {
   ReceivedMessage out;
   std::array<std::byte, protocol::kFrameHeaderBytes> header_bytes{};
-  if (!socket.read_exact(header_bytes)) return out;  // kEndOfStream
+  if (!read_exact(socket, header_bytes, deadline)) return out;  // kEndOfStream
   out.status = ReceivedMessage::Status::kRejected;
   const std::uint32_t length = protocol::peek_payload_length(header_bytes);
   if (length > max_payload_bytes) {
@@ -30,7 +37,7 @@ ReceivedMessage read_message(const Socket& socket, std::uint32_t max_payload_byt
   }
   std::vector<std::byte> payload(header.payload_bytes);
   out.frame_bytes = protocol::kFrameHeaderBytes + payload.size();
-  if (!payload.empty() && !socket.read_exact(payload)) {
+  if (!payload.empty() && !read_exact(socket, payload, deadline)) {
     throw make_error(ErrorCode::kIo, "{}: connection closed inside a frame", socket.peer());
   }
   try {
@@ -41,6 +48,17 @@ ReceivedMessage read_message(const Socket& socket, std::uint32_t max_payload_byt
   }
   out.status = ReceivedMessage::Status::kMessage;
   return out;
+}
+
+}  // namespace
+
+ReceivedMessage read_message(const Socket& socket, std::uint32_t max_payload_bytes) {
+  return read_message_until(socket, max_payload_bytes, nullptr);
+}
+
+ReceivedMessage read_message(const Socket& socket, std::uint32_t max_payload_bytes,
+                             Deadline deadline) {
+  return read_message_until(socket, max_payload_bytes, &deadline);
 }
 
 void write_message(const Socket& socket, const protocol::Message& message) {

@@ -26,6 +26,9 @@ struct ReceivedMessage {
 // its payload is never read: the connection must then be closed).
 // \error kIo when the connection fails or closes inside a frame.
 ReceivedMessage read_message(const Socket& socket, std::uint32_t max_payload_bytes);
+// The same, and \error kIo when `deadline` passes before the whole frame arrived.
+ReceivedMessage read_message(const Socket& socket, std::uint32_t max_payload_bytes,
+                             Deadline deadline);
 
 // \error kIo when the peer is gone.
 void write_message(const Socket& socket, const protocol::Message& message);

@@ -10,6 +10,7 @@
 #include <sys/time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
@@ -114,6 +115,19 @@ void Socket::set_receive_timeout(std::chrono::milliseconds timeout) const {
   setsockopt(fd_, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
 }
 
+void Socket::wait_readable_before(Deadline deadline) const {
+  for (;;) {
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) throw make_error(ErrorCode::kIo, "{}: read deadline passed", peer_);
+    pollfd p{fd_, POLLIN, 0};
+    const int rc = ::poll(&p, 1, static_cast<int>(std::min<std::int64_t>(left.count(), 1 << 30)));
+    if (rc > 0) return;  // data, end of stream or an error: recv tells which
+    if (rc < 0 && errno != EINTR) {
+      throw make_error(ErrorCode::kIo, "{}: poll failed: {}", peer_, system_reason(errno));
+    }
+  }
+}
+
 void Socket::write_all(std::span<const std::byte> bytes) const {
   std::size_t done = 0;
   while (done < bytes.size()) {
@@ -126,9 +140,16 @@ void Socket::write_all(std::span<const std::byte> bytes) const {
   }
 }
 
-bool Socket::read_exact(std::span<std::byte> bytes) const {
+bool Socket::read_exact(std::span<std::byte> bytes) const { return read_exact_until(bytes, nullptr); }
+
+bool Socket::read_exact(std::span<std::byte> bytes, Deadline deadline) const {
+  return read_exact_until(bytes, &deadline);
+}
+
+bool Socket::read_exact_until(std::span<std::byte> bytes, const Deadline* deadline) const {
   std::size_t done = 0;
   while (done < bytes.size()) {
+    if (deadline) wait_readable_before(*deadline);
     const ssize_t n = ::recv(fd_, bytes.data() + done, bytes.size() - done, 0);
     if (n < 0) {
       if (errno == EINTR) continue;

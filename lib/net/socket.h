@@ -24,6 +24,8 @@ struct Endpoint {
 // \error kInvalidArgument naming `what` for anything else.
 Endpoint parse_endpoint(std::string_view text, std::string_view what);
 
+using Deadline = std::chrono::steady_clock::time_point;
+
 // A move-only owned socket descriptor.
 class Socket {
  public:
@@ -50,8 +52,15 @@ class Socket {
   // Reads exactly bytes.size() bytes. Returns false when the peer closed the connection
   // before the first byte; \error kIo when it closes in the middle or the read fails.
   bool read_exact(std::span<std::byte> bytes) const;
+  // The same, and \error kIo when `deadline` passes before the last byte arrived
+  // (however slowly the bytes trickle in).
+  bool read_exact(std::span<std::byte> bytes, Deadline deadline) const;
 
  private:
+  bool read_exact_until(std::span<std::byte> bytes, const Deadline* deadline) const;
+  // Returns once the socket is readable. \error kIo when the deadline passes first.
+  void wait_readable_before(Deadline deadline) const;
+
   int fd_ = -1;
   std::string peer_;
 };

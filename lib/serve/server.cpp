@@ -88,32 +88,48 @@ void Server::run() {
 
 void Server::accept_client(net::Socket socket) {
   std::lock_guard lock(connections_mutex_);
-  if (connections_.size() >= config_.max_clients) {
-    ++counters_.connections_rejected;
-    spdlog::warn("{}: refused, {} clients already connected", socket.peer(), connections_.size());
-    try {
-      net::write_message(socket, protocol::ErrorMessage{
-                                     protocol::WireError::kServerBusy, true,
-                                     fmt::format("server busy: {} clients connected (limit {})",
-                                                 connections_.size(), config_.max_clients)});
-    } catch (const Error&) {
-    }
-    return;
-  }
+  make_room_for_handshake_locked();
   SessionContext context{config_, datasets_, counters_, [this] { dispatcher_.notify(); },
-                         [this](std::uint32_t generation) { return stats_json(generation); }};
+                         [this](std::uint32_t generation) { return stats_json(generation); },
+                         [this] { return admit_client(); }};
   auto session = std::make_shared<Session>(next_session_id_++, std::move(socket), std::move(context));
   dispatcher_.attach(session);
   Connection& c = connections_.emplace_back();
   c.session = session;
-  ++counters_.clients;
+  ++counters_.handshakes;  // the session leaves this count when its handshake ends
   c.thread = std::thread([this, session, &c] {
     session->run();
     dispatcher_.detach(session.get());
-    --counters_.clients;
+    if (session->admitted()) --counters_.clients;
     c.finished = true;
   });
   if (stopping_) session->shutdown();
+}
+
+void Server::make_room_for_handshake_locked() {
+  std::size_t waiting = 0;
+  Connection* oldest = nullptr;
+  for (Connection& c : connections_) {
+    if (c.pushed_out || !c.session->in_handshake()) continue;
+    if (!oldest) oldest = &c;
+    ++waiting;
+  }
+  if (waiting < std::max<std::size_t>(config_.max_handshakes, 1) || !oldest) return;
+  // The oldest has had the longest to say Hello; a client that answers at once is
+  // never pushed out unless max_handshakes connections arrive within its round trip.
+  oldest->pushed_out = true;
+  ++counters_.handshakes_dropped;
+  spdlog::info("client {} ({}): {} connections in their handshake (limit {}); closing the oldest",
+               oldest->session->id(), oldest->session->peer(), waiting, config_.max_handshakes);
+  oldest->session->shutdown();
+}
+
+bool Server::admit_client() {
+  std::int64_t now = counters_.clients.load();
+  while (now < static_cast<std::int64_t>(config_.max_clients)) {
+    if (counters_.clients.compare_exchange_weak(now, now + 1)) return true;
+  }
+  return false;  // the session refuses the client (and counts it in connections_rejected)
 }
 
 void Server::reap_finished() {
@@ -132,6 +148,14 @@ std::string Server::stats_json(std::uint32_t generation) const {
   const BrickCacheStats cache = executor_->cache_stats();
   nlohmann::json j = {
       {"clients", counters_.clients.load()},
+      {"max_clients", config_.max_clients},
+      {"handshakes", counters_.handshakes.load()},
+      {"max_handshakes", config_.max_handshakes},
+      {"handshakes_dropped", counters_.handshakes_dropped.load()},
+      {"readers_paused", counters_.readers_paused.load()},
+      {"send_queue_bytes", counters_.send_queue_bytes.load()},
+      {"send_queue_peak_bytes", counters_.send_queue_peak_bytes.load()},
+      {"max_send_queue_bytes", config_.max_pending_send_bytes},
       {"generation", generation},
       {"queued", counters_.queued.load()},
       {"running", counters_.running.load()},

@@ -50,8 +50,13 @@ class Server {
     std::shared_ptr<Session> session;
     std::thread thread;
     std::atomic<bool> finished{false};
+    bool pushed_out = false;  // closed in its handshake to make room for a newer one
   };
   void accept_client(net::Socket socket);
+  // With max_handshakes connections in their handshake, closes the one accepted first.
+  void make_room_for_handshake_locked();
+  // Takes a max_clients slot for a session past its handshake; false when none is free.
+  bool admit_client();
   void reap_finished();
 
   ServerConfig config_;

@@ -25,14 +25,23 @@ struct ServerConfig {
   std::uint64_t cache_bytes = 1ull << 30;
   // Read bricks with O_DIRECT, past the page cache (StoreOpenOptions::direct_reads).
   bool direct_reads = false;
+  // Connections that have received Welcome; one more that authenticates is refused
+  // with ServerBusy.
   std::size_t max_clients = 64;
+  // Connections still in the handshake (before Welcome), counted apart from max_clients
+  // so that they never take an authenticated client's slot. When this many are waiting,
+  // a new connection pushes out the one that has waited longest.
+  std::size_t max_handshakes = 64;
   bool prefetch = true;
   std::string server_name = "strielad-serve";
   // Limits announced in Welcome and enforced on every client message.
   protocol::ServerLimits limits;
-  // Encoded results waiting to be sent to one client; above this its work pauses
-  // until the client reads (a slow client cannot make the server hold unbounded memory).
+  // Encoded frames (results and every other reply) waiting to be sent to one client.
+  // Above this the client's extraction pauses and the server stops reading its requests
+  // until it reads (back-pressure: a slow reader cannot make the server hold unbounded
+  // memory). One reply or one result per worker may go over it.
   std::uint64_t max_pending_send_bytes = 64ull << 20;
+  // The whole handshake, from accept to Welcome, however the Hello's bytes trickle in.
   std::chrono::milliseconds handshake_timeout{10000};
 };
 

@@ -8,7 +8,12 @@
 namespace strielad::serve {
 
 struct ServerCounters {
-  std::atomic<std::int64_t> clients{0};
+  std::atomic<std::int64_t> clients{0};      // connections past Welcome
+  std::atomic<std::int64_t> handshakes{0};   // connections before Welcome
+  std::atomic<std::int64_t> readers_paused{0};  // clients not read: their send queue is full
+  std::atomic<std::int64_t> send_queue_bytes{0};  // frames waiting for every client
+  std::atomic<std::uint64_t> send_queue_peak_bytes{0};  // most one client's queue held
+  std::atomic<std::uint64_t> handshakes_dropped{0};  // timed out or pushed out by newer ones
   std::atomic<std::int64_t> queued{0};   // nodes waiting in every client's queue
   std::atomic<std::int64_t> running{0};  // nodes being extracted
   std::atomic<std::uint64_t> nodes_done{0};       // results sent (mesh or empty)

@@ -29,8 +29,15 @@ bool same_secret(std::string_view a, std::string_view b) {
 
 }  // namespace
 
+// The largest valid Hello: magic, version, client name and token at their limits.
+constexpr std::uint32_t kMaxHelloPayloadBytes =
+    8 + 2 + (2 + protocol::kMaxNameBytes) + (2 + protocol::kMaxTokenBytes);
+
 Session::Session(std::uint64_t id, net::Socket socket, SessionContext context)
-    : id_(id), socket_(std::move(socket)), context_(std::move(context)) {}
+    : id_(id),
+      socket_(std::move(socket)),
+      context_(std::move(context)),
+      outbound_(&context_.counters.send_queue_bytes, &context_.counters.send_queue_peak_bytes) {}
 
 Session::~Session() = default;
 
@@ -49,10 +56,26 @@ void Session::send_error(protocol::WireError code, std::string message, bool fat
   send(protocol::ErrorMessage{code, fatal, std::move(message)});
 }
 
+void Session::leave_handshake() {
+  if (in_handshake_.exchange(false)) --context_.counters.handshakes;
+}
+
 bool Session::handshake() {
-  socket_.set_receive_timeout(context_.config.handshake_timeout);
-  const net::ReceivedMessage first = net::read_message(socket_, context_.config.limits.max_payload_bytes);
-  socket_.set_receive_timeout(std::chrono::milliseconds(0));
+  // One deadline for the whole Hello: a client trickling a byte at a time does not
+  // extend it.
+  const auto timeout = context_.config.handshake_timeout;
+  const net::Deadline deadline = std::chrono::steady_clock::now() + timeout;
+  net::ReceivedMessage first;
+  try {
+    first = net::read_message(
+        socket_, std::min(context_.config.limits.max_payload_bytes, kMaxHelloPayloadBytes),
+        deadline);
+  } catch (const Error&) {
+    if (std::chrono::steady_clock::now() < deadline) throw;
+    ++context_.counters.handshakes_dropped;
+    spdlog::info("client {} ({}): no Hello within {} ms; closed", id_, peer(), timeout.count());
+    return false;
+  }
   auto refuse = [&](protocol::WireError code, std::string message) {
     ++context_.counters.connections_rejected;
     spdlog::warn("client {} ({}): refused: {}", id_, peer(), message);
@@ -80,6 +103,13 @@ bool Session::handshake() {
   if (context_.config.token && !same_secret(hello->token, *context_.config.token)) {
     return refuse(protocol::WireError::kUnauthorized, "wrong or missing token");
   }
+  if (!context_.admit_client()) {
+    return refuse(protocol::WireError::kServerBusy,
+                  fmt::format("server busy: {} clients connected (limit {})",
+                              context_.counters.clients.load(), context_.config.max_clients));
+  }
+  admitted_ = true;
+  leave_handshake();  // before Welcome: a client that has it is counted as a client only
   spdlog::info("client {} ({}) connected: '{}'", id_, peer(), hello->client_name);
   version_ = std::min(hello->version, protocol::kProtocolVersion);
   net::write_message(socket_, protocol::Welcome{version_, context_.config.server_name,
@@ -94,6 +124,7 @@ void Session::run() {
   } catch (const Error& e) {
     spdlog::info("client {} ({}): handshake failed: {}", id_, peer(), e.what());
   }
+  leave_handshake();
   if (!greeted) {
     socket_.close();
     return;
@@ -101,6 +132,7 @@ void Session::run() {
   std::thread writer([this] { writer_loop(); });
   try {
     for (;;) {
+      wait_for_send_room();
       const net::ReceivedMessage in =
           net::read_message(socket_, context_.config.limits.max_payload_bytes);
       if (in.status == net::ReceivedMessage::Status::kEndOfStream) break;
@@ -125,6 +157,16 @@ void Session::run() {
   spdlog::info("client {} ({}) disconnected", id_, peer());
 }
 
+void Session::wait_for_send_room() {
+  const std::uint64_t limit = context_.config.max_pending_send_bytes;
+  if (outbound_.pending_bytes() <= limit) return;
+  ++context_.counters.readers_paused;
+  spdlog::debug("client {} ({}): {} bytes unsent; not reading its requests until it reads",
+                id_, peer(), outbound_.pending_bytes());
+  outbound_.wait_until_at_most(limit);
+  --context_.counters.readers_paused;
+}
+
 void Session::writer_loop() {
   const std::uint64_t resume_below = context_.config.max_pending_send_bytes;
   while (auto frame = outbound_.pop()) {
@@ -133,6 +175,7 @@ void Session::writer_loop() {
       socket_.write_all(*frame);
     } catch (const Error& e) {
       spdlog::info("client {} ({}): {}", id_, peer(), e.what());
+      outbound_.close();  // nothing more is queued, and a reader waiting for room returns
       outbound_.discard_pending();
       socket_.shutdown();  // ends the reader too
       return;
@@ -202,10 +245,13 @@ bool Session::check_new_generation(std::uint32_t generation) {
     send_error(protocol::WireError::kOutOfOrder, "open a dataset before setting a scene or time");
     return false;
   }
-  if (any_generation_ && generation <= generation_) {
+  // generation_ is 0 before the first accepted one, so the first must be at least 1.
+  if (generation <= generation_) {
     send_error(protocol::WireError::kOutOfOrder,
-               fmt::format("generation {} is not greater than the last accepted generation {}",
-                           generation, generation_));
+               generation_ == 0
+                   ? std::string("generation 0: the first generation of a connection is at least 1")
+                   : fmt::format("generation {} is not greater than the last accepted generation {}",
+                                 generation, generation_));
     return false;
   }
   return true;
@@ -269,7 +315,6 @@ void Session::start_generation(std::uint32_t generation, Scene scene, ResolvedSc
   cancel_all_locked();
   generation_ = generation;
   generation_started_ = true;
-  any_generation_ = true;
   queue_.start_generation(generation);
   scene_json_ = scene_to_json(scene);
   resolved_ = std::make_shared<const ResolvedScene>(resolved);

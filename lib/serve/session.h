@@ -8,6 +8,7 @@
 // lock that starts generations, so no stale result can ever reach the client.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -38,6 +39,9 @@ struct SessionContext {
   ServerCounters& counters;
   std::function<void()> work_available;               // wakes the dispatcher
   std::function<std::string(std::uint32_t)> stats_json;  // argument: the session's generation
+  // Takes one of the max_clients slots for a client that passed the handshake; false
+  // when every slot is taken (the client is refused with ServerBusy).
+  std::function<bool()> admit_client;
 };
 
 class Session {
@@ -53,6 +57,11 @@ class Session {
   void run();
   // Makes run() return soon (from any thread).
   void shutdown();
+  // Before Welcome (or the handshake's failure). The server counts such connections in
+  // ServerCounters::handshakes and the session leaves that count when it ends.
+  bool in_handshake() const { return in_handshake_; }
+  // The handshake took a client slot (admit_client), to be given back when run() returns.
+  bool admitted() const { return admitted_; }
 
   // For the dispatcher. take_task pops the client's most urgent node (none while the
   // client has more than ServerConfig::max_pending_send_bytes unsent).
@@ -65,6 +74,10 @@ class Session {
 
  private:
   bool handshake();
+  void leave_handshake();
+  // Back-pressure: returns once the client's send queue is within max_pending_send_bytes,
+  // so that its requests are not read (and answered) faster than it reads the answers.
+  void wait_for_send_room();
   // Returns false when the connection must end.
   bool handle(const protocol::Message& message);
   void open_dataset(const protocol::OpenDataset& m);
@@ -85,6 +98,8 @@ class Session {
   // The protocol version agreed in Welcome (set by the handshake, before the reader
   // loop; read-only afterwards).
   std::uint16_t version_ = 1;
+  std::atomic<bool> in_handshake_{true};
+  std::atomic<bool> admitted_{false};
   SessionContext context_;
   SendQueue outbound_;
 
@@ -96,9 +111,8 @@ class Session {
   std::shared_ptr<const ResolvedScene> resolved_;       // scene at step
   std::shared_ptr<const ResolvedScene> resolved_next_;  // scene at step + 1 (prefetch)
   std::string scene_json_, scene_json_next_;
-  std::uint32_t generation_ = 0;
+  std::uint32_t generation_ = 0;  // the last accepted; 0 before the first
   bool generation_started_ = false;  // a generation is current (OpenDataset ends it)
-  bool any_generation_ = false;      // generation_ holds the last accepted number
   std::unordered_map<NodeId, float> cut_;  // the client's cut in this generation
   WorkQueue queue_;
   struct Running {

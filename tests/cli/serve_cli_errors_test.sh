@@ -28,6 +28,9 @@ expect 2 "--frame metric" -- extract --store "$work/root/store" --scene "$work/s
   -o "$work/out.vdb" --frame metric
 expect 3 "dataset root is not a directory" -- --root "$work/no-such-root"
 expect 2 "--listen" -- --root "$work/root" --listen nonsense
+expect 2 "--handshake-timeout" -- --root "$work/root" --handshake-timeout 0
+expect 2 "--max-handshakes" -- --root "$work/root" --max-handshakes 0
+expect 2 "--max-send-queue-mib" -- --root "$work/root" --max-send-queue-mib 0
 expect 3 "cannot read the token file" -- --root "$work/root" --token-file "$work/no-token"
 expect 4 "token file is empty" -- --root "$work/root" --token-file "$work/empty-token"
 # A secret others can read protects nothing: refused, as ssh refuses such a key.
