@@ -19,7 +19,7 @@ add_link_options(-fsanitize=address,undefined)
 set(STRIELAD_FUZZ_LIB_SOURCES
   core/checksum.cpp core/direct_read_file.cpp core/error.cpp core/file_io.cpp
   core/io_error.cpp core/strict_json.cpp core/text_columns.cpp
-  export/vtp_reader.cpp export/vtp_writer.cpp
+  export/vtp_declared_sizes.cpp export/vtp_reader.cpp export/vtp_writer.cpp
   extract/collapsed_triangles.cpp extract/collinear_slivers.cpp extract/conditions.cpp
   extract/geographic_conditions.cpp extract/mesh_builder.cpp extract/mesh_metrics.cpp
   extract/node_extraction.cpp extract/node_extractor.cpp extract/slice_extraction.cpp
