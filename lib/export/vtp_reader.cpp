@@ -108,6 +108,14 @@ VtpContents read_vtp(const std::filesystem::path& path) {
   vtkIdType count = 0;
   const vtkIdType* ids = nullptr;
   for (polys->InitTraversal(); polys->GetNextCell(count, ids);) {
+    for (vtkIdType k = 0; k < count; ++k) {
+      if (ids[k] < 0 || ids[k] >= np) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: not a readable VTK XML PolyData file: a polygon refers to point {} "
+                         "of {}",
+                         path.string(), ids[k], np);
+      }
+    }
     if (count == 3) {
       contents.triangles.push_back(
           {std::uint32_t(ids[0]), std::uint32_t(ids[1]), std::uint32_t(ids[2])});

@@ -2,7 +2,8 @@
 // read_vtp on damaged .vtp files (the fuzzer's reproducers in
 // tests/fuzz/regressions/vtp_reader/): sizes the file's bytes cannot back and array types
 // VTK does not know are refused with kInvalidInput naming the file, before VTK allocates
-// terabytes (std::bad_alloc thrown through VTK) or dereferences a null array (SEGV).
+// terabytes (std::bad_alloc thrown through VTK) or dereferences a null array (SEGV); so
+// are polygons that refer to points the file does not have.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -47,6 +48,11 @@ TEST(VtpReaderDamagedFilesTest, PointCountBeyondTheFileIsRefused) {
                          "0 0 0</DataArray></Points>\n"
                          "</Piece></PolyData></VTKFile>\n";
   expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string(), "NumberOfPoints"});
+}
+
+TEST(VtpReaderDamagedFilesTest, PolygonReferringToAMissingPointIsRefused) {
+  const auto path = kRegressions / "polygon-beyond-the-points.vtp";  // point 3 of 3
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string(), "point 3 of 3"});
 }
 
 TEST(VtpReaderDamagedFilesTest, PointsWithoutThreeComponentsAreRefused) {
