@@ -46,10 +46,10 @@ fi
 cmake --build "$build" -j "$(nproc)" --target "${targets[@]/%/_fuzz_libfuzzer}"
 
 # A sanitizer report is a finding: UBSan aborts (built with -fno-sanitize-recover), ASan
-# reports leaks at exit. One allocation above 2 GB fails as an impossible one does in
+# reports leaks at exit. One allocation above 1 GB fails as an impossible one does in
 # production (malloc returns null, operator new throws std::bad_alloc:
 # tests/fuzz/allocation_failure.cpp); memory in use above -rss_limit_mb is a finding.
-export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1:max_allocation_size_mb=2048}
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1:max_allocation_size_mb=1024}
 # Leaks inside third-party code the project cannot fix: tests/fuzz/lsan.supp.
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}

@@ -5,7 +5,7 @@
 // even with allocator_may_return_null=1, so a reader handed a file that declares a
 // 2^60-element array (VTK's XML reader trusts such counts) could not show that it turns
 // the std::bad_alloc into a strielad::Error. scripts/fuzz.sh sets
-// max_allocation_size_mb=2048 and allocator_may_return_null=1: one allocation above 2 GB
+// max_allocation_size_mb=1024 and allocator_may_return_null=1: one allocation above 1 GB
 // fails (malloc returns null, new throws). Memory still comes from ASan's malloc, so
 // overflows, use after free and leaks are still found; new/delete[] mismatches are not.
 #include <cstdlib>
