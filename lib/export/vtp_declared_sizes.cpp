@@ -178,6 +178,13 @@ void check_declared_sizes(std::span<const char> file, const std::string& what) {
                              header_bytes);
       };
       const std::uint64_t blocks = word(0), block_size = word(1), last_block_size = word(2);
+      // VTK 9.1 dereferences a null block table when an array with values has no blocks.
+      if (blocks == 0 && n > 0) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: not a readable VTK XML PolyData file: {} declares {:.4g} values in "
+                         "a compressed header of 0 blocks",
+                         what, name, n);
+      }
       if (double(blocks) * double(header_bytes) > double(room) || double(block_size) > limit ||
           double(last_block_size) > limit || double(blocks) * double(block_size) > limit) {
         refuse(fmt::format("{}'s compressed header ({} blocks of {} bytes, the last {})", name,

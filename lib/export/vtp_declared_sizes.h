@@ -15,7 +15,8 @@ namespace strielad::vtp {
 // Every array of a VTK XML data type (VTK 9.1 dereferences a null array for others);
 // every array's values (tuples x components) at most kMaxExpansion times the file's
 // bytes (zlib expands at most 1032-fold) plus 1 MiB; a compressed header's block count
-// within the bytes that follow it.
+// within the bytes that follow it, and not 0 for an array with values (VTK 9.1 then
+// dereferences a null block table).
 // \error kInvalidInput naming `what`, the element and the size or type.
 void check_declared_sizes(std::span<const char> file, const std::string& what);
 

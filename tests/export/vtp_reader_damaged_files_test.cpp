@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // read_vtp on damaged .vtp files (the fuzzer's reproducers in
-// tests/fuzz/regressions/vtp_reader/): sizes the file's bytes cannot back and array types
-// VTK does not know are refused with kInvalidInput naming the file, before VTK allocates
-// terabytes (std::bad_alloc thrown through VTK) or dereferences a null array (SEGV); so
-// are polygons that refer to points the file does not have.
+// tests/fuzz/regressions/vtp_reader/): sizes the file's bytes cannot back, array types
+// VTK does not know and compressed arrays of zero blocks are refused with kInvalidInput
+// naming the file, before VTK allocates terabytes (std::bad_alloc thrown through VTK) or
+// dereferences null (SEGV); so are polygons that refer to points the file does not have.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -31,6 +31,11 @@ TEST(VtpReaderDamagedFilesTest, CompressedBlockCountBeyondTheFileIsRefused) {
 TEST(VtpReaderDamagedFilesTest, CompressedBlockSizeBeyondTheFileIsRefused) {
   const auto path = kRegressions / "compressed-block-size-beyond-file.vtp";
   expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string(), "compressed header"});
+}
+
+TEST(VtpReaderDamagedFilesTest, CompressedArrayOfZeroBlocksIsRefused) {
+  const auto path = kRegressions / "compressed-array-of-zero-blocks.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string(), "0 blocks"});
 }
 
 TEST(VtpReaderDamagedFilesTest, FieldArrayOfAnUnknownTypeIsRefused) {
