@@ -17,7 +17,9 @@ class NcFile {
  public:
   NcFile() = default;
   // Throws kNotFound when the file does not exist, kIo when it cannot be read and
-  // kInvalidInput (with netCDF's message) when it is not a readable netCDF file.
+  // kInvalidInput when it is a classic-format file shorter than its header says
+  // (classic_layout.h; checked before netCDF-C reads it) or (with netCDF's message) not a
+  // readable netCDF file.
   explicit NcFile(const std::filesystem::path& path);
   NcFile(NcFile&& other) noexcept;
   NcFile& operator=(NcFile&& other) noexcept;
