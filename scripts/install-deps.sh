@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Installs the Debian 12 packages STRIELAD builds and tests with, only when missing.
-# Usage: scripts/install-deps.sh [--tests]   (--tests adds Slurm, munge and real data)
+# Usage: scripts/install-deps.sh [--tests]   (--tests adds Slurm, munge, real data and
+# clang with libFuzzer and the sanitizer runtimes for scripts/fuzz.sh)
 set -euo pipefail
 
 packages=(
@@ -14,7 +15,8 @@ packages=(
   libglfw3-dev libepoxy-dev libimgui-dev libstb-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
 )
 if [[ "${1:-}" == "--tests" ]]; then
-  packages+=(libncarg-data proj-bin slurm-wlm munge xvfb xauth gnuplot-nox)
+  packages+=(libncarg-data proj-bin slurm-wlm munge xvfb xauth gnuplot-nox
+             clang libclang-rt-14-dev llvm)
 fi
 
 missing=()

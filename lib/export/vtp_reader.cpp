@@ -11,10 +11,14 @@
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <new>
+#include <stdexcept>
 #include <system_error>
 
 #include "core/error.h"
+#include "core/file_io.h"
 #include "export/vtk_error_capture.h"
+#include "export/vtp_declared_sizes.h"
 
 namespace strielad {
 namespace {
@@ -63,13 +67,29 @@ VtpContents read_vtp(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, ec)) {
     throw make_error(ErrorCode::kNotFound, "{}: no such file", path.string());
   }
+  const std::vector<std::byte> bytes = read_file_bytes(path);
+  vtp::check_declared_sizes({reinterpret_cast<const char*>(bytes.data()), bytes.size()}, path.string());
   vtkNew<vtk_support::ErrorCapture> errors;
   vtkNew<vtkXMLPolyDataReader> reader;
   errors->watch(reader);
   reader->SetReaderErrorObserver(errors);  // its internal readers and XML parser
   reader->SetParserErrorObserver(errors);
   reader->SetFileName(path.c_str());
-  reader->Update();
+  // VTK allocates what the file declares before it reads the data; sizes the bytes cannot
+  // back are refused above, and a size that still cannot be allocated ends here.
+  try {
+    reader->Update();
+  } catch (const std::bad_alloc&) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: not a readable VTK XML PolyData file: it declares more data than can "
+                     "be allocated",
+                     path.string());
+  } catch (const std::length_error&) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: not a readable VTK XML PolyData file: it declares more data than can "
+                     "be allocated",
+                     path.string());
+  }
   vtkPolyData* poly = reader->GetOutput();
   if (errors->failed() || poly == nullptr) {
     throw make_error(ErrorCode::kInvalidInput, "{}: not a readable VTK XML PolyData file: {}",
@@ -88,6 +108,14 @@ VtpContents read_vtp(const std::filesystem::path& path) {
   vtkIdType count = 0;
   const vtkIdType* ids = nullptr;
   for (polys->InitTraversal(); polys->GetNextCell(count, ids);) {
+    for (vtkIdType k = 0; k < count; ++k) {
+      if (ids[k] < 0 || ids[k] >= np) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: not a readable VTK XML PolyData file: a polygon refers to point {} "
+                         "of {}",
+                         path.string(), ids[k], np);
+      }
+    }
     if (count == 3) {
       contents.triangles.push_back(
           {std::uint32_t(ids[0]), std::uint32_t(ids[1]), std::uint32_t(ids[2])});

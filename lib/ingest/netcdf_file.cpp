@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "ingest/classic_layout.h"
 #include "ingest/netcdf_call.h"
 
 namespace strielad::ingest {
@@ -35,6 +36,10 @@ NcFile::NcFile(const std::filesystem::path& path) {
     throw make_error(ErrorCode::kInvalidInput, "{}: is a directory, not a netCDF file",
                      path.string());
   }
+  // Before netCDF-C reads the header: it allocates the counts a classic header declares
+  // (a 460-byte file declaring 33 million dimensions made it calloc 1.7 GB, and
+  // dereference null where that failed) and reads a truncated file's data as zeros.
+  check_classic_not_truncated(path);
   int ncid = -1;
   const int rc = nc_open(path.c_str(), NC_NOWRITE, &ncid);
   if (rc == NC_NOERR) {

@@ -17,8 +17,10 @@ class NcFile {
  public:
   NcFile() = default;
   // Throws kNotFound when the file does not exist, kIo when the system cannot open or
-  // read it, and kInvalidInput (with netCDF's message) when it is not a readable netCDF
-  // file, including the damaged headers netCDF-C answers with a system errno (EINVAL).
+  // read it, and kInvalidInput when it is a classic-format file shorter than its header
+  // says (classic_layout.h; checked before netCDF-C reads it) or (with netCDF's message)
+  // not a readable netCDF file, including the damaged headers netCDF-C answers with a
+  // system errno (EINVAL).
   explicit NcFile(const std::filesystem::path& path);
   NcFile(NcFile&& other) noexcept;
   NcFile& operator=(NcFile&& other) noexcept;

@@ -1,10 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
-// A fuzz smoke test for compilers without libFuzzer: feeds each seed and deterministic
-// mutations of it (bit flips, byte overwrites, truncations, insertions, splices) to the
-// target for a bounded time. A crash or sanitizer report fails the test.
+// A fuzz smoke test for compilers without libFuzzer: feeds every file under the given
+// directories (the target's kept corpus and crash reproducers), each seed, and
+// deterministic mutations of the seeds (bit flips, byte overwrites, truncations,
+// insertions, splices) to the target for a bounded time. A crash or sanitizer report
+// fails the test.
+//   <target> [SECONDS [DIR...]]   |   <target> --write-seeds DIR
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 
@@ -25,6 +32,22 @@ int main(int argc, char** argv) {
   const double seconds = argc > 1 ? std::atof(argv[1]) : 5.0;
   std::mt19937_64 rng(12345);
   std::size_t runs = 0;
+  for (int a = 2; a < argc; ++a) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(argv[a], ec)) continue;
+    std::vector<std::filesystem::path> files;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(argv[a])) {
+      if (e.is_regular_file()) files.push_back(e.path());
+    }
+    std::sort(files.begin(), files.end());
+    for (const auto& path : files) {
+      std::ifstream in(path, std::ios::binary);
+      const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                            std::istreambuf_iterator<char>());
+      LLVMFuzzerTestOneInput(bytes.data(), bytes.size());
+      ++runs;
+    }
+  }
   for (const auto& s : seeds) {
     LLVMFuzzerTestOneInput(s.data(), s.size());
     ++runs;
@@ -55,6 +78,7 @@ int main(int argc, char** argv) {
       ++runs;
     }
   }
-  std::printf("%zu inputs from %zu seeds, no crash\n", runs, seeds.size());
+  std::printf("%zu inputs (kept files, %zu seeds and their mutations), no crash\n", runs,
+              seeds.size());
   return 0;
 }

@@ -1,0 +1,198 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "export/vtp_declared_sizes.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "core/error.h"
+
+namespace strielad::vtp {
+namespace {
+
+// The value of attribute `name` in the element text `tag` ("<DataArray a="1" ...>").
+std::optional<std::string_view> attribute(std::string_view tag, std::string_view name) {
+  for (std::size_t at = tag.find(name); at != std::string_view::npos; at = tag.find(name, at + 1)) {
+    const bool starts = at > 0 && (tag[at - 1] == ' ' || tag[at - 1] == '\t' || tag[at - 1] == '\n' ||
+                                   tag[at - 1] == '\r');
+    std::size_t p = at + name.size();
+    while (p < tag.size() && (tag[p] == ' ' || tag[p] == '\t' || tag[p] == '\n' || tag[p] == '\r')) ++p;
+    if (!starts || p >= tag.size() || tag[p] != '=') continue;
+    ++p;
+    while (p < tag.size() && (tag[p] == ' ' || tag[p] == '\t' || tag[p] == '\n' || tag[p] == '\r')) ++p;
+    if (p >= tag.size() || (tag[p] != '"' && tag[p] != '\'')) continue;
+    const auto end = tag.find(tag[p], p + 1);
+    if (end == std::string_view::npos) return std::nullopt;
+    return tag.substr(p + 1, end - p - 1);
+  }
+  return std::nullopt;
+}
+
+// A declared count: digits (VTK reads them as 64-bit integers); a sign, anything else or
+// an overflow counts as "too large" (VTK would reject or misread it later).
+double count(std::string_view tag, std::string_view name, double if_missing) {
+  const auto text = attribute(tag, name);
+  if (!text) return if_missing;
+  std::string_view t = *text;
+  while (!t.empty() && (t.front() == ' ' || t.front() == '+')) t.remove_prefix(1);
+  std::uint64_t v = 0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (ec != std::errc() || t.empty()) return t.empty() || t.front() == '-' ? 0 : 1e300;
+  return double(v);
+}
+
+std::uint64_t little_endian(const unsigned char* p, std::size_t bytes) {
+  std::uint64_t v = 0;
+  for (std::size_t i = bytes; i-- > 0;) v = v << 8 | p[i];
+  return v;
+}
+
+int base64_value(char c) {
+  if (c >= 'A' && c <= 'Z') return c - 'A';
+  if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+  if (c >= '0' && c <= '9') return c - '0' + 52;
+  if (c == '+') return 62;
+  if (c == '/') return 63;
+  return -1;
+}
+
+// The first `bytes` bytes of base64 text (whitespace skipped); fewer if it ends first.
+std::string decode_base64_prefix(std::string_view text, std::size_t bytes) {
+  std::string out;
+  std::uint32_t bits = 0;
+  int nbits = 0;
+  for (char c : text) {
+    const int v = base64_value(c);
+    if (v < 0) {
+      if (c == '=' || c == '<') break;
+      continue;
+    }
+    bits = bits << 6 | std::uint32_t(v);
+    nbits += 6;
+    if (nbits >= 8) {
+      nbits -= 8;
+      out.push_back(char((bits >> nbits) & 0xff));
+      if (out.size() == bytes) break;
+    }
+  }
+  return out;
+}
+
+bool known_type(std::string_view type) {
+  for (const char* known : {"Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32", "Int64", "UInt64",
+                            "Float32", "Float64", "String", "Char"}) {
+    if (type == known) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void check_declared_sizes(std::span<const char> file, const std::string& what) {
+  const std::string_view text(file.data(), file.size());
+  const double limit = kMaxExpansion * double(file.size()) + double(1 << 20);
+  const auto refuse = [&](std::string_view element, double values) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: not a readable VTK XML PolyData file: {} declares {:.4g} values, more "
+                     "than its {} bytes can hold",
+                     what, element, values, file.size());
+  };
+  // The XML part ends where raw appended data begins (after "<AppendedData ...>_").
+  const auto appended = text.find("<AppendedData");
+  const std::string_view xml = text.substr(0, appended);
+  std::size_t header_bytes = 4;  // header_type UInt32 (VTK's default) or UInt64
+  bool compressed = false;
+  bool raw_appended = false;
+  std::size_t appended_start = text.size();
+  if (const auto file_tag_at = xml.find("<VTKFile"); file_tag_at != std::string_view::npos) {
+    const auto tag = xml.substr(file_tag_at, xml.find('>', file_tag_at) - file_tag_at);
+    if (attribute(tag, "header_type") == "UInt64") header_bytes = 8;
+    compressed = attribute(tag, "compressor").has_value();
+  }
+  if (appended != std::string_view::npos) {
+    const auto close = text.find('>', appended);
+    const auto tag = text.substr(appended, close - appended);
+    raw_appended = attribute(tag, "encoding") == "raw";
+    const auto underscore = close == std::string_view::npos ? close : text.find('_', close);
+    if (underscore != std::string_view::npos) appended_start = underscore + 1;
+  }
+
+  double points = 0, cells = 0;  // of the current piece
+  double tuples = 0;             // of the arrays in the current section
+  for (std::size_t at = xml.find('<'); at != std::string_view::npos; at = xml.find('<', at + 1)) {
+    const auto close = xml.find('>', at);
+    const auto tag = xml.substr(at, close == std::string_view::npos ? close : close - at);
+    const auto name_end = tag.find_first_of(" \t\r\n/>", 1);
+    const std::string_view name = tag.substr(1, name_end == std::string_view::npos ? name_end : name_end - 1);
+    if (name == "Piece") {
+      points = count(tag, "NumberOfPoints", 0);
+      cells = count(tag, "NumberOfVerts", 0) + count(tag, "NumberOfLines", 0) +
+              count(tag, "NumberOfStrips", 0) + count(tag, "NumberOfPolys", 0);
+      if (points * 3 > limit) refuse("Piece NumberOfPoints", points * 3);
+      if (cells > limit) refuse("Piece cell counts", cells);
+    } else if (name == "PointData" || name == "Points") {
+      tuples = points;
+    } else if (name == "CellData" || name == "Verts" || name == "Lines" || name == "Strips" ||
+               name == "Polys") {
+      tuples = cells + 1;  // offsets arrays: one more in older files
+    } else if (name == "FieldData") {
+      tuples = 0;
+    } else if (name == "DataArray" || name == "Array") {
+      // VTK 9.1 dereferences the null array it makes for a FieldData array of an unknown
+      // type: only its type names pass.
+      const auto type = attribute(tag, "type");
+      if (!type || !known_type(*type)) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: not a readable VTK XML PolyData file: {} of type '{}' (not a VTK XML "
+                         "data type)",
+                         what, name, type ? *type : "");
+      }
+      const double n = count(tag, "NumberOfTuples", tuples) * std::max(1.0, count(tag, "NumberOfComponents", 1));
+      if (n > limit) refuse(name, n);
+      const auto format = attribute(tag, "format");
+      if (!compressed || !format) continue;
+      // The compressed header: block count, block size, last block size, then one
+      // compressed size per block; VTK allocates by the first three.
+      const std::size_t header = 3 * header_bytes;
+      std::string words;
+      std::size_t room = 0;
+      if (*format == "appended" && raw_appended) {
+        const double offset = count(tag, "offset", 0);
+        if (offset >= double(text.size() - std::min(text.size(), appended_start))) continue;  // VTK refuses
+        const std::size_t p = appended_start + std::size_t(offset);
+        if (text.size() - p < header) continue;  // VTK refuses a short header
+        words = std::string(text.substr(p, header));
+        room = text.size() - p - header;
+      } else if (*format == "binary" && close != std::string_view::npos) {
+        const std::string_view body = xml.substr(close + 1, xml.find('<', close) - close - 1);
+        words = decode_base64_prefix(body, header);
+        if (words.size() < header) continue;
+        room = body.size();
+      } else {
+        continue;
+      }
+      const auto word = [&](std::size_t i) {
+        return little_endian(reinterpret_cast<const unsigned char*>(words.data()) + i * header_bytes,
+                             header_bytes);
+      };
+      const std::uint64_t blocks = word(0), block_size = word(1), last_block_size = word(2);
+      // VTK 9.1 dereferences a null block table when an array with values has no blocks.
+      if (blocks == 0 && n > 0) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: not a readable VTK XML PolyData file: {} declares {:.4g} values in "
+                         "a compressed header of 0 blocks",
+                         what, name, n);
+      }
+      if (double(blocks) * double(header_bytes) > double(room) || double(block_size) > limit ||
+          double(last_block_size) > limit || double(blocks) * double(block_size) > limit) {
+        refuse(fmt::format("{}'s compressed header ({} blocks of {} bytes, the last {})", name,
+                           blocks, block_size, last_block_size),
+               double(blocks) * double(block_size));
+      }
+    }
+  }
+}
+
+}  // namespace strielad::vtp

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: Apache-2.0
+// read_vtp on damaged .vtp files (the fuzzer's reproducers in
+// tests/fuzz/regressions/vtp_reader/): sizes the file's bytes cannot back, array types
+// VTK does not know and compressed arrays of zero blocks are refused with kInvalidInput
+// naming the file, before VTK allocates terabytes (std::bad_alloc thrown through VTK) or
+// dereferences null (SEGV); so are polygons that refer to points the file does not have.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "export/vtp_reader.h"
+#include "support/expect_error.h"
+#include "support/temp_dir.h"
+
+namespace strielad {
+namespace {
+
+using testing::expect_error;
+
+const std::filesystem::path kRegressions =
+    std::filesystem::path(STRIELAD_SOURCE_DIR) / "tests/fuzz/regressions/vtp_reader";
+
+TEST(VtpReaderDamagedFilesTest, CompressedBlockCountBeyondTheFileIsRefused) {
+  const auto path = kRegressions / "compressed-block-count-beyond-file.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput,
+               {path.string(), "compressed header", "more than its 3729 bytes can hold"});
+}
+
+TEST(VtpReaderDamagedFilesTest, CompressedBlockSizeBeyondTheFileIsRefused) {
+  const auto path = kRegressions / "compressed-block-size-beyond-file.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string(), "compressed header"});
+}
+
+TEST(VtpReaderDamagedFilesTest, CompressedArrayOfZeroBlocksIsRefused) {
+  const auto path = kRegressions / "compressed-array-of-zero-blocks.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string(), "0 blocks"});
+}
+
+TEST(VtpReaderDamagedFilesTest, FieldArrayOfAnUnknownTypeIsRefused) {
+  const auto path = kRegressions / "unknown-field-array-type.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string(), "'Strina'"});
+}
+
+TEST(VtpReaderDamagedFilesTest, PointCountBeyondTheFileIsRefused) {
+  testing::TempDir dir;
+  const auto path = dir / "huge.vtp";
+  std::ofstream(path) << "<?xml version=\"1.0\"?>\n"
+                         "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+                         "<PolyData><Piece NumberOfPoints=\"900000000000\" NumberOfPolys=\"0\">\n"
+                         "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">"
+                         "0 0 0</DataArray></Points>\n"
+                         "</Piece></PolyData></VTKFile>\n";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string(), "NumberOfPoints"});
+}
+
+TEST(VtpReaderDamagedFilesTest, PolygonReferringToAMissingPointIsRefused) {
+  const auto path = kRegressions / "polygon-beyond-the-points.vtp";  // point 3 of 3
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string(), "point 3 of 3"});
+}
+
+TEST(VtpReaderDamagedFilesTest, PointsWithoutThreeComponentsAreRefused) {
+  const auto path = kRegressions / "points-without-three-components.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string()});
+}
+
+}  // namespace
+}  // namespace strielad
