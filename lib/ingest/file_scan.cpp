@@ -15,7 +15,6 @@
 
 #include "ingest/cf_attributes.h"
 #include "ingest/cf_axis_detection.h"
-#include "ingest/classic_layout.h"
 #include "ingest/grid_mapping_reader.h"
 #include "ingest/horizontal_axes.h"
 #include "ingest/netcdf_call.h"
@@ -535,7 +534,6 @@ ScannedFile scan_file(const std::filesystem::path& path) {
   ScannedFile out;
   out.source = describe_source_file(path);
   const std::string& display = out.source.path;
-  check_classic_not_truncated(path);
   try {
     std::lock_guard lock(netcdf_mutex());
     NcFile file{std::filesystem::path(display)};
