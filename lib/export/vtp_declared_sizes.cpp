@@ -120,7 +120,8 @@ void check_declared_sizes(std::span<const char> file, const std::string& what) {
   }
 
   double points = 0, cells = 0;  // of the current piece
-  double tuples = 0;             // of the arrays in the current section
+  double verts = 0, lines = 0, strips = 0, polys = 0;
+  double tuples = 0;  // of the arrays in the current section
   for (std::size_t at = xml.find('<'); at != std::string_view::npos; at = xml.find('<', at + 1)) {
     const auto close = xml.find('>', at);
     const auto tag = xml.substr(at, close == std::string_view::npos ? close : close - at);
@@ -128,15 +129,22 @@ void check_declared_sizes(std::span<const char> file, const std::string& what) {
     const std::string_view name = tag.substr(1, name_end == std::string_view::npos ? name_end : name_end - 1);
     if (name == "Piece") {
       points = count(tag, "NumberOfPoints", 0);
-      cells = count(tag, "NumberOfVerts", 0) + count(tag, "NumberOfLines", 0) +
-              count(tag, "NumberOfStrips", 0) + count(tag, "NumberOfPolys", 0);
+      verts = count(tag, "NumberOfVerts", 0);
+      lines = count(tag, "NumberOfLines", 0);
+      strips = count(tag, "NumberOfStrips", 0);
+      polys = count(tag, "NumberOfPolys", 0);
+      cells = verts + lines + strips + polys;
       if (points * 3 > limit) refuse("Piece NumberOfPoints", points * 3);
       if (cells > limit) refuse("Piece cell counts", cells);
     } else if (name == "PointData" || name == "Points") {
       tuples = points;
-    } else if (name == "CellData" || name == "Verts" || name == "Lines" || name == "Strips" ||
-               name == "Polys") {
-      tuples = cells + 1;  // offsets arrays: one more in older files
+    } else if (name == "CellData") {
+      tuples = cells;
+    } else if (name == "Verts" || name == "Lines" || name == "Strips" || name == "Polys") {
+      // The section's own cells: an empty section's arrays hold no values whatever the
+      // other sections hold. (Its connectivity holds more than one value per cell; the
+      // limit below is far above that.)
+      tuples = name == "Verts" ? verts : name == "Lines" ? lines : name == "Strips" ? strips : polys;
     } else if (name == "FieldData") {
       tuples = 0;
     } else if (name == "DataArray" || name == "Array") {
@@ -184,6 +192,14 @@ void check_declared_sizes(std::span<const char> file, const std::string& what) {
                          "{}: not a readable VTK XML PolyData file: {} declares {:.4g} values in "
                          "a compressed header of 0 blocks",
                          what, name, n);
+      }
+      // VTK 9.1 divides by the block size (SIGFPE when it is 0) and takes a last block
+      // larger than the others as more data than it allocated.
+      if (blocks > 0 && (block_size == 0 || last_block_size > block_size)) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: not a readable VTK XML PolyData file: {}'s compressed header has {} "
+                         "blocks of {} bytes, the last of {}",
+                         what, name, blocks, block_size, last_block_size);
       }
       if (double(blocks) * double(header_bytes) > double(room) || double(block_size) > limit ||
           double(last_block_size) > limit || double(blocks) * double(block_size) > limit) {

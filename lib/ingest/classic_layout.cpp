@@ -92,6 +92,14 @@ void skip_attributes(Cursor& c, int version) {
   }
 }
 
+// "CDF" and version 1 (classic), 2 (64-bit offset) or 5 (64-bit data).
+bool has_classic_magic(std::span<const std::byte> bytes) {
+  if (bytes.size() < 4) return false;
+  const int version = std::to_integer<int>(bytes[3]);
+  return bytes[0] == std::byte{'C'} && bytes[1] == std::byte{'D'} && bytes[2] == std::byte{'F'} &&
+         (version == 1 || version == 2 || version == 5);
+}
+
 Parse parse(std::span<const std::byte> bytes, std::uint64_t& required) {
   if (bytes.size() < 4) return Parse::kNeedMore;
   if (bytes[0] != std::byte{'C'} || bytes[1] != std::byte{'D'} || bytes[2] != std::byte{'F'}) {
@@ -189,7 +197,7 @@ std::optional<std::uint64_t> classic_required_size(std::span<const std::byte> he
   return required;
 }
 
-void check_classic_not_truncated(const std::filesystem::path& path) {
+void check_classic_header(const std::filesystem::path& path) {
   ReadOnlyFile file(path);
   const std::uint64_t size = file.size();
   std::uint64_t want = std::min<std::uint64_t>(size, 64 * 1024);
@@ -198,7 +206,16 @@ void check_classic_not_truncated(const std::filesystem::path& path) {
     file.read_at(0, bytes);
     std::uint64_t required = 0;
     const Parse result = parse(bytes, required);
-    if (result == Parse::kInvalid) return;  // not classic: netCDF/HDF5 checks the rest
+    if (result == Parse::kInvalid) {
+      if (!has_classic_magic(bytes)) return;  // not classic: netCDF/HDF5 checks the rest
+      // netCDF-C's own parser of classic headers trusts what it reads (a mutated count
+      // made it crash in NC_hashmapadd or free_NC_vararrayV): a header that does not
+      // follow the grammar never reaches it.
+      throw make_error(ErrorCode::kInvalidInput,
+                       "{}: not a readable netCDF file: its classic-format header is damaged "
+                       "(a tag, type, count or dimension id that the format does not allow)",
+                       path.string());
+    }
     if (result == Parse::kOk) {
       if (size < required) {
         throw make_error(ErrorCode::kInvalidInput,

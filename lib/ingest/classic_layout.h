@@ -17,8 +17,10 @@ namespace strielad::ingest {
 // more bytes are needed) or describes impossible sizes.
 std::optional<std::uint64_t> classic_required_size(std::span<const std::byte> header);
 
-// Throws kInvalidInput "FILE: file is truncated: ..." when `path` is a classic-format file
-// shorter than its header says. Files in other formats pass unchecked.
-void check_classic_not_truncated(const std::filesystem::path& path);
+// Throws kInvalidInput naming `path` when it starts with a classic-format magic (CDF-1,
+// -2 or -5) and its header does not follow the format's grammar (netCDF-C's parser trusts
+// the counts it reads and crashes on some), or when the file is shorter than its header
+// says ("file is truncated"). Files in other formats pass unchecked.
+void check_classic_header(const std::filesystem::path& path);
 
 }  // namespace strielad::ingest

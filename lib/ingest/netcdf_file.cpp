@@ -39,7 +39,7 @@ NcFile::NcFile(const std::filesystem::path& path) {
   // Before netCDF-C reads the header: it allocates the counts a classic header declares
   // (a 460-byte file declaring 33 million dimensions made it calloc 1.7 GB, and
   // dereference null where that failed) and reads a truncated file's data as zeros.
-  check_classic_not_truncated(path);
+  check_classic_header(path);
   int ncid = -1;
   const int rc = nc_open(path.c_str(), NC_NOWRITE, &ncid);
   if (rc == NC_NOERR) {

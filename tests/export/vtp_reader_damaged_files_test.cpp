@@ -38,6 +38,13 @@ TEST(VtpReaderDamagedFilesTest, CompressedArrayOfZeroBlocksIsRefused) {
   expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string(), "0 blocks"});
 }
 
+TEST(VtpReaderDamagedFilesTest, CompressedBlockSizeOfZeroIsRefused) {
+  // VTK divides by the block size: SIGFPE (found by the gcc replay's mutations).
+  const auto path = kRegressions / "compressed-block-size-zero-sigfpe.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput,
+               {path.string(), "compressed header has", "blocks of 0 bytes"});
+}
+
 TEST(VtpReaderDamagedFilesTest, FieldArrayOfAnUnknownTypeIsRefused) {
   const auto path = kRegressions / "unknown-field-array-type.vtp";
   expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string(), "'Strina'"});

@@ -3,10 +3,16 @@
 // directories (the target's kept corpus and crash reproducers), each seed, and
 // deterministic mutations of the seeds (bit flips, byte overwrites, truncations,
 // insertions, splices) to the target for a bounded time. A crash or sanitizer report
-// fails the test.
+// fails the test; on a fatal signal the input at fault is written to
+// ./replay-crash-<target> (its path printed) before the process dies.
 //   <target> [SECONDS [DIR...]]   |   <target> --write-seeds DIR
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
+#include <csignal>
+#include <cstring>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -17,7 +23,52 @@
 
 #include "fuzz/fuzz_target.h"
 
+namespace {
+
+// The input being run, for the fatal-signal handler (which may only make
+// async-signal-safe calls: open, write, close, signal, raise).
+const std::uint8_t* g_input = nullptr;
+std::size_t g_input_size = 0;
+char g_crash_path[512] = "replay-crash";
+
+void write_all(int fd, const void* data, std::size_t size) {
+  const char* p = static_cast<const char*>(data);
+  while (size > 0) {
+    const ssize_t n = ::write(fd, p, size);
+    if (n <= 0) return;
+    p += n;
+    size -= static_cast<std::size_t>(n);
+  }
+}
+
+extern "C" void save_input_and_die(int sig) {
+  const int fd = ::open(g_crash_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd >= 0) {
+    if (g_input != nullptr) write_all(fd, g_input, g_input_size);
+    ::close(fd);
+  }
+  static const char kText[] = "fatal signal; the input at fault is in ";
+  write_all(2, kText, sizeof kText - 1);
+  write_all(2, g_crash_path, std::strlen(g_crash_path));
+  write_all(2, "\n", 1);
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+int run_one(const std::uint8_t* data, std::size_t size) {
+  g_input = data;
+  g_input_size = size;
+  return LLVMFuzzerTestOneInput(data, size);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  {
+    std::string name = std::filesystem::path(argv[0]).filename().string();
+    std::snprintf(g_crash_path, sizeof g_crash_path, "replay-crash-%s", name.c_str());
+    for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, save_input_and_die);
+  }
   const auto seeds = strielad_fuzz_seeds();
   if (argc > 2 && std::string(argv[1]) == "--write-seeds") {  // a corpus for libFuzzer
     for (std::size_t i = 0; i < seeds.size(); ++i) {
@@ -44,12 +95,12 @@ int main(int argc, char** argv) {
       std::ifstream in(path, std::ios::binary);
       const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
                                             std::istreambuf_iterator<char>());
-      LLVMFuzzerTestOneInput(bytes.data(), bytes.size());
+      run_one(bytes.data(), bytes.size());
       ++runs;
     }
   }
   for (const auto& s : seeds) {
-    LLVMFuzzerTestOneInput(s.data(), s.size());
+    run_one(s.data(), s.size());
     ++runs;
   }
   const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
@@ -74,7 +125,7 @@ int main(int argc, char** argv) {
           }
         }
       }
-      LLVMFuzzerTestOneInput(in.data(), in.size());
+      run_one(in.data(), in.size());
       ++runs;
     }
   }

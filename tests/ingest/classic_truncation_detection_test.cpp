@@ -36,10 +36,10 @@ TEST_P(ClassicTruncationDetectionTest, IntactFileHasExactlyTheRequiredSize) {
   const auto required = classic_required_size(bytes);
   ASSERT_TRUE(required.has_value());
   EXPECT_EQ(*required, bytes.size());
-  check_classic_not_truncated(path);  // no throw
+  check_classic_header(path);  // no throw
 
   copy_truncated(path, dir / "short.nc", bytes.size() - 1);
-  expect_error([&] { check_classic_not_truncated(dir / "short.nc"); }, ErrorCode::kInvalidInput,
+  expect_error([&] { check_classic_header(dir / "short.nc"); }, ErrorCode::kInvalidInput,
                {"short.nc: file is truncated"});
 }
 
@@ -68,7 +68,7 @@ TEST(ClassicTruncationDetectionStandaloneTest, OddSizedRecordVariables) {
       EXPECT_LE(*required, bytes.size()) << "cmode " << cmode << " second " << second;
       EXPECT_EQ(*required, second ? bytes.size() - 2 : bytes.size()) << "cmode " << cmode;
       copy_truncated(path, dir / "short.nc", *required - 1);
-      expect_error([&] { check_classic_not_truncated(dir / "short.nc"); },
+      expect_error([&] { check_classic_header(dir / "short.nc"); },
                    ErrorCode::kInvalidInput, {"file is truncated"});
     }
   }
