@@ -8,6 +8,9 @@
 #include <spdlog/spdlog.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/error.h"
@@ -36,6 +39,45 @@ struct QuietGdal {
 };
 
 GDALDatasetH handle(void* p) { return static_cast<GDALDatasetH>(p); }
+
+// What kind of CRS `srs` is, in words.
+const char* crs_kind(OGRSpatialReferenceH srs) {
+  if (OSRIsCompound(srs)) return "compound";
+  if (OSRIsProjected(srs)) return "projected";
+  if (OSRIsGeocentric(srs)) return "geocentric";
+  if (OSRIsGeographic(srs)) return "geographic";
+  if (OSRIsVertical(srs)) return "vertical";
+  return "other";
+}
+
+// Refuses a CRS whose EPSG code (of the whole CRS, `node` nullptr, or of its GEOGCS)
+// names a CRS of another kind: PROJ looks the code up when it builds a transformation,
+// and a geographic CRS carrying a geocentric CRS's code (EPSG:4342, from a damaged
+// GeoTIFF's keys) made it dereference null (SEGV in ObjectUsage::domains).
+void check_authority_matches(OGRSpatialReferenceH srs, const char* node,
+                             const std::filesystem::path& path) {
+  const char* authority = OSRGetAuthorityName(srs, node);
+  const char* code = OSRGetAuthorityCode(srs, node);
+  if (!authority || !code || std::string_view(authority) != "EPSG") return;
+  char* end = nullptr;
+  const long epsg = std::strtol(code, &end, 10);
+  if (end == code || *end != '\0' || epsg <= 0 || epsg > 2147483647L) {
+    throw make_error(ErrorCode::kInvalidInput, "{}: the CRS's EPSG code '{}' is not a number",
+                     path.string(), code);
+  }
+  OGRSpatialReferenceH own = OSRNewSpatialReference(nullptr);
+  OGRSpatialReferenceH part = node ? OSRCloneGeogCS(srs) : OSRClone(srs);
+  const bool known = OSRImportFromEPSG(own, static_cast<int>(epsg)) == OGRERR_NONE;
+  const std::string claimed = crs_kind(part), actual = known ? crs_kind(own) : "";
+  OSRDestroySpatialReference(own);
+  OSRDestroySpatialReference(part);
+  if (known && claimed != actual) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: the file's {} CRS carries the code EPSG:{}, which is a {} CRS; a CRS that "
+                     "contradicts its own code is refused",
+                     path.string(), claimed, epsg, actual);
+  }
+}
 
 }  // namespace
 
@@ -86,6 +128,17 @@ GdalRaster::GdalRaster(const std::filesystem::path& path, const std::string& wha
       return;
     }
     OGRSpatialReferenceH source = OSRNewSpatialReference(wkt);
+    if (!source) {
+      throw make_error(ErrorCode::kInvalidInput, "{}: the {}'s CRS cannot be read ({})",
+                       path.string(), what, gdal_message("malformed WKT"));
+    }
+    try {
+      check_authority_matches(source, nullptr, path);
+      if (OSRIsProjected(source)) check_authority_matches(source, "GEOGCS", path);
+    } catch (...) {
+      OSRDestroySpatialReference(source);
+      throw;
+    }
     OGRSpatialReferenceH wgs84 = OSRNewSpatialReference(nullptr);
     OSRSetWellKnownGeogCS(wgs84, "WGS84");
     OSRSetAxisMappingStrategy(source, OAMS_TRADITIONAL_GIS_ORDER);
