@@ -7,7 +7,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-scripts/build.sh
+# The three end-user tools only (the viewer for the figure command in the README), not
+# the tests and the benchmarks: scripts/test.sh builds everything.
+scripts/build.sh strielad-convert strielad-serve strielad-view
 convert=build/cmd/strielad-convert/strielad-convert
 dims=${DIMS:-286x312x60}
 out=${OUT:-sample-data}
