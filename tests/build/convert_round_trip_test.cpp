@@ -12,35 +12,14 @@
 #include "ingest/input_catalog.h"
 #include "store/store.h"
 #include "support/small_dataset.h"
+#include "support/store_level0.h"
 #include "support/temp_dir.h"
 
 namespace strielad {
 namespace {
 
 using testing::TempDir;
-
-// Reassembles level 0 of (step, variable) from the store's bricks.
-std::vector<double> assemble_level0(const Store& store, std::uint32_t step, std::uint32_t var) {
-  const OctreeLayout& layout = store.octree();
-  const Dims3 g = layout.grid();
-  std::vector<double> out(g.count(), -12345.0);
-  for (NodeId n = 0; n < layout.level(0).node_count(); ++n) {
-    const Brick b = store.read_brick(step, var, n);
-    for (std::size_t z = 0; z < b.dims[2]; ++z)
-      for (std::size_t y = 0; y < b.dims[1]; ++y)
-        for (std::size_t x = 0; x < b.dims[0]; ++x) {
-          const std::size_t gi = ((b.box.lo[2] + z) * g.y + b.box.lo[1] + y) * g.x + b.box.lo[0] + x;
-          const double v = b.sample((z * b.dims[1] + y) * b.dims[0] + x);
-          const double prev = out[gi];
-          if (prev != -12345.0) {  // shared boundary sample: both bricks must agree
-            EXPECT_TRUE((std::isnan(prev) && std::isnan(v)) || prev == v)
-                << "node " << n << " disagrees with a neighbour at sample " << gi;
-          }
-          out[gi] = v;
-        }
-  }
-  return out;
-}
+using testing::assemble_level0;
 
 bool same_bits(double a, double b) {
   if (std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b);

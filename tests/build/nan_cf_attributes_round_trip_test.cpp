@@ -14,6 +14,7 @@
 #include "build/converter.h"
 #include "store/store.h"
 #include "support/netcdf_fixture.h"
+#include "support/store_level0.h"
 #include "support/temp_dir.h"
 
 namespace strielad {
@@ -23,23 +24,6 @@ using namespace strielad::testing;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Level 0 of (step, variable) as the store holds it, x fastest.
-std::vector<double> level0(const Store& store, std::uint32_t step, std::uint32_t var) {
-  const OctreeLayout& layout = store.octree();
-  const Dims3 g = layout.grid();
-  std::vector<double> out(g.count(), -12345.0);
-  for (NodeId n = 0; n < layout.level(0).node_count(); ++n) {
-    const Brick b = store.read_brick(step, var, n);
-    for (std::size_t z = 0; z < b.dims[2]; ++z)
-      for (std::size_t y = 0; y < b.dims[1]; ++y)
-        for (std::size_t x = 0; x < b.dims[0]; ++x) {
-          const std::size_t gi = ((b.box.lo[2] + z) * g.y + b.box.lo[1] + y) * g.x + b.box.lo[0] + x;
-          out[gi] = b.sample((z * b.dims[1] + y) * b.dims[0] + x);
-        }
-  }
-  return out;
-}
 
 build::ConvertOptions options_for(std::vector<std::filesystem::path> inputs,
                                   const std::filesystem::path& store) {
@@ -81,8 +65,8 @@ TEST(NanCfAttributesRoundTripTest, NanFillValueAndInfiniteMissingValueMakeSample
   EXPECT_FALSE(m.variables[vq].missing_value.has_value());
   EXPECT_FALSE(m.nan_as_fill);
 
-  const auto got_t = level0(*store, 0, static_cast<std::uint32_t>(vt));
-  const auto got_q = level0(*store, 0, static_cast<std::uint32_t>(vq));
+  const auto got_t = assemble_level0(*store, 0, static_cast<std::uint32_t>(vt));
+  const auto got_q = assemble_level0(*store, 0, static_cast<std::uint32_t>(vq));
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (std::isnan(t[i])) {
       EXPECT_TRUE(std::isnan(got_t[i])) << i;
@@ -128,7 +112,7 @@ TEST(NanCfAttributesRoundTripTest, NanValidMinBoundsNothingAcrossFiles) {
   const SimpleGrid g;
   const auto data = ramp(g.samples(), -5.0);
   for (std::uint32_t step = 0; step < 2; ++step) {
-    const auto got = level0(*store, step, 0);
+    const auto got = assemble_level0(*store, step, 0);
     std::size_t valid = 0;
     for (std::size_t i = 0; i < data.size(); ++i) {
       if (i == 7 || data[i] > 10) {  // the NaN fill, and above valid_max
