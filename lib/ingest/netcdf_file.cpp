@@ -3,29 +3,15 @@
 
 #include <netcdf.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <system_error>
 
 #include "core/error.h"
-#include "core/file_io.h"
 #include "ingest/classic_layout.h"
 #include "ingest/netcdf_call.h"
 
 namespace strielad::ingest {
-namespace {
-
-// Throws kIo (kNotFound) naming the file when the system refuses to open or read its
-// first bytes.
-void check_readable(const std::filesystem::path& path) {
-  const ReadOnlyFile file(path);
-  std::vector<std::byte> head(static_cast<std::size_t>(std::min<std::uint64_t>(file.size(), 4096)));
-  file.read_at(0, head);
-}
-
-}  // namespace
-
 NcFile::NcFile(const std::filesystem::path& path) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
@@ -50,10 +36,9 @@ NcFile::NcFile(const std::filesystem::path& path) {
     throw make_error(ErrorCode::kNotFound, "{}: no such file", path.string());
   }
   if (rc > 0) {
-    // A system errno: permissions, I/O, or no fault of the system at all: netCDF-C also
-    // answers EINVAL or E2BIG for a classic header it cannot parse ("CDF\x01" and 0xff
-    // bytes). Reading the first bytes here tells them apart.
-    check_readable(path);
+    // A system errno, but no fault of the system: check_classic_header above has read
+    // the file's first bytes (a file the system refuses throws kIo there), and netCDF-C
+    // also answers EINVAL or E2BIG for a header it cannot parse.
     throw make_error(ErrorCode::kInvalidInput,
                      "{}: not a readable netCDF file (its header is damaged or not netCDF): "
                      "netCDF-C says '{}'",
