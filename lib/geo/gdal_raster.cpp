@@ -66,11 +66,15 @@ void check_authority_matches(OGRSpatialReferenceH srs, const char* node,
                      path.string(), code);
   }
   OGRSpatialReferenceH own = OSRNewSpatialReference(nullptr);
-  OGRSpatialReferenceH part = node ? OSRCloneGeogCS(srs) : OSRClone(srs);
   const bool known = OSRImportFromEPSG(own, static_cast<int>(epsg)) == OGRERR_NONE;
-  const std::string claimed = crs_kind(part), actual = known ? crs_kind(own) : "";
+  const std::string actual = known ? crs_kind(own) : "";
   OSRDestroySpatialReference(own);
-  OSRDestroySpatialReference(part);
+  std::string claimed = crs_kind(srs);
+  if (node) {  // the geographic base of a projected CRS
+    OGRSpatialReferenceH base = OSRCloneGeogCS(srs);
+    claimed = crs_kind(base);
+    OSRDestroySpatialReference(base);
+  }
   if (known && claimed != actual) {
     throw make_error(ErrorCode::kInvalidInput,
                      "{}: the file's {} CRS carries the code EPSG:{}, which is a {} CRS; a CRS that "
