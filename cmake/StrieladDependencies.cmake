@@ -26,7 +26,7 @@ find_package(nlohmann_json REQUIRED CONFIG)
 # placed by pipelines built from their CF attributes (lib/geo/grid_projection.cpp).
 find_package(PROJ CONFIG REQUIRED)
 # GDAL 3.6 (libgdal-dev): terrain from GeoTIFF and any other raster format, drape images
-# (lib/geo/gdal_raster.cpp). Only its C API is used.
+# (lib/scenery/gdal_raster.cpp). Only its C API is used.
 find_package(GDAL CONFIG REQUIRED)
 
 # Open MPI 4.1 (libopenmpi-dev): strielad-serve's MPI mode only (lib/serve/mpi_*.cpp, in

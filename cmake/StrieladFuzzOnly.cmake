@@ -13,12 +13,12 @@ add_compile_options(-fsanitize=address,undefined,fuzzer-no-link
                     -fno-sanitize-recover=undefined -fno-omit-frame-pointer)
 add_link_options(-fsanitize=address,undefined)
 
-# lib/ sources, relative to lib/, that the fuzz targets need (lib/geo/gdal_raster.cpp is
+# lib/ sources, relative to lib/, that the fuzz targets need (lib/scenery/gdal_raster.cpp is
 # always its own library). Whole folders where the readers and decoders live, so that a
 # file added there is built here too; single files from the folders that are mostly
 # something else. A missing one shows as an undefined symbol when a <name>_libfuzzer
 # target links (scripts/fuzz.sh, run by CI, links every one).
-set(STRIELAD_FUZZ_LIB_FOLDERS core export format geo grid ingest octree protocol scene store)
+set(STRIELAD_FUZZ_LIB_FOLDERS core export format geo grid ingest octree protocol scene scenery store)
 set(STRIELAD_FUZZ_LIB_SOURCES
   extract/collapsed_triangles.cpp extract/collinear_slivers.cpp extract/conditions.cpp
   extract/geographic_conditions.cpp extract/mesh_builder.cpp extract/mesh_metrics.cpp
@@ -32,4 +32,4 @@ foreach(folder IN LISTS STRIELAD_FUZZ_LIB_FOLDERS)
        ${PROJECT_SOURCE_DIR}/lib/${folder}/*.cpp)
   list(APPEND STRIELAD_FUZZ_LIB_SOURCES ${folder_sources})
 endforeach()
-list(REMOVE_ITEM STRIELAD_FUZZ_LIB_SOURCES geo/gdal_raster.cpp)
+list(REMOVE_ITEM STRIELAD_FUZZ_LIB_SOURCES scenery/gdal_raster.cpp)

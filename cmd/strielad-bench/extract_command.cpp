@@ -12,7 +12,7 @@
 #include "commands.h"
 #include "suite_output.h"
 #include "core/error.h"
-#include "sample/sample_args.h"
+#include "synthetic/sample_args.h"
 
 namespace strielad::bench_cmd {
 namespace {
@@ -60,8 +60,8 @@ std::vector<bench::ExtractCase> pick_cases(std::vector<bench::ExtractCase> all,
 int run(const ExtractFlags& f) {
   bench::ExtractSuiteOptions o;
   if (f.quick) o = bench::quick_extract_options(o);
-  if (!f.quick || given(f, "--dims")) o.dims = sample::parse_dims(f.dims);
-  o.variables = sample::parse_variable_list(f.vars);
+  if (!f.quick || given(f, "--dims")) o.dims = synthetic::parse_dims(f.dims);
+  o.variables = synthetic::parse_variable_list(f.vars);
   o.work = f.work;
   o.keep = f.keep;
   o.seed = f.seed;

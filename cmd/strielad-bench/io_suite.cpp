@@ -11,7 +11,7 @@
 #include "commands.h"
 #include "suite_output.h"
 #include "core/error.h"
-#include "sample/sample_args.h"
+#include "synthetic/sample_args.h"
 
 namespace strielad::bench_cmd {
 namespace {
@@ -64,8 +64,8 @@ format::CodecSpec parse_codec(const std::string& text) {
 int run(const IoFlags& f) {
   bench::IoSuiteOptions o;
   if (f.quick) o = bench::quick_io_options(o);
-  if (!f.quick || given(f, "--dims")) o.dims = sample::parse_dims(f.dims);
-  o.variables = sample::parse_variable_list(f.vars);
+  if (!f.quick || given(f, "--dims")) o.dims = synthetic::parse_dims(f.dims);
+  o.variables = synthetic::parse_variable_list(f.vars);
   o.work = f.work;
   if (!f.quick || given(f, "--repeat")) o.repeat = f.repeat;
   if (!f.quick || given(f, "--reads")) o.reads = f.reads;
@@ -79,7 +79,7 @@ int run(const IoFlags& f) {
   o.nccopy_extra = f.nccopy_args;
   o.nccopy_tuned_cache = !f.nccopy_untuned;
   o.sweeps = !f.no_sweeps;
-  if (!f.quick || given(f, "--sweep-dims")) o.sweep_dims = sample::parse_dims(f.sweep_dims);
+  if (!f.quick || given(f, "--sweep-dims")) o.sweep_dims = synthetic::parse_dims(f.sweep_dims);
   if (!f.quick || given(f, "--sweep-bricks")) o.sweep_bricks = f.sweep_bricks;
   if (!f.quick || given(f, "--sweep-reads")) o.sweep_reads = f.sweep_reads;
   if (!f.quick || given(f, "--sweep-repeat")) o.sweep_repeat = f.sweep_repeat;

@@ -12,7 +12,7 @@
 #include "commands.h"
 #include "suite_output.h"
 #include "core/error.h"
-#include "sample/sample_args.h"
+#include "synthetic/sample_args.h"
 
 namespace strielad::bench_cmd {
 namespace {
@@ -39,7 +39,7 @@ bool given(const LatencyFlags& f, const char* name) { return f.sub->count(name) 
 int run(const LatencyFlags& f) {
   bench::LatencySuiteOptions o;
   if (f.quick) o = bench::quick_latency_options(o);
-  if (!f.quick || given(f, "--dims")) o.dims = sample::parse_dims(f.dims);
+  if (!f.quick || given(f, "--dims")) o.dims = synthetic::parse_dims(f.dims);
   if (!f.quick || given(f, "--brick")) o.brick = f.brick;
   if (!f.quick || given(f, "--repeat")) o.repeat = f.repeat;
   if (!f.quick || given(f, "--clients")) o.clients = f.clients;
@@ -50,7 +50,7 @@ int run(const LatencyFlags& f) {
   if (!f.quick || given(f, "--cache-mib")) o.cache_mib = f.cache_mib;
   if (f.no_evict) o.evict = false;
   o.rapid_interval_ms = f.rapid_interval_ms;
-  o.variables = sample::parse_variable_list(f.vars);
+  o.variables = synthetic::parse_variable_list(f.vars);
   o.work = f.work;
   o.seed = f.seed;
   o.threads = f.threads;

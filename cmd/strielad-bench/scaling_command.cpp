@@ -10,7 +10,7 @@
 #include "bench/server_process.h"
 #include "commands.h"
 #include "core/error.h"
-#include "sample/sample_args.h"
+#include "synthetic/sample_args.h"
 #include "suite_output.h"
 
 namespace strielad::bench_cmd {
@@ -32,7 +32,7 @@ bool given(const ScalingFlags& f, const char* name) { return f.sub->count(name) 
 int run(const ScalingFlags& f) {
   bench::ScalingSuiteOptions o;
   if (f.quick) o = bench::quick_scaling_options(o);
-  if (!f.quick || given(f, "--dims")) o.dims = sample::parse_dims(f.dims);
+  if (!f.quick || given(f, "--dims")) o.dims = synthetic::parse_dims(f.dims);
   if (!f.quick || given(f, "--brick")) o.brick = f.brick;
   if (!f.quick || given(f, "--repeat")) o.repeat = f.repeat;
   o.fractions = f.fractions;

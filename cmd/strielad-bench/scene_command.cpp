@@ -6,7 +6,7 @@
 
 #include "bench/scene_economy.h"
 #include "commands.h"
-#include "sample/sample_args.h"
+#include "synthetic/sample_args.h"
 #include "suite_output.h"
 
 namespace strielad::bench_cmd {
@@ -26,7 +26,7 @@ bool given(const SceneFlags& f, const char* name) { return f.sub->count(name) > 
 int run(const SceneFlags& f) {
   bench::SceneEconomyOptions o;
   if (f.quick) o = bench::quick_scene_economy_options(o);
-  if (!f.quick || given(f, "--dims")) o.dims = sample::parse_dims(f.dims);
+  if (!f.quick || given(f, "--dims")) o.dims = synthetic::parse_dims(f.dims);
   if (!f.quick || given(f, "--brick")) o.brick = f.brick;
   o.work = f.work;
   o.command_line = f.command_line;

@@ -9,7 +9,7 @@
 #include "bench/soak_suite.h"
 #include "commands.h"
 #include "core/error.h"
-#include "sample/sample_args.h"
+#include "synthetic/sample_args.h"
 #include "suite_output.h"
 
 namespace strielad::bench_cmd {
@@ -46,7 +46,7 @@ int run(SoakFlags& f) {
     keep("--seconds", o.seconds, q.seconds);
     keep("--sample-seconds", o.sample_seconds, q.sample_seconds);
   }
-  if (!f.quick || f.sub->count("--dims")) o.dims = sample::parse_dims(f.dims);
+  if (!f.quick || f.sub->count("--dims")) o.dims = synthetic::parse_dims(f.dims);
   o.work = f.work;
   if (!f.in_process) {
     o.server_binary = f.server.empty() ? bench::find_serve_binary() : std::filesystem::path(f.server);

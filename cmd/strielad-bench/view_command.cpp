@@ -11,8 +11,8 @@
 
 #include "cli/image_size.h"
 #include "commands.h"
-#include "render/view_bench.h"
-#include "sample/sample_args.h"
+#include "bench/view_bench.h"
+#include "synthetic/sample_args.h"
 #include "suite_output.h"
 
 namespace strielad::bench_cmd {
@@ -58,19 +58,19 @@ std::string describe(const bench::ViewSuiteReport& r) {
 int run(const ViewFlags& f) {
   bench::ViewSuiteOptions o;
   if (f.quick) o = bench::quick_view_options(o);
-  if (!f.quick || given(f, "--dims")) o.dims = sample::parse_dims(f.dims);
+  if (!f.quick || given(f, "--dims")) o.dims = synthetic::parse_dims(f.dims);
   if (!f.quick || given(f, "--brick")) o.brick = f.brick;
   if (!f.quick || given(f, "--repeat")) o.repeat = f.repeat;
   if (!f.quick || given(f, "--cache-mib")) o.cache_mib = f.cache_mib;
   if (!f.quick || given(f, "--size")) std::tie(o.width, o.height) = cli::parse_image_size(f.size);
-  o.variables = sample::parse_variable_list(f.vars);
+  o.variables = synthetic::parse_variable_list(f.vars);
   o.work = f.work;
   o.seed = f.seed;
   o.threads = f.threads;
   o.prefetch = !f.no_prefetch;
   o.max_fragment_mib = f.max_fragment_mib;
   o.fly_in_keyframes = f.keyframes;
-  o.cut_grid = sample::parse_dims(f.cut_grid);
+  o.cut_grid = synthetic::parse_dims(f.cut_grid);
   o.cut_brick = f.cut_brick;
   o.fly_seconds = f.fly_seconds;
   o.fps = f.fps;

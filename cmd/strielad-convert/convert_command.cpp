@@ -4,7 +4,7 @@
 #include <iostream>
 #include <memory>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "cli/progress_bar.h"
 #include "cli/step_range.h"
 #include "commands.h"

@@ -4,7 +4,7 @@
 #include <iostream>
 #include <memory>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "commands.h"
 
 namespace strielad::convert_cmd {

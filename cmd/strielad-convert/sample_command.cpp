@@ -15,10 +15,10 @@
 
 #include "cli/progress_bar.h"
 #include "commands.h"
-#include "sample/sample_args.h"
-#include "sample/sample_dataset.h"
-#include "sample/sample_terrain.h"
-#include "sample/sample_tracks.h"
+#include "synthetic/sample_args.h"
+#include "synthetic/sample_dataset.h"
+#include "synthetic/sample_terrain.h"
+#include "synthetic/sample_tracks.h"
 
 namespace strielad::convert_cmd {
 namespace {
@@ -26,7 +26,7 @@ namespace {
 struct SampleOptions {
   std::string output;
   std::string dims = "1429x1556x150";
-  std::string steps = "4";  // parsed by sample::parse_unsigned: "-1" must not wrap
+  std::string steps = "4";  // parsed by synthetic::parse_unsigned: "-1" must not wrap
   std::string seed = "1";
   std::string vars;  // empty: all variables
   bool single_file = false;
@@ -38,15 +38,15 @@ struct SampleOptions {
 };
 
 int run_sample(const SampleOptions& opt) {
-  sample::SampleSpec spec;
-  spec.dims = sample::parse_dims(opt.dims);
-  spec.steps = static_cast<std::size_t>(sample::parse_unsigned(opt.steps, "--steps"));
-  spec.seed = sample::parse_unsigned(opt.seed, "--seed");
-  if (!opt.vars.empty()) spec.variables = sample::parse_variable_list(opt.vars);
+  synthetic::SampleSpec spec;
+  spec.dims = synthetic::parse_dims(opt.dims);
+  spec.steps = static_cast<std::size_t>(synthetic::parse_unsigned(opt.steps, "--steps"));
+  spec.seed = synthetic::parse_unsigned(opt.seed, "--seed");
+  if (!opt.vars.empty()) spec.variables = synthetic::parse_variable_list(opt.vars);
   spec.file_per_step = !opt.single_file;
   spec.step_seconds = opt.step_seconds;
   spec.deflate = opt.deflate;
-  sample::validate_sample_spec(spec);  // report bad arguments before touching the disk
+  synthetic::validate_sample_spec(spec);  // report bad arguments before touching the disk
 
   const std::uint64_t levels = static_cast<std::uint64_t>(spec.steps) *
                                spec.variables.size() * spec.dims.z;
@@ -54,28 +54,28 @@ int run_sample(const SampleOptions& opt) {
                spec.steps, spec.dims.x, spec.dims.y, spec.dims.z, spec.variables.size(),
                spec.seed, opt.output);
   const auto start = std::chrono::steady_clock::now();
-  sample::SampleResult result;
+  synthetic::SampleResult result;
   {
     cli::ProgressBar bar("sample", levels, "levels");
-    result = sample::write_sample_dataset(spec, opt.output,
+    result = synthetic::write_sample_dataset(spec, opt.output,
                                           [&bar](std::uint64_t, std::uint64_t) { bar.advance(); });
     bar.finish();
   }
-  sample::SampleTracksResult tracks;
+  synthetic::SampleTracksResult tracks;
   if (opt.tracks > 0) {
-    sample::SampleTrackSpec track_spec;
+    synthetic::SampleTrackSpec track_spec;
     track_spec.tracks = opt.tracks;
     track_spec.span_seconds = std::max(1.0, static_cast<double>(spec.steps) * spec.step_seconds);
     track_spec.seed = spec.seed;
     const auto track_path = std::filesystem::path(opt.output) / "sample_tracks.csv";
-    tracks = sample::write_sample_tracks(track_spec, track_path);
+    tracks = synthetic::write_sample_tracks(track_spec, track_path);
     spdlog::info("sample: wrote {} flight tracks ({} reports) to {}", tracks.tracks,
                  tracks.reports, track_path.string());
   }
-  sample::SampleTerrainResult terrain;
+  synthetic::SampleTerrainResult terrain;
   if (opt.terrain > 0) {
     const auto terrain_path = std::filesystem::path(opt.output) / "sample_terrain.nc";
-    terrain = sample::write_sample_terrain({.samples = opt.terrain, .seed = spec.seed}, terrain_path);
+    terrain = synthetic::write_sample_terrain({.samples = opt.terrain, .seed = spec.seed}, terrain_path);
     spdlog::info("sample: wrote a {} x {} rotated-pole DEM (up to {:.0f} m) to {}", terrain.width,
                  terrain.height, terrain.max_height_m, terrain_path.string());
   }

@@ -45,7 +45,7 @@ struct ViewerArgs {
   std::optional<lod::Vec3> sun_fixed_direction;
   bool sun_given = false;  // --sun was on the command line (it overrides the scene)
   bool sun_time_asked = false;  // the scene asks for {"mode": "time"} (not a default)
-  std::string tracks_file;   // flight tracks CSV (geo/flight_tracks.h)
+  std::string tracks_file;   // flight tracks CSV (scenery/flight_tracks.h)
   double track_minutes = 2;  // drawn: the last minutes of each track
   // Terrain (README "Terrain").
   std::string terrain_file;   // DEM: NetCDF or any raster GDAL reads

@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "geo/flight_tracks.h"
+#include "scenery/flight_tracks.h"
 #include "scene/scene.h"
 #include "serve/server.h"
 #include "view/advection_worker.h"

@@ -14,8 +14,8 @@
 #include "advect/integrators.h"
 #include "bench/latency_stats.h"
 #include "bench/machine_info.h"
-#include "sample/sample_atmosphere.h"
-#include "sample/sample_grid.h"
+#include "synthetic/sample_atmosphere.h"
+#include "synthetic/sample_grid.h"
 
 namespace strielad::bench {
 namespace {
@@ -67,20 +67,20 @@ double distance_m(const advect::WindGrid& grid, const Vec3& a, const Vec3& b) {
 // sample` writes them) at times 0 and t1 on its lon/lat/stretched-height grid of `dims`.
 // Heights run top to bottom, as in the sample files; WindField takes descending axes.
 advect::WindField generated_wind(Dims3 dims, std::uint64_t seed, double t1) {
-  const sample::SampleGrid grid(dims);
+  const synthetic::SampleGrid grid(dims);
   const std::size_t level = grid.level_size();
   std::array<advect::WindSlice, 2> slices;
   for (int s = 0; s < 2; ++s) {
-    const sample::SampleAtmosphere atmosphere(grid, seed, s == 0 ? 0.0 : t1);
-    const auto fill = [&](sample::SampleVariable variable, std::vector<float>& out) {
+    const synthetic::SampleAtmosphere atmosphere(grid, seed, s == 0 ? 0.0 : t1);
+    const auto fill = [&](synthetic::SampleVariable variable, std::vector<float>& out) {
       out.resize(dims.count());
       for (std::size_t k = 0; k < dims.z; ++k) {
         atmosphere.fill_level(variable, k, std::span<float>(out).subspan(k * level, level));
       }
     };
-    fill(sample::SampleVariable::kUa, slices[s].u);
-    fill(sample::SampleVariable::kVa, slices[s].v);
-    fill(sample::SampleVariable::kWa, slices[s].w);
+    fill(synthetic::SampleVariable::kUa, slices[s].u);
+    fill(synthetic::SampleVariable::kVa, slices[s].v);
+    fill(synthetic::SampleVariable::kWa, slices[s].w);
   }
   advect::WindGrid wind_grid;
   wind_grid.axes = {grid.lon, grid.lat, grid.height};

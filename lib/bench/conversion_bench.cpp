@@ -14,9 +14,10 @@
 #include "bench/page_cache.h"
 #include "bench/process_runner.h"
 #include "bench/stopwatch.h"
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "core/error.h"
 #include "ingest/input_catalog.h"
+#include "ingest/slab_reader.h"
 
 namespace strielad::bench {
 namespace {

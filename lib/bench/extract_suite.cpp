@@ -8,9 +8,9 @@
 
 #include "bench/machine_info.h"
 #include "bench/stopwatch.h"
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "core/error.h"
-#include "sample/sample_variables.h"
+#include "synthetic/sample_variables.h"
 #include "store/store.h"
 
 namespace strielad::bench {
@@ -23,7 +23,7 @@ void check_options(const ExtractSuiteOptions& o) {
     throw make_error(ErrorCode::kInvalidArgument, "--dims {}: every axis needs at least 2 samples",
                      dims_text(o.dims));
   }
-  for (const auto& v : o.variables) sample::sample_variable_from_name(v);
+  for (const auto& v : o.variables) synthetic::sample_variable_from_name(v);
   if (o.repeat < 1) throw make_error(ErrorCode::kInvalidArgument, "--repeat must be at least 1");
   if (o.level_repeat < 1) {
     throw make_error(ErrorCode::kInvalidArgument, "--level-repeat must be at least 1");

@@ -9,7 +9,7 @@
 #include "bench/io_suite.h"
 #include "bench/process_runner.h"
 #include "core/error.h"
-#include "sample/sample_variables.h"
+#include "synthetic/sample_variables.h"
 
 namespace strielad::bench {
 namespace {
@@ -20,7 +20,7 @@ double ratio(double a, double b) { return b > 0 ? a / b : kNaN; }
 
 bool is_cloud_variable(const std::string& name) {
   try {
-    return sample::sample_variable_info(sample::sample_variable_from_name(name)).sparse;
+    return synthetic::sample_variable_info(synthetic::sample_variable_from_name(name)).sparse;
   } catch (const Error&) {
     return false;
   }

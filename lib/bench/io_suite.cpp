@@ -8,7 +8,7 @@
 #include "bench/process_runner.h"
 #include "bench/stopwatch.h"
 #include "core/error.h"
-#include "sample/sample_variables.h"
+#include "synthetic/sample_variables.h"
 #include "store/store.h"
 #include "vdb/level_grid.h"
 
@@ -23,7 +23,7 @@ void check_options(const IoSuiteOptions& o) {
                      dims_text(o.dims));
   }
   if (o.variables.empty()) throw make_error(ErrorCode::kInvalidArgument, "--vars: no variables");
-  for (const auto& v : o.variables) sample::sample_variable_from_name(v);
+  for (const auto& v : o.variables) synthetic::sample_variable_from_name(v);
   if (o.repeat < 1) throw make_error(ErrorCode::kInvalidArgument, "--repeat must be at least 1");
   if (o.reads < 1) throw make_error(ErrorCode::kInvalidArgument, "--reads must be at least 1");
 }

@@ -21,7 +21,7 @@
 #include "bench/sample_input.h"
 #include "bench/store_sizes.h"
 #include "bench/table_writer.h"
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "format/manifest.h"
 #include "grid/axis.h"
 

@@ -5,7 +5,7 @@
 
 #include "bench/cpu_time.h"
 #include "bench/stopwatch.h"
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "core/error.h"
 
 namespace strielad::bench {

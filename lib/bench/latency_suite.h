@@ -22,7 +22,7 @@
 #include "bench/latency_stats.h"
 #include "bench/sample_input.h"
 #include "bench/table_writer.h"
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "grid/axis.h"
 
 namespace strielad::bench {

@@ -8,17 +8,17 @@
 #include <fstream>
 
 #include "bench/stopwatch.h"
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "core/error.h"
 #include "bench/table_writer.h"
-#include "sample/sample_dataset.h"
+#include "synthetic/sample_dataset.h"
 
 namespace strielad::bench {
 namespace {
 
 constexpr const char* kStampName = "bench-input.json";
 
-nlohmann::json stamp_of(const SampleInputSpec& spec, const sample::SampleResult* result) {
+nlohmann::json stamp_of(const SampleInputSpec& spec, const synthetic::SampleResult* result) {
   nlohmann::json j = {{"dims", {spec.dims.x, spec.dims.y, spec.dims.z}},
                       {"steps", spec.steps},
                       {"variables", spec.variables},
@@ -69,7 +69,7 @@ SampleInput ensure_sample_input(const SampleInputSpec& spec, const std::filesyst
                  static_cast<double>(input->bytes) / 1e6);
     return *input;
   }
-  sample::SampleSpec s;
+  synthetic::SampleSpec s;
   s.dims = spec.dims;
   s.steps = spec.steps;
   s.seed = spec.seed;
@@ -82,7 +82,7 @@ SampleInput ensure_sample_input(const SampleInputSpec& spec, const std::filesyst
                spec.dims.x, spec.dims.y, spec.dims.z, spec.steps, fmt::join(spec.variables, ","),
                dir.string());
   const Stopwatch clock;
-  const sample::SampleResult result = sample::write_sample_dataset(s, dir);
+  const synthetic::SampleResult result = synthetic::write_sample_dataset(s, dir);
   SampleInput input;
   input.generate_seconds = clock.seconds();
   for (const auto& f : result.files) {

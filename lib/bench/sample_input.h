@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The benchmark input: a generated sample dataset (lib/sample) of the requested size, one
+// The benchmark input: a generated sample dataset (lib/synthetic) of the requested size, one
 // file per time step, reused from an earlier run when a stamp in its directory says it
 // was made with the same grid, steps, variables and seed.
 #pragma once

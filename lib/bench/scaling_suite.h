@@ -20,7 +20,7 @@
 #include "bench/latency_stats.h"
 #include "bench/node_batch.h"
 #include "bench/table_writer.h"
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "grid/axis.h"
 
 namespace strielad::bench {

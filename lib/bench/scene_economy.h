@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "bench/table_writer.h"
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "grid/axis.h"
 #include "lod/camera.h"
 #include "lod/world_frame.h"

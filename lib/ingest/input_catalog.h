@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -81,47 +80,5 @@ struct InputCatalog {
 // dimension orders other than (time, vertical, lat, lon)).
 InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
                          const ScanOptions& options);
-
-// Reads z-slabs of one variable and time step: samples [z0, z1) x all lat x all lon,
-// x fastest, unpacked (scale_factor/add_offset), with _FillValue, missing_value and
-// samples outside valid_min/valid_max (or valid_range) set to NaN. NaN/Inf in the data
-// throws kInvalidInput naming file, variable, step and sample index unless
-// ScanOptions::nan_as_fill. Safe to call from several threads (netCDF calls are
-// serialized; direct reads run in parallel); keeps files open between calls.
-//
-// With ScanOptions::direct_input, planes of a netCDF-4 variable that HDF5 stores as raw
-// little-endian samples (no filters; contiguous, or chunks of whole planes) are read
-// with O_DIRECT in pieces and converted from there: an input that is read once costs
-// no page-cache work (on a 2-core VM, reading 5.3 GB buffered took 15 s of system
-// time against 0.4 s direct). Anything else, and file systems without O_DIRECT, read
-// through netCDF. The result is the same either way.
-class SlabReader {
- public:
-  SlabReader(const InputCatalog& catalog, const ScanOptions& options);
-  ~SlabReader();
-  SlabReader(const SlabReader&) = delete;
-  SlabReader& operator=(const SlabReader&) = delete;
-
-  void read(std::size_t variable, std::size_t step, std::size_t z0, std::size_t z1,
-            std::span<float> out);
-  void read(std::size_t variable, std::size_t step, std::size_t z0, std::size_t z1,
-            std::span<double> out);
-
-  // Direct reads go in pieces of at most this many bytes: the per-thread aligned buffer
-  // stays small, and each piece is converted while it is still in cache.
-  static constexpr std::size_t kDirectPieceBytes = std::size_t{16} << 20;
-
-  // Input bytes read so far with O_DIRECT (the rest went through netCDF).
-  std::uint64_t direct_bytes() const;
-
- private:
-  template <typename T>
-  void read_any(std::size_t variable, std::size_t step, std::size_t z0, std::size_t z1,
-                std::span<T> out);
-
-  struct Impl;
-  Impl* impl_;
-  bool repeat_first_column_ = false;  // the catalog repeats the first meridian at the end
-};
 
 }  // namespace strielad::ingest

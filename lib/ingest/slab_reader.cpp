@@ -21,6 +21,7 @@
 #include "core/error.h"
 #include "ingest/hdf5_plane_layout.h"
 #include "ingest/input_catalog.h"
+#include "ingest/slab_reader.h"
 #include "ingest/netcdf_call.h"
 #include "ingest/netcdf_file.h"
 #include "ingest/sample_conversion.h"

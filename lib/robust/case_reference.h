@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // What a store converted from a robustness case must hold, computed from the case's
-// input without lib/build: the level-0 values (the source value after CF decoding in the
+// input without lib/convert: the level-0 values (the source value after CF decoding in the
 // store's type, NaN where missing), every node's exact statistics (formats/store.md,
 // "Per-node statistics"), and the sub-sampling of one level into the next
 // (formats/store.md, "Octree") with fallback means in extended precision.
@@ -51,7 +51,7 @@ struct CoarseReference {
 };
 
 // Sub-samples level `fine_level` (its samples as the store holds them) into the next
-// level by the rule of formats/store.md, independently of lib/build.
+// level by the rule of formats/store.md, independently of lib/convert.
 CoarseReference reference_downsample(const OctreeLayout& layout, std::size_t fine_level,
                                      const std::vector<double>& fine, bool is_double);
 

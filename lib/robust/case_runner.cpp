@@ -7,7 +7,7 @@
 #include <functional>
 #include <new>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "core/error.h"
 #include "robust/advect_check.h"
 #include "robust/case_netcdf.h"

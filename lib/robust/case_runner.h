@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Runs one robustness case through every stage: writes its NetCDF input, converts it
-// (lib/build), verifies the store, checks the statistics and coarse levels against the
+// (lib/convert), verifies the store, checks the statistics and coarse levels against the
 // reference, extracts, asks an in-process server, advects. Every stage ends ok, with a
 // clear error, or FAILED (a check failed, kInternal, a foreign exception, bad_alloc);
 // nothing a stage throws escapes. Then compares each outcome with the case's expectation.

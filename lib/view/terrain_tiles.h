@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The terrain's level-of-detail height field (issue 8, "Terrain"): a quadtree of tiles
-// over the part of a DEM (geo/dem_source.h) that overlaps the store's domain (the DEM
+// over the part of a DEM (scenery/dem_source.h) that overlaps the store's domain (the DEM
 // samples whose true longitude/latitude falls inside the store's axis box, through the
 // grid mapping on a mapped grid), each tile kTerrainTileCells x kTerrainTileCells cells
 // of the DEM sampled at its level's stride (the finest level takes every sample), placed
@@ -53,8 +53,8 @@
 #include <thread>
 #include <vector>
 
-#include "geo/dem_source.h"
-#include "geo/drape_image.h"
+#include "scenery/dem_source.h"
+#include "scenery/drape_image.h"
 #include "lod/camera.h"
 #include "lod/world_frame.h"
 

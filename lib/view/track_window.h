@@ -12,7 +12,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "geo/flight_tracks.h"
+#include "scenery/flight_tracks.h"
 #include "lod/world_frame.h"
 
 namespace strielad::view {

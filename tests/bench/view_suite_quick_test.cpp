@@ -6,7 +6,7 @@
 // harness cannot rot between full runs.
 #include <gtest/gtest.h>
 
-#include "render/view_bench.h"
+#include "bench/view_bench.h"
 #include "support/temp_dir.h"
 
 namespace strielad {

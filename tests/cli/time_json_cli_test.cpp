@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "support/netcdf_fixture.h"
 #include "support/temp_dir.h"
 

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "extract/level_extraction.h"
 #include "extract/mesh_metrics.h"
 #include "scene/scene.h"

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "extract/mesh_metrics.h"
 #include "extract/node_extraction.h"
 #include "protocol/mesh_encoding.h"

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "extract/level_extraction.h"
 #include "extract/mesh_metrics.h"
 #include "extract/node_extraction.h"

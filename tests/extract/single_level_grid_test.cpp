@@ -4,7 +4,7 @@
 // least 2 samples along axis 2" as it used to.
 #include <gtest/gtest.h>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "extract/node_extraction.h"
 #include "scene/scene.h"
 #include "store/store.h"

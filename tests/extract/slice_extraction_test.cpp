@@ -11,7 +11,7 @@
 #include <limits>
 #include <map>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "extract/node_extraction.h"
 #include "store/brick_cache.h"
 #include "store/store.h"

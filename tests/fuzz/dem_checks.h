@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // What the DEM fuzz targets do with a DEM that opened: read the whole grid through a
 // strided window of at most 32 x 32 samples, one corner sample, and georeference the
-// corners and the centre, as the terrain does (geo/dem_source.h).
+// corners and the centre, as the terrain does (scenery/dem_source.h).
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cstdlib>
 
-#include "geo/dem_source.h"
+#include "scenery/dem_source.h"
 
 namespace strielad::fuzz {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Fuzzes the GDAL DEM reader (geo/dem_source.h, open_gdal_dem) on the input written to a
+// Fuzzes the GDAL DEM reader (scenery/dem_source.h, open_gdal_dem) on the input written to a
 // file: opening, a strided read of the whole grid and georeferencing must reject with
 // strielad::Error, never crash. Seeds are GeoTIFFs written through GDAL (EPSG:4326 with
 // nodata, a UTM zone with a height unit and scale) and an ESRI ASCII grid; GDAL picks the

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Fuzzes the CF-NetCDF DEM reader (geo/dem_source.h, open_netcdf_dem) on the input
+// Fuzzes the CF-NetCDF DEM reader (scenery/dem_source.h, open_netcdf_dem) on the input
 // written to a file: opening, a strided read of the whole grid and georeferencing must
 // reject with strielad::Error, never crash. Seeds are classic-format (CDF-2) DEMs on
 // lon/lat axes (descending latitude, fill, km) and on a rotated-pole grid mapping;

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-// What every loaded FlightTracks must satisfy (geo/flight_tracks.h); the flight-track
+// What every loaded FlightTracks must satisfy (scenery/flight_tracks.h); the flight-track
 // fuzz targets abort when a reader returns anything else.
 #pragma once
 
 #include <cmath>
 #include <cstdlib>
 
-#include "geo/flight_tracks.h"
+#include "scenery/flight_tracks.h"
 
 namespace strielad::fuzz {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Fuzzes the CSV flight-track reader (geo/flight_tracks.h, load_flight_tracks_csv) on
+// Fuzzes the CSV flight-track reader (scenery/flight_tracks.h, load_flight_tracks_csv) on
 // the input written to a file: it must reject with strielad::Error or return tracks
 // that keep the reader's promises (sorted times, latitudes in range, consistent sizes).
 #include <string>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Fuzzes the CF trajectory reader (geo/flight_tracks.h, load_flight_tracks_netcdf) on
+// Fuzzes the CF trajectory reader (scenery/flight_tracks.h, load_flight_tracks_netcdf) on
 // the input written to a file: it must reject with strielad::Error or return tracks
 // that keep the reader's promises. Seeds are classic-format (CDF-2) files in both CF
 // layouts; netCDF-C parses the container, so this mostly exercises what the reader does

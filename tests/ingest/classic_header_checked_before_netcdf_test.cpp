@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "geo/dem_source.h"
-#include "geo/flight_tracks.h"
+#include "scenery/dem_source.h"
+#include "scenery/flight_tracks.h"
 #include "ingest/classic_layout.h"
 #include "ingest/netcdf_file.h"
 #include "support/expect_error.h"

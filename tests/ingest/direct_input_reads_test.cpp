@@ -11,6 +11,7 @@
 
 #include "core/direct_read_file.h"
 #include "ingest/input_catalog.h"
+#include "ingest/slab_reader.h"
 #include "support/expect_error.h"
 #include "support/netcdf_fixture.h"
 #include "support/temp_dir.h"

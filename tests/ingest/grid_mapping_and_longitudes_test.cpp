@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "geo/grid_projection.h"
 #include "ingest/input_catalog.h"
 #include "store/store.h"

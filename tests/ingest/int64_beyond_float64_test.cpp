@@ -14,6 +14,7 @@
 #include <type_traits>
 
 #include "ingest/input_catalog.h"
+#include "ingest/slab_reader.h"
 #include "support/expect_error.h"
 #include "support/netcdf_fixture.h"
 #include "support/temp_dir.h"

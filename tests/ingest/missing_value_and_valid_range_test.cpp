@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "ingest/input_catalog.h"
+#include "ingest/slab_reader.h"
 #include "support/netcdf_fixture.h"
 #include "support/temp_dir.h"
 

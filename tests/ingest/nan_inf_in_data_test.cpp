@@ -7,6 +7,7 @@
 
 #include "support/expect_error.h"
 #include "ingest/input_catalog.h"
+#include "ingest/slab_reader.h"
 #include "support/netcdf_fixture.h"
 #include "support/temp_dir.h"
 

@@ -9,6 +9,7 @@
 #include "core/checksum.h"
 #include "core/file_io.h"
 #include "ingest/input_catalog.h"
+#include "ingest/slab_reader.h"
 #include "support/netcdf_fixture.h"
 #include "support/temp_dir.h"
 

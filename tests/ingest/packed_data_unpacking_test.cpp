@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "ingest/input_catalog.h"
+#include "ingest/slab_reader.h"
 #include "support/expect_error.h"
 #include "support/netcdf_fixture.h"
 #include "support/temp_dir.h"

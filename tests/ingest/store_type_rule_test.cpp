@@ -5,6 +5,7 @@
 #include <netcdf.h>
 
 #include "ingest/input_catalog.h"
+#include "ingest/slab_reader.h"
 #include "ingest/variable_meta.h"
 #include "support/netcdf_fixture.h"
 #include "support/temp_dir.h"

@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "ingest/input_catalog.h"
+#include "ingest/slab_reader.h"
 #include "support/expect_error.h"
 #include "support/netcdf_fixture.h"
 #include "support/temp_dir.h"

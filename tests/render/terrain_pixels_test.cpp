@@ -12,7 +12,7 @@
 #include <cmath>
 #include <thread>
 
-#include "geo/drape_image.h"
+#include "scenery/drape_image.h"
 #include "render/headless_context.h"
 #include "render/offscreen_target.h"
 #include "render/render_fixture.h"

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <random>
 
-#include "build/level_sampler.h"
+#include "convert/level_sampler.h"
 #include "robust/case_reference.h"
 
 namespace strielad::robust {

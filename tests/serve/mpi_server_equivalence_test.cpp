@@ -22,7 +22,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "client/server_client.h"
 #include "core/error.h"
 #include "protocol/message_codec.h"

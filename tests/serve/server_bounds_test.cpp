@@ -14,7 +14,7 @@
 #include <functional>
 #include <thread>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "client/server_client.h"
 #include "core/error.h"
 #include "format/manifest.h"

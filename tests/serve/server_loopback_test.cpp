@@ -14,7 +14,7 @@
 #include <set>
 #include <thread>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "client/server_client.h"
 #include "core/error.h"
 #include "extract/node_extraction.h"

@@ -6,7 +6,7 @@
 
 #include <fstream>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "core/direct_read_file.h"
 #include "store/store.h"
 #include "support/expect_error.h"

@@ -3,7 +3,7 @@
 // fetched with exactly one read of exactly its chunk.
 #include <gtest/gtest.h>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "store/brick_cache.h"
 #include "store/store.h"
 #include "support/small_dataset.h"

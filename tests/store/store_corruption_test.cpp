@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "support/expect_error.h"
 #include "store/store.h"
 #include "store/store_verifier.h"

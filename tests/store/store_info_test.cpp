@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "core/text_columns.h"
 #include "store/store.h"
 #include "store/store_info.h"

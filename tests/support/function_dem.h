@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "geo/dem_source.h"
+#include "scenery/dem_source.h"
 
 namespace strielad::testing {
 

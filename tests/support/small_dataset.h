@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 
 namespace strielad::testing {
 

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "lod/world_frame.h"
 #include "support/netcdf_fixture.h"
 

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "core/error.h"
 #include "store/store.h"
 #include "support/small_dataset.h"

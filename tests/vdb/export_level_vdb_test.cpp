@@ -7,7 +7,7 @@
 #include <cmath>
 #include <set>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "store/store.h"
 #include "support/small_dataset.h"
 #include "support/temp_dir.h"

@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "geo/grid_projection.h"
 #include "scene/scene.h"
 #include "store/store.h"

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <thread>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "geo/standard_atmosphere.h"
 #include "lod/camera.h"
 #include "store/store.h"

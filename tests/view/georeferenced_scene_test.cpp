@@ -11,9 +11,9 @@
 #include <cmath>
 #include <filesystem>
 
-#include "build/converter.h"
+#include "convert/converter.h"
 #include "extract/node_extraction.h"
-#include "geo/dem_source.h"
+#include "scenery/dem_source.h"
 #include "lod/lod_test_grids.h"
 #include "scene/scene.h"
 #include "store/store.h"

@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: Apache-2.0
+// Turns the samples of one node into an index entry and (for data bricks) a compressed
+// chunk: decides the brick kind and, at level 0, computes the exact statistics.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "convert/level_sampler.h"
+#include "format/manifest.h"
+#include "format/step_file_format.h"
+#include "octree/octree_layout.h"
+
+namespace strielad::build {
+
+struct EncodedBrick {
+  format::IndexEntry entry;          // chunk_offset is filled in by the step writer
+  std::vector<std::byte> chunk;      // empty unless entry.kind == kData
+};
+
+// Statistics of a node: min/max over the covered samples, valid count over owned ones.
+struct NodeStats {
+  double min = std::numeric_limits<double>::quiet_NaN();
+  double max = std::numeric_limits<double>::quiet_NaN();
+  std::uint64_t valid_count = 0;
+  void merge(const NodeStats& other);
+};
+
+// For a variable with fpzip on, which coder a data brick tries depends on its share of
+// zero samples (either sign): below the first, fpzip alone when it at least halves the
+// brick; below the second, fpzip and the Blosc chain, the smaller kept; from the second
+// up, the Blosc chain alone.
+inline constexpr double kFpzipAloneBelowZeroShare = 0.5;
+inline constexpr double kFpzipTriedBelowZeroShare = 0.8;
+
+// Encodes the brick `box` (inclusive, level-grid indices) held in `planes`. When
+// `owned` is given (level 0) the statistics are computed from the samples: min/max over
+// `box`, valid_count over `owned`; otherwise (coarse levels) `stats`, the merged
+// statistics of the node's children, with min/max widened to the brick's own valid
+// samples.
+template <typename T>
+EncodedBrick encode_brick(const PlaneBlock<T>& planes, const IndexBox& box,
+                          const IndexBox* owned, NodeStats stats, const format::CodecSpec& codec);
+
+extern template EncodedBrick encode_brick<float>(const PlaneBlock<float>&, const IndexBox&,
+                                                 const IndexBox*, NodeStats,
+                                                 const format::CodecSpec&);
+extern template EncodedBrick encode_brick<double>(const PlaneBlock<double>&, const IndexBox&,
+                                                  const IndexBox*, NodeStats,
+                                                  const format::CodecSpec&);
+
+}  // namespace strielad::build

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "synthetic/sample_dataset.h"
+
+#include <spdlog/spdlog.h>
+#include <tbb/parallel_pipeline.h>
+
+#include <array>
+#include <chrono>
+#include <vector>
+
+#include "core/error.h"
+#include "synthetic/sample_atmosphere.h"
+#include "synthetic/sample_grid.h"
+#include "synthetic/sample_writer.h"
+
+namespace strielad::synthetic {
+namespace {
+
+// Levels in flight: one being written while the others are computed.
+constexpr std::size_t kLevelsInFlight = 3;
+
+void prepare_directory(const std::filesystem::path& dir) {
+  if (dir.empty()) throw make_error(ErrorCode::kInvalidArgument, "sample: empty output directory");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) {
+    throw make_error(ErrorCode::kIo, "{}: cannot create output directory: {}", dir.string(),
+                     ec.message());
+  }
+  if (!std::filesystem::is_directory(dir, ec)) {
+    throw make_error(ErrorCode::kIo, "{}: output path exists and is not a directory",
+                     dir.string());
+  }
+}
+
+struct LevelJob {
+  std::size_t variable_index = 0;
+  std::size_t level = 0;
+  std::vector<float>* buffer = nullptr;
+};
+
+// Computes and writes every (variable, level) of one step, overlapping the serial
+// netCDF writes with the parallel computation of the following levels.
+void write_step(const SampleAtmosphere& atmosphere, std::span<const SampleVariable> variables,
+                std::size_t nz, SampleFileWriter& writer, std::size_t t_in_file,
+                const std::function<void()>& level_done,
+                std::array<std::vector<float>, kLevelsInFlight>& buffers) {
+  std::size_t next = 0;
+  const std::size_t total = variables.size() * nz;
+  tbb::parallel_pipeline(
+      kLevelsInFlight,
+      tbb::make_filter<void, LevelJob>(
+          tbb::filter_mode::serial_in_order,
+          [&](tbb::flow_control& fc) {
+            if (next == total) {
+              fc.stop();
+              return LevelJob{};
+            }
+            // At most kLevelsInFlight jobs live and the last filter is serial in order,
+            // so job n reuses the buffer of job n - kLevelsInFlight, which is written.
+            LevelJob job{next / nz, next % nz, &buffers[next % kLevelsInFlight]};
+            ++next;
+            return job;
+          }) &
+          tbb::make_filter<LevelJob, LevelJob>(tbb::filter_mode::parallel,
+                                               [&](LevelJob job) {
+                                                 atmosphere.fill_level(
+                                                     variables[job.variable_index], job.level,
+                                                     *job.buffer);
+                                                 return job;
+                                               }) &
+          tbb::make_filter<LevelJob, void>(tbb::filter_mode::serial_in_order,
+                                           [&](LevelJob job) {
+                                             writer.write_level(job.variable_index, t_in_file,
+                                                                job.level, *job.buffer);
+                                             level_done();
+                                           }));
+}
+
+}  // namespace
+
+SampleResult write_sample_dataset(const SampleSpec& spec, const std::filesystem::path& out_dir,
+                                  SampleProgress progress) {
+  const std::vector<SampleVariable> variables = validate_sample_spec(spec);
+  prepare_directory(out_dir);
+
+  const SampleGrid grid(spec.dims);
+  const std::vector<std::string> names = sample_file_names(spec);
+  const std::size_t steps_per_file = spec.file_per_step ? 1 : spec.steps;
+  const std::uint64_t total = static_cast<std::uint64_t>(spec.steps) * variables.size() *
+                              spec.dims.z;
+  std::uint64_t done = 0;
+  const std::function<void()> level_done = [&] {
+    ++done;
+    if (progress) progress(done, total);
+  };
+
+  std::array<std::vector<float>, kLevelsInFlight> buffers;
+  for (auto& b : buffers) b.resize(grid.level_size());
+
+  SampleResult result;
+  for (std::size_t f = 0; f < names.size(); ++f) {
+    const std::size_t first_step = f * steps_per_file;
+    SampleFileLayout layout;
+    layout.variables = variables;
+    layout.seed = spec.seed;
+    layout.deflate = spec.deflate;
+    for (std::size_t s = 0; s < steps_per_file; ++s) {
+      layout.times.push_back(static_cast<double>(first_step + s) * spec.step_seconds);
+    }
+    const std::filesystem::path path = out_dir / names[f];
+    const auto start = std::chrono::steady_clock::now();
+    SampleFileWriter writer(path, grid, layout);
+    for (std::size_t s = 0; s < steps_per_file; ++s) {
+      const SampleAtmosphere atmosphere(grid, spec.seed, layout.times[s]);
+      write_step(atmosphere, variables, spec.dims.z, writer, s, level_done, buffers);
+    }
+    const auto written = std::chrono::steady_clock::now();
+    const std::uint64_t bytes = writer.commit();
+    const auto committed = std::chrono::steady_clock::now();
+    spdlog::debug("sample: {}: {} bytes, computed and written in {:.2f} s, committed in {:.2f} s",
+                  path.string(), bytes,
+                  std::chrono::duration<double>(written - start).count(),
+                  std::chrono::duration<double>(committed - written).count());
+    result.files.push_back(SampleFile{path, bytes});
+    result.bytes += bytes;
+  }
+  return result;
+}
+
+}  // namespace strielad::synthetic

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: Apache-2.0
+// The sample-data generator: writes a deterministic CF-NetCDF-4 dataset shaped like the
+// SciVis 2017 ICON-LEM output (see /work/shared/docs/data.md) at any size up to the
+// full 1429 x 1556 x 150 grid. Levels are computed in parallel (oneTBB) and written one
+// at a time while the next ones are computed; memory stays bounded by a few levels.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+
+#include "synthetic/sample_spec.h"
+
+namespace strielad::synthetic {
+
+// Called after each level written, from one thread at a time (not necessarily the
+// caller's): done and total count (variable, step, level) triples.
+using SampleProgress = std::function<void(std::uint64_t done, std::uint64_t total)>;
+
+// Validates `spec` (kInvalidArgument), creates `out_dir` if missing (kIo when it cannot
+// be created or is not a directory) and writes sample_t000.nc ... (file_per_step) or
+// sample.nc, each atomically. Existing files of those names are replaced.
+SampleResult write_sample_dataset(const SampleSpec& spec, const std::filesystem::path& out_dir,
+                                  SampleProgress progress = {});
+
+}  // namespace strielad::synthetic
