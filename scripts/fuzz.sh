@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Sanitizer fuzzing (README "Fuzzing"): builds every fuzz target (tests/fuzz/*_fuzz.cpp)
+# Sanitizer fuzzing (docs/development.md): builds every fuzz target (tests/fuzz/*_fuzz.cpp)
 # with clang, libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer into
 # ./build-fuzz (STRIELAD_FUZZ_ONLY), replays every file under tests/fuzz/corpus/<target>/
 # and tests/fuzz/regressions/<target>/, then fuzzes each target for a bounded time from

@@ -104,8 +104,8 @@ int run_threaded(const serve::ServerConfig& config, bool json) {
   return 0;
 }
 
-// Under mpirun or srun with several ranks (README "Running strielad-serve under MPI and
-// Slurm"): rank 0 runs the server, ranks 1..N-1 extract its nodes. The thread that
+// Under mpirun or srun with several ranks (docs/cluster.md): rank 0
+// runs the server, ranks 1..N-1 extract its nodes. The thread that
 // starts MPI makes every MPI call.
 int run_serve_mpi(serve::ServerConfig config, bool json) {
   serve::MpiRuntime mpi;

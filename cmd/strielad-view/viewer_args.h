@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The flags of strielad-view (README "Viewing a store").
+// The flags of strielad-view (docs/view.md).
 #pragma once
 
 #include <cstdint>
@@ -30,7 +30,7 @@ struct ViewerArgs {
   std::string size = "1280x720";
   unsigned threads = 0;
   double cache_mib = 1024;
-  // Wind advection between steps (README "Advection").
+  // Wind advection between steps (docs/advection.md).
   bool advect = false;            // start with meshes moving with the wind
   std::string wind = "ua,va,wa";  // the wind components U,V,W
   std::string wind_store;         // where to read the wind; default: STORE
@@ -47,7 +47,7 @@ struct ViewerArgs {
   bool sun_time_asked = false;  // the scene asks for {"mode": "time"} (not a default)
   std::string tracks_file;   // flight tracks CSV (scenery/flight_tracks.h)
   double track_minutes = 2;  // drawn: the last minutes of each track
-  // Terrain (README "Terrain").
+  // Terrain (docs/terrain-and-tracks.md).
   std::string terrain_file;   // DEM: NetCDF or any raster GDAL reads
   std::string terrain_var;    // NetCDF variable (default: found by standard_name / name)
   std::string terrain_image;  // georeferenced drape image

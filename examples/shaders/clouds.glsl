@@ -1,6 +1,6 @@
 // Clouds in the sub-volumes' own colours (the default shader of strielad-view).
-// Every sub-volume is drawn in its palette colour, subvolume_color(id) (README
-// "Sub-volume colours"): the first sub-volume of the scene white (cloud water in the
+// Every sub-volume is drawn in its palette colour, subvolume_color(id) (docs/view.md,
+// "User shaders"): the first sub-volume of the scene white (cloud water in the
 // default scene), the next sky blue, orange, bluish green... so no two look alike.
 // Surfaces facing the sun are bright, those turned away are darker, as in the paper's
 // cloud figures. Opacity grows with the distance a ray travels inside the sub-volume

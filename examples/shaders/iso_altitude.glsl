@@ -1,5 +1,5 @@
 // Iso-altitude lines: every sub-volume in its palette colour (subvolume_color(id),
-// README "Sub-volume colours") with dark contour lines every 1000 m of height on its
+// docs/view.md "User shaders") with dark contour lines every 1000 m of height on its
 // surface, one pixel wide whatever the zoom (fwidth). Lines are drawn more opaque than the
 // surface between them.
 

@@ -16,7 +16,7 @@ constexpr double kFirstNodeTargetS = 0.030;
 constexpr double kFullCutTargetS = 1.5;
 // What the server holds besides its brick cache while 32 clients read promptly: code,
 // the open stores' indexes, per-client queues and send buffers, per-worker scratch
-// (README "strielad-serve", "Memory").
+// (docs/serve.md, "Cache").
 constexpr std::uint64_t kDocumentedOverheadBytes = 256ull << 20;
 
 double median_of(const std::vector<CutLatency>& rounds, double CutLatency::*field) {

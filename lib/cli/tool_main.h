@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The shared entry point of every strielad tool: parses flags with CLI11, configures
 // spdlog, runs the chosen command and turns a strielad::Error into one line on stderr
-// and the exit status of its ErrorCode (README, "Exit status").
+// and the exit status of its ErrorCode (README, "Errors and exit status").
 #pragma once
 
 #include <CLI/CLI.hpp>

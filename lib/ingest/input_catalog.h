@@ -2,7 +2,7 @@
 // Scans CF-NetCDF input files (classic and NetCDF-4, groups included) into one catalog:
 // the common rectilinear grid (lon, lat, vertical axes, kept exactly as stored), the
 // merged time axis across files, and where every (variable, time step) lives.
-// See README "Input data" for the CF conventions honoured.
+// See docs/input-data.md for the CF conventions honoured.
 #pragma once
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The GLSL of the A-buffer renderer (render/volume_renderer.h): the built-in parts of
-// its programs. The user's colour and transparency functions (README "User shaders")
-// are appended to the geometry pass's fragment stage and to the resolve stage.
+// its programs. The user's colour and transparency functions (docs/view.md, "User
+// shaders") are appended to the geometry pass's fragment stage and to the resolve stage.
 #pragma once
 
 #include <cstdint>

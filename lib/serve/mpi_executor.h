@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Rank 0 of strielad-serve under MPI (README "Running strielad-serve under MPI and
-// Slurm"): the Server speaks to the clients and schedules their nodes as always; its
+// Rank 0 of strielad-serve under MPI (docs/cluster.md): the Server
+// speaks to the clients and schedules their nodes as always; its
 // NodeExecutor (MpiNodeExecutor) ships each node to a worker rank (lib/serve/
 // mpi_worker.h) and waits for the encoded frame. The thread that made the MpiRuntime
 // makes every MPI call: it runs MpiMaster::communicate_while while the server runs on

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// The messages between the ranks of strielad-serve under MPI (README "Running
-// strielad-serve under MPI and Slurm"). Every message is a byte buffer on
-// MPI_COMM_WORLD whose MPI tag names its type; fields are little-endian (core/byte_io.h).
-// No MPI here: lib/serve/mpi_runtime.h moves the bytes.
+// The messages between the ranks of strielad-serve under MPI (docs/cluster.md). Every
+// message is a byte buffer on MPI_COMM_WORLD whose MPI tag names its type; fields are
+// little-endian (core/byte_io.h). No MPI here: lib/serve/mpi_runtime.h moves the bytes.
 //
 //   tag      direction        payload
 //   kReady   worker -> 0      WorkerReady, once, first

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// A worker rank of strielad-serve under MPI (ranks 1..N-1; README "Running
-// strielad-serve under MPI and Slurm"). It opens the stores itself, by name under the
-// same root as rank 0 (the root must be on a file system every node shares), keeps its
-// own brick cache, and runs the nodes rank 0 sends it (lib/serve/mpi_messages.h):
+// A worker rank of strielad-serve under MPI (ranks 1..N-1; docs/cluster.md). It opens
+// the stores itself, by name under the same root as rank 0 (the root must be on a file
+// system every node shares), keeps its own brick cache, and runs the nodes rank 0 sends
+// it (lib/serve/mpi_messages.h):
 //
 //   * the MPI thread (the caller) receives tasks, cancels and the stop, and sends replies;
 //   * `threads` executor threads run serve::run_node_task / prefetch_node_task, extract

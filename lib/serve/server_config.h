@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Everything strielad-serve can be told (README "strielad-serve"; formats/protocol.md).
+// Everything strielad-serve can be told (docs/serve.md; formats/protocol.md).
 #pragma once
 
 #include <chrono>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The vertical exaggeration strielad-view starts with when none is given (README
-// "Vertical exaggeration"): it follows the domain's extents, so that the default view
+// The vertical exaggeration strielad-view starts with when none is given (docs/view.md,
+// "Defaults for any domain"): it follows the domain's extents, so that the default view
 // shows depth whatever the domain. The exaggerated depth is kExaggeratedDepthShare of
 // the domain's horizontal size (the geometric mean of its width and length):
 //

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The colours sub-volumes get by default (README "Sub-volume colours"): the n-th
+// The colours sub-volumes get by default (docs/view.md "User shaders"): the n-th
 // sub-volume of the scene (its slot, view/node_geometry.h) gets the n-th colour of a
 // qualitative palette of kMaxViewSubVolumes = 32 colours, so no two sub-volumes the viewer
 // shows share a colour. The built-in shader (examples/shaders/clouds.glsl) and the

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// What strielad-view chose by itself, logged at start (README "Defaults"): the scene
-// when no --scene is given (its canonical JSON, formats/scene.md, so that it can be
-// saved, edited and given back with --scene), the vertical exaggeration and the rule
-// that gave it, and how the sun is placed.
+// What strielad-view chose by itself, logged at start (docs/view.md, "Defaults for any
+// domain"): the scene when no --scene is given (its canonical JSON, formats/scene.md, so
+// that it can be saved, edited and given back with --scene), the vertical exaggeration
+// and the rule that gave it, and how the sun is placed.
 #pragma once
 
 #include <optional>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// What the A-buffer does at its memory bounds (README "A-buffer limits"): a pixel with
+// What the A-buffer does at its memory bounds (docs/view.md "The A-buffer"): a pixel with
 // more than K = 32 fragments keeps the nearest 32, so what is lost lies behind what is
 // kept; a frame that overflows a pool at its bound is drawn again with a depth limit,
 // so that the fragments dropped are the farthest, and counted. Both are measured here on nested sphere shells and on two

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// strielad-serve's bounds (README "Limits and threat model"): the handshake has one
+// strielad-serve's bounds (docs/security.md): the handshake has one
 // deadline however its bytes trickle in; connections in the handshake have their own
 // pool and never take an authenticated client's slot; a client that does not read makes
 // the server stop reading it instead of queueing its replies without bound; generation 0
