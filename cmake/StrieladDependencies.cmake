@@ -49,13 +49,6 @@ find_package(VTK 9.1 REQUIRED COMPONENTS
   FiltersGeometry       # vtkDataSetSurfaceFilter
   IOXML)                # vtkXMLPolyDataWriter/Reader
 
-function(strielad_warnings target)
-  target_compile_options(${target} PRIVATE -Wall -Wextra)
-  if(STRIELAD_WERROR)
-    target_compile_options(${target} PRIVATE -Werror)
-  endif()
-endfunction()
-
 # The viewer (lib/render, cmd/strielad-view): OpenGL through libepoxy, contexts through
 # EGL (headless) and GLFW (windows), PNG through stb, the panel through Dear ImGui 1.86
 # (a static library with its GLFW and OpenGL 3 backends).

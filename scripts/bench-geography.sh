@@ -8,11 +8,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 view=build/cmd/strielad-view/strielad-view
 convert=build/cmd/strielad-convert/strielad-convert
+sample="$(dirname "$convert")/../strielad-sample/strielad-sample"
 cam=examples/scenes/paper-figure-camera.json
 out=${OUT:-/tmp/strielad-bench-geography}
 mkdir -p "$out"
 tracks="$out/tracks/sample_tracks.csv"
-[[ -s "$tracks" ]] || "$convert" sample -o "$out/tracks" --dims 8x8x4 --steps 4 --vars ta --tracks 27000 -q
+[[ -s "$tracks" ]] || "$sample" -o "$out/tracks" --dims 8x8x4 --steps 4 --vars ta --tracks 27000 -q
 : > "$out/frames.jsonl"
 for round in 1 2 3; do
   for config in clouds terrain tracks terrain+tracks figure; do

@@ -9,12 +9,13 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 # The three end-user tools only (the viewer for the figure command in the README), not
 # the tests and the benchmarks: scripts/test.sh builds everything.
-scripts/build.sh strielad-convert strielad-serve strielad-view
+scripts/build.sh strielad-sample strielad-convert strielad-serve strielad-view
 convert=build/cmd/strielad-convert/strielad-convert
+sample=build/cmd/strielad-sample/strielad-sample
 dims=${DIMS:-286x312x60}
 out=${OUT:-sample-data}
 rm -rf "$out/store"
-"$convert" sample -o "$out/netcdf" --dims "$dims" --steps 4 --terrain 1024 --tracks 3000
+"$sample" -o "$out/netcdf" --dims "$dims" --steps 4 --terrain 1024 --tracks 3000
 # The DEM is not an input of the conversion: next to the store, not among the .nc inputs.
 mv "$out/netcdf/sample_terrain.nc" "$out/sample_terrain.nc"
 "$convert" "$out"/netcdf/*.nc -o "$out/store"

@@ -8,7 +8,6 @@
 namespace strielad::convert_cmd {
 
 void register_convert(CLI::App& app, cli::Action& action);     // INPUT... -o STORE
-void register_sample(CLI::App& app, cli::Action& action);      // sample -o DIR
 void register_info(CLI::App& app, cli::Action& action);        // info STORE [--json]
 void register_verify(CLI::App& app, cli::Action& action);      // verify STORE
 void register_finalize(CLI::App& app, cli::Action& action);    // finalize STORE

@@ -9,7 +9,6 @@ int main(int argc, char** argv) {
       "Convert CF-NetCDF output into a STRIELAD sparse-brick octree store, and inspect stores",
       [](CLI::App& app, cli::Action& action) {
         convert_cmd::register_convert(app, action);
-        convert_cmd::register_sample(app, action);
         convert_cmd::register_info(app, action);
         convert_cmd::register_verify(app, action);
         convert_cmd::register_finalize(app, action);

@@ -18,7 +18,7 @@
 #include "core/direct_read_file.h"
 #include "core/error.h"
 #include "store/store.h"
-#include "vdb/delayed_region_reader.h"
+#include "peers/delayed_region_reader.h"
 
 namespace strielad::bench {
 namespace {
@@ -124,7 +124,7 @@ ReadSet vdb_pass(const BrickReadOptions& o, const Store& store,
                  const std::vector<ReadSample>& samples, DiskByteMethod method) {
   std::vector<std::string> grids;
   for (const auto& v : store.manifest().variables) grids.push_back(v.name);
-  vdb::DelayedRegionReader reader(o.vdb_files, grids);
+  peers::DelayedRegionReader reader(o.vdb_files, grids);
   std::vector<EvictableFile> files;
   for (const auto& f : o.vdb_files) files.emplace_back(f);
   DiskMeter meter(method, o.vdb_files.front());

@@ -4,7 +4,7 @@
 // every read (cold) or after a warm-up pass (warm), the bytes each read fetched from disk
 // (/proc/self/io read_bytes, or mincore residency where that counter does not move), and
 // the same regions read from a chunked NetCDF-4 file with nc_get_vara_float and through
-// OpenVDB's delayed loading of a level-0 .vdb (vdb/delayed_region_reader.h).
+// OpenVDB's delayed loading of a level-0 .vdb (peers/delayed_region_reader.h).
 // The store's index sections are loaded before timing starts (a reader keeps them), so a
 // cold read costs exactly the chunk; `first_brick` measures open + index + one brick.
 #pragma once

@@ -42,9 +42,9 @@ int run_tool(const ToolSpec& spec, int argc, char** argv) {
                                            : spdlog::level::info);
   spdlog::set_default_logger(logger);
 
-  if (!action) {
+  if (!action) {  // neither inputs nor a subcommand: the help, and a usage error
     std::cerr << app.help();
-    return 2;
+    return exit_status_for(ErrorCode::kInvalidArgument);
   }
   try {
     return action();

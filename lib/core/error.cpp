@@ -34,7 +34,7 @@ int exit_status_for(ErrorCode code) noexcept {
     case ErrorCode::kCancelled: return 9;
     case ErrorCode::kInternal: return 70;
   }
-  return 1;
+  return 70;  // not an ErrorCode: a bug, as kInternal
 }
 
 Error::Error(ErrorCode code, std::string message)

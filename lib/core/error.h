@@ -31,6 +31,10 @@ std::string_view error_code_name(ErrorCode code) noexcept;
 // Process exit status a tool uses for an error of this code (documented in README).
 int exit_status_for(ErrorCode code) noexcept;
 
+// The one exit status that is no ErrorCode's: the work ran to the end, and the checks it
+// runs found deviations (strielad-bench robustness, strielad-bench report).
+inline constexpr int kExitStatusChecksFailed = 1;
+
 class Error : public std::runtime_error {
  public:
   Error(ErrorCode code, std::string message);

@@ -108,7 +108,7 @@ int Worker::run() {
     spdlog::error("MPI rank {} on {}: {}", runtime_.rank(), runtime_.host(), error_message_);
     wait_for_stop();
     finish();
-    return 1;
+    return exit_status_for(*error_);
   }
   spdlog::debug("MPI rank {} on {}: {} threads, cache {} MiB", runtime_.rank(), runtime_.host(),
                 threads_, cache_.stats().budget >> 20);

@@ -118,7 +118,7 @@ SampleFileWriter::SampleFileWriter(std::filesystem::path path, const SampleGrid&
     put_text(ncid_, NC_GLOBAL, "Conventions", "CF-1.8", ctx);
     put_text(ncid_, NC_GLOBAL, "title",
              "STRIELAD synthetic sample of ICON-LEM-like output over Germany", ctx);
-    put_text(ncid_, NC_GLOBAL, "source", "strielad-convert sample", ctx);
+    put_text(ncid_, NC_GLOBAL, "source", "strielad-sample", ctx);
     put_text(ncid_, NC_GLOBAL, "comment",
              "Deterministic synthetic fields (standard atmosphere, jet, cyclone, fractal "
              "clouds along frontal bands); not model output.",

@@ -5,6 +5,7 @@
 # Usage: convert_cli_errors_test.sh STRIELAD_CONVERT WORK_DIR
 set -uo pipefail
 convert=$1
+sample="$(dirname "$convert")/../strielad-sample/strielad-sample"
 work=$2
 rm -rf "$work" && mkdir -p "$work"
 
@@ -13,7 +14,7 @@ source "$(dirname "$0")/../support/expect_cli_error.sh"
 # expect STATUS "SUBSTRING" -- ARGS...
 expect() { expect_cli_error "$convert" "$work" "$@"; }
 
-"$convert" sample -o "$work/data" --dims 12x10x5 --steps 2 --vars clw,ta -q
+"$sample" -o "$work/data" --dims 12x10x5 --steps 2 --vars clw,ta -q
 "$convert" "$work"/data/*.nc -o "$work/store" --brick 4 -q
 
 expect 3 "no-such-file.nc" -- "$work/no-such-file.nc" -o "$work/s1"

@@ -8,6 +8,7 @@
 # found next to strielad-convert in the build tree).
 set -uo pipefail
 convert=$1
+sample="$(dirname "$convert")/../strielad-sample/strielad-sample"
 work=$2
 serve="$(dirname "$convert")/../strielad-serve/strielad-serve"
 here="$(dirname "$0")"
@@ -16,7 +17,7 @@ rm -rf "$work" && mkdir -p "$work"
 # shellcheck source=../support/expect_cli_error.sh
 source "$here/../support/expect_cli_error.sh"
 
-"$convert" sample -o "$work/data" --dims 12x10x5 --steps 1 --vars clw,ta -q
+"$sample" -o "$work/data" --dims 12x10x5 --steps 1 --vars clw,ta -q
 "$convert" "$work"/data/*.nc -o "$work/store" --brick 4 --fpzip all -q
 cp -r "$work/store" "$work/forged"
 forged=$(python3 "$here/../support/forge_fpzip_chunk.py" "$work/forged" \

@@ -6,6 +6,7 @@
 # next to strielad-convert in the build tree).
 set -uo pipefail
 convert=$1
+sample="$(dirname "$convert")/../strielad-sample/strielad-sample"
 work=$2
 serve="$(dirname "$convert")/../strielad-serve/strielad-serve"
 rm -rf "$work" && mkdir -p "$work"
@@ -15,7 +16,7 @@ source "$(dirname "$0")/../support/expect_cli_error.sh"
 # expect STATUS "SUBSTRING" -- ARGS...
 expect() { expect_cli_error "$serve" "$work" "$@"; }
 
-"$convert" sample -o "$work/data" --dims 12x10x5 --steps 1 --vars clw,ta -q
+"$sample" -o "$work/data" --dims 12x10x5 --steps 1 --vars clw,ta -q
 mkdir -p "$work/root"
 "$convert" "$work"/data/*.nc -o "$work/root/store" --brick 4 -q
 echo '{"subvolumes": [{"id": 1, "limits": [{"var": "clw", "min": 1e-6}]}]}' > "$work/scene.json"

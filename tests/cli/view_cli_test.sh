@@ -8,6 +8,7 @@
 # strielad-convert in the build tree).
 set -uo pipefail
 convert=$1
+sample="$(dirname "$convert")/../strielad-sample/strielad-sample"
 work=$2
 view="$(dirname "$convert")/../strielad-view/strielad-view"
 rm -rf "$work" && mkdir -p "$work"
@@ -19,7 +20,7 @@ expect() { expect_cli_error "$view" "$work" "$@"; }
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 is_png() { [[ -s "$1" ]] && [[ "$(head -c 4 "$1" | od -An -c | tr -d ' ')" == "211PNG" ]]; }
 
-"$convert" sample -o "$work/data" --dims 40x36x12 --steps 2 --vars clw,cli,qr,ta,ua,va,wa -q
+"$sample" -o "$work/data" --dims 40x36x12 --steps 2 --vars clw,cli,qr,ta,ua,va,wa -q
 "$convert" "$work"/data/*.nc -o "$work/store" --brick 8 -q
 echo '{"subvolumes": [{"id": 1, "limits": [{"var": "nope", "min": 1e-6}]}]}' > "$work/unknown-var.json"
 printf 'vec4 color(int id, float attributes[MAX_ATTRIBUTES], vec3 normal, vec3 sun,\n' > "$work/bad.glsl"
@@ -185,7 +186,7 @@ kill -TERM "$serve_pid" 2>/dev/null; wait "$serve_pid" 2>/dev/null
 
 # A scene of format version 2 carries slices, the terrain, a fixed sun and flight tracks
 # (paths relative to the scene file): one command renders all of it.
-"$convert" sample -o "$work/geo" --dims 8x8x4 --steps 1 --vars ta --terrain 64 -q
+"$sample" -o "$work/geo" --dims 8x8x4 --steps 1 --vars ta --terrain 64 -q
 mkdir -p "$work/scenes"
 cat > "$work/scenes/figure.json" <<'JSON'
 {"format_version": 2,

@@ -20,6 +20,7 @@ source "$repo/tests/support/slurm_cluster.sh"
 
 (($# == 2)) || fail "usage: $0 STRIELAD_CONVERT WORK_DIR"
 exe=$(realpath -- "$1")
+sample="$(dirname "$exe")/../strielad-sample/strielad-sample"
 [[ -x $exe ]] || fail "strielad-convert '$1' is not executable"
 [[ -f $submit ]] || fail "$submit is missing"
 require_slurm_cluster
@@ -27,8 +28,8 @@ slurm_test_logs=('logs/*/*')
 start_slurm_cluster "$2"
 
 # ---------------------------------------------------------------- data
-"$exe" sample -o "$scratch/in" --dims 40x30x12 --steps 6 >"$scratch/sample.log" 2>&1 ||
-  { cat "$scratch/sample.log"; fail "strielad-convert sample failed"; }
+"$sample" -o "$scratch/in" --dims 40x30x12 --steps 6 >"$scratch/sample.log" 2>&1 ||
+  { cat "$scratch/sample.log"; fail "strielad-sample failed"; }
 inputs=("$scratch"/in/sample_t00{0..5}.nc)
 for f in "${inputs[@]}"; do [[ -f $f ]] || fail "sample did not write $f"; done
 

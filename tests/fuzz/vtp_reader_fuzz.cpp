@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Fuzzes the .vtp reader (export/vtp_reader.h, read_vtp through VTK's XML PolyData reader)
+// Fuzzes the .vtp reader (readback/vtp_reader.h, read_vtp through VTK's XML PolyData reader)
 // on the input written to a file: it must reject with strielad::Error or return contents
 // whose triangles index its points and whose arrays hold whole tuples. Seeds: files
 // written by write_vtp (zlib-compressed appended binary, float64 and float32 points) and
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "export/vtp_reader.h"
+#include "readback/vtp_reader.h"
 #include "export/vtp_writer.h"
 #include "fuzz/fuzz_files.h"
 #include "fuzz/fuzz_target.h"

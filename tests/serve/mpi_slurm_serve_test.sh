@@ -25,6 +25,7 @@ source "$repo/tests/support/slurm_cluster.sh"
 
 (($# == 2)) || fail "usage: $0 STRIELAD_CONVERT WORK_DIR"
 exe=$(realpath -- "$1")
+sample="$(dirname "$exe")/../strielad-sample/strielad-sample"
 [[ -x $exe ]] || fail "strielad-convert '$1' is not executable"
 serve=${STRIELAD_SERVE:-$(dirname "$exe")/../strielad-serve/strielad-serve}
 [[ -x $serve ]] || fail "strielad-serve '$serve' is not executable (set STRIELAD_SERVE)"
@@ -37,8 +38,8 @@ slurm_test_logs=('serve-*.out')
 start_slurm_cluster "$2"
 
 # ---------------------------------------------------------------- data
-"$exe" sample -o "$scratch/in" --dims 40x30x12 --steps 2 --vars clw,ta >"$scratch/sample.log" 2>&1 ||
-  { cat "$scratch/sample.log"; fail "strielad-convert sample failed"; }
+"$sample" -o "$scratch/in" --dims 40x30x12 --steps 2 --vars clw,ta >"$scratch/sample.log" 2>&1 ||
+  { cat "$scratch/sample.log"; fail "strielad-sample failed"; }
 mkdir -p "$scratch/root"
 "$exe" "$scratch"/in/sample_t00{0..1}.nc -o "$scratch/root/sample" --brick 8 --threads 2 \
   >"$scratch/convert.log" 2>&1 || { cat "$scratch/convert.log"; fail "conversion failed"; }

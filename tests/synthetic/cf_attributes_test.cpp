@@ -31,7 +31,7 @@ TEST_F(SampleCfAttributesTest, FileIsNetcdf4WithGlobalAttributes) {
   ASSERT_EQ(nc_inq_format(f.id(), &format), NC_NOERR);
   EXPECT_EQ(format, NC_FORMAT_NETCDF4);
   EXPECT_EQ(f.text_att("", "Conventions"), "CF-1.8");
-  EXPECT_EQ(f.text_att("", "source"), "strielad-convert sample");
+  EXPECT_EQ(f.text_att("", "source"), "strielad-sample");
   EXPECT_FALSE(f.text_att("", "title").empty());
   EXPECT_TRUE(f.has_att("", "seed"));
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// `strielad-convert sample` end to end: flags, --json summary, exit statuses.
+// `strielad-sample` end to end: flags, --json summary, exit statuses.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -17,8 +17,8 @@ struct RunResult {
   std::string out;
 };
 
-RunResult run_convert(const std::string& args) {
-  const std::string command = std::string(STRIELAD_CONVERT_EXE) + " " + args + " 2>/dev/null";
+RunResult run_sample(const std::string& args) {
+  const std::string command = std::string(STRIELAD_SAMPLE_EXE) + " " + args + " 2>/dev/null";
   RunResult r;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return r;
@@ -33,7 +33,7 @@ RunResult run_convert(const std::string& args) {
 TEST(SampleCliTest, WritesFilesAndPrintsJsonSummary) {
   TempDir dir;
   const auto out = dir.path() / "new" / "dir";
-  const RunResult r = run_convert("-q sample -o " + out.string() +
+  const RunResult r = run_sample("-q -o " + out.string() +
                                   " --dims 9x7x5 --steps 2 --seed 3 --vars clw,ta"
                                   " --step-seconds 120 --deflate 1 --json");
   ASSERT_EQ(r.status, 0) << r.out;
@@ -62,7 +62,7 @@ TEST(SampleCliTest, WritesFilesAndPrintsJsonSummary) {
 TEST(SampleCliTest, SingleFileFlag) {
   TempDir dir;
   const RunResult r =
-      run_convert("-q sample -o " + dir.path().string() + " --dims 4x4x3 --steps 3 --single-file");
+      run_sample("-q -o " + dir.path().string() + " --dims 4x4x3 --steps 3 --single-file");
   ASSERT_EQ(r.status, 0);
   EXPECT_TRUE(r.out.empty()) << "stdout stays empty without --json";
   const NcFile f(dir.path() / "sample.nc");
@@ -74,19 +74,19 @@ TEST(SampleCliTest, SingleFileFlag) {
 TEST(SampleCliTest, BadArgumentsExitWithTheirStatus) {
   TempDir dir;
   const std::string o = " -o " + (dir.path() / "x").string();
-  EXPECT_EQ(run_convert("sample" + o + " --dims 4x0x3").status, 2);
-  EXPECT_EQ(run_convert("sample" + o + " --dims banana").status, 2);
-  EXPECT_EQ(run_convert("sample" + o + " --dims 4x4x3 --vars clw,nope").status, 2);
-  EXPECT_EQ(run_convert("sample" + o + " --dims 4x4x3 --steps 0").status, 2);
-  EXPECT_EQ(run_convert("sample" + o + " --dims 4x4x3 --deflate 12").status, 2);
-  EXPECT_EQ(run_convert("sample" + o + " --dims 4x4x3 --steps -1").status, 2);
-  EXPECT_EQ(run_convert("sample" + o + " --dims 4x4x3 --seed -5").status, 2);
+  EXPECT_EQ(run_sample(o.substr(1) + " --dims 4x0x3").status, 2);
+  EXPECT_EQ(run_sample(o.substr(1) + " --dims banana").status, 2);
+  EXPECT_EQ(run_sample(o.substr(1) + " --dims 4x4x3 --vars clw,nope").status, 2);
+  EXPECT_EQ(run_sample(o.substr(1) + " --dims 4x4x3 --steps 0").status, 2);
+  EXPECT_EQ(run_sample(o.substr(1) + " --dims 4x4x3 --deflate 12").status, 2);
+  EXPECT_EQ(run_sample(o.substr(1) + " --dims 4x4x3 --steps -1").status, 2);
+  EXPECT_EQ(run_sample(o.substr(1) + " --dims 4x4x3 --seed -5").status, 2);
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "x"));
   std::ofstream(dir.path() / "file") << "x";
-  EXPECT_EQ(run_convert("sample -o " + (dir.path() / "file" / "sub").string() + " --dims 4x4x3")
+  EXPECT_EQ(run_sample("-o " + (dir.path() / "file" / "sub").string() + " --dims 4x4x3")
                 .status,
             7);
-  EXPECT_NE(run_convert("sample --dims 4x4x3").status, 0) << "-o is required";
+  EXPECT_NE(run_sample("--dims 4x4x3").status, 0) << "-o is required";
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "export/vtp_reader.h"
+#include "readback/vtp_reader.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -18,7 +18,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "export/vtk_error_capture.h"
-#include "export/vtp_declared_sizes.h"
+#include "readback/vtp_declared_sizes.h"
 
 namespace strielad {
 namespace {

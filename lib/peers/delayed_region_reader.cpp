@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "vdb/delayed_region_reader.h"
+#include "peers/delayed_region_reader.h"
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 
 #include "core/error.h"
 
-namespace strielad::vdb {
+namespace strielad::peers {
 
 struct DelayedRegionReader::Grids {
   std::vector<std::unique_ptr<openvdb::io::File>> files;  // kept open: the grids map them
@@ -71,4 +71,4 @@ std::size_t DelayedRegionReader::unloaded_leaves() const {
   return n;
 }
 
-}  // namespace strielad::vdb
+}  // namespace strielad::peers

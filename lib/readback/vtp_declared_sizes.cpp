@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "export/vtp_declared_sizes.h"
+#include "readback/vtp_declared_sizes.h"
 
 #include <algorithm>
 #include <charconv>

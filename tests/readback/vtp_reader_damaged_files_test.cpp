@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-#include "export/vtp_reader.h"
+#include "readback/vtp_reader.h"
 #include "support/expect_error.h"
 #include "support/temp_dir.h"
 

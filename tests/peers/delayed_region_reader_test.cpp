@@ -11,7 +11,7 @@
 #include "store/store.h"
 #include "support/small_dataset.h"
 #include "support/temp_dir.h"
-#include "vdb/delayed_region_reader.h"
+#include "peers/delayed_region_reader.h"
 #include "vdb/level_grid.h"
 
 namespace strielad {
@@ -29,7 +29,7 @@ TEST(DelayedRegionReaderTest, BoxesEqualTheStoresBricksAndLoadOnlyWhatTheyTouch)
     files.push_back(dir / (grids.back() + ".vdb"));
     vdb::write_level_vdb(*store, 0, v, 0, files.back());
   }
-  vdb::DelayedRegionReader reader(files, grids);
+  peers::DelayedRegionReader reader(files, grids);
   const std::size_t unloaded_at_open = reader.unloaded_leaves();
   EXPECT_GT(unloaded_at_open, 0u);
 
@@ -55,7 +55,7 @@ TEST(DelayedRegionReaderTest, BoxesEqualTheStoresBricksAndLoadOnlyWhatTheyTouch)
 TEST(DelayedRegionReaderTest, NamesAMissingFileOrGrid) {
   testing::TempDir dir;
   try {
-    vdb::DelayedRegionReader reader({dir / "absent.vdb"}, {"clw"});
+    peers::DelayedRegionReader reader({dir / "absent.vdb"}, {"clw"});
     FAIL() << "opened a missing file";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::kNotFound);
@@ -66,7 +66,7 @@ TEST(DelayedRegionReaderTest, NamesAMissingFileOrGrid) {
   const auto store = Store::open(dir / "store");
   vdb::write_level_vdb(*store, 0, 0, 0, dir / "one.vdb");
   try {
-    vdb::DelayedRegionReader reader({dir / "one.vdb"}, {"no-such-grid"});
+    peers::DelayedRegionReader reader({dir / "one.vdb"}, {"no-such-grid"});
     FAIL() << "found a missing grid";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::kNotFound);

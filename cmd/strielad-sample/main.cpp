@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// strielad-convert sample -o DIR [--dims XxYxZ] [--steps N] [--seed S] [--vars a,b,...]
-//                         [--single-file] [--step-seconds S] [--deflate L] [--tracks N]
-//                         [--terrain N]
-//                         [--json]
+// strielad-sample -o DIR [--dims XxYxZ] [--steps N] [--seed S] [--vars a,b,...]
+//                 [--single-file] [--step-seconds S] [--deflate L] [--tracks N] [--terrain N]
+//                 [--json]
+// Writes the built-in sample: a deterministic synthetic CF-NetCDF-4 dataset (lib/synthetic)
+// that strielad-convert converts like model output, with optional flight tracks and a DEM.
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
@@ -14,13 +15,13 @@
 #include <string>
 
 #include "cli/progress_bar.h"
-#include "commands.h"
+#include "cli/tool_main.h"
 #include "synthetic/sample_args.h"
 #include "synthetic/sample_dataset.h"
 #include "synthetic/sample_terrain.h"
 #include "synthetic/sample_tracks.h"
 
-namespace strielad::convert_cmd {
+namespace strielad {
 namespace {
 
 struct SampleOptions {
@@ -105,11 +106,9 @@ int run_sample(const SampleOptions& opt) {
   return 0;
 }
 
-}  // namespace
-
 void register_sample(CLI::App& app, cli::Action& action) {
   auto opt = std::make_shared<SampleOptions>();
-  auto* sub = app.add_subcommand("sample", "Write a deterministic CF-NetCDF-4 sample dataset");
+  auto* sub = &app;
   sub->add_option("-o,--output", opt->output, "Output directory (created if missing)")
       ->required();
   sub->add_option("--dims", opt->dims, "Grid size XxYxZ (lon x lat x height)")
@@ -141,4 +140,15 @@ void register_sample(CLI::App& app, cli::Action& action) {
   sub->callback([&action, opt] { action = [opt] { return run_sample(*opt); }; });
 }
 
-}  // namespace strielad::convert_cmd
+}  // namespace
+}  // namespace strielad
+
+int main(int argc, char** argv) {
+  using namespace strielad;
+  const cli::ToolSpec spec{
+      "strielad-sample",
+      "Write the built-in sample: a deterministic synthetic CF-NetCDF-4 dataset (clouds, "
+      "rain, temperature, pressure, wind), optionally with flight tracks and a DEM",
+      register_sample};
+  return cli::run_tool(spec, argc, argv);
+}

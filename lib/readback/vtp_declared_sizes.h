@@ -4,7 +4,7 @@
 // counts, an array's tuples and components, a compressed block count) before it reads the
 // data, so a few damaged digits would have it allocate terabytes: std::bad_alloc thrown
 // through VTK (which leaks what it had built), or, with overcommit, memory it then fills.
-// Internal to lib/export/vtp_reader.cpp.
+// Internal to lib/readback/vtp_reader.cpp.
 #pragma once
 
 #include <span>

@@ -14,7 +14,7 @@
 
 #include "octree/octree_layout.h"
 
-namespace strielad::vdb {
+namespace strielad::peers {
 
 class DelayedRegionReader {
  public:
@@ -39,4 +39,4 @@ class DelayedRegionReader {
   std::unique_ptr<Grids> grids_;
 };
 
-}  // namespace strielad::vdb
+}  // namespace strielad::peers
