@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The one reproducible performance report (issue 7, strielad-bench report): the suites'
+// The one reproducible performance report (strielad-bench report): the suites'
 // JSON reports, gathered after each ran as its own process, become one Markdown file
 // with the machine, every suite's command, status and tables, and the charts: throughput
 // against peers, the cut's arrival curves, error against run time, scene economy.
