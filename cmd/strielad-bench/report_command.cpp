@@ -141,11 +141,15 @@ int run(const ReportFlags& f) {
     std::cout << "; not drawn: " << fmt::format("{}", fmt::join(written.chart_problems, "; "));
   }
   std::cout << ")\n";
-  int failed = 0;
-  for (const auto& r : input.runs) failed += r.exit_status != 0;
-  if (failed) {
-    std::cerr << "strielad-bench report: " << failed << " suite(s) failed; see the report\n";
-    return 1;
+  std::vector<std::string> failed;
+  for (const auto& r : input.runs) {
+    if (r.exit_status != 0) failed.push_back(fmt::format("{} (exit status {})", r.suite, r.exit_status));
+  }
+  if (!failed.empty()) {
+    // The report is written; a suite that failed is a fault of the harness or of the code
+    // it measures.
+    throw make_error(ErrorCode::kInternal, "{} suite(s) failed: {}; see {}", failed.size(),
+                     fmt::join(failed, ", "), written.markdown.string());
   }
   return 0;
 }
