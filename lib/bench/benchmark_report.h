@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "bench/report_paths.h"
+
 namespace strielad::bench {
 
 struct SuiteRun {
@@ -43,8 +45,8 @@ struct ReportOutput {
 };
 
 // Reads every run's JSON (a missing or unreadable one is reported in the Markdown, not
-// thrown), draws the charts and writes OUT/BENCHMARKS.md.
-// \error kIo when the Markdown cannot be written.
-ReportOutput write_benchmark_report(const ReportInput& input);
+// thrown), draws the charts and writes OUT/BENCHMARKS.md with its paths as `paths`
+// writes them. \error kIo when the Markdown cannot be written.
+ReportOutput write_benchmark_report(const ReportInput& input, const ReportPaths& paths);
 
 }  // namespace strielad::bench
