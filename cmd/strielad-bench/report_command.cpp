@@ -148,7 +148,9 @@ int run(const ReportFlags& f) {
   std::cout << ")\n";
   std::vector<std::string> failed;
   for (const auto& r : input.runs) {
-    if (r.exit_status != 0) failed.push_back(fmt::format("{} (exit status {})", r.suite, r.exit_status));
+    if (r.exit_status != 0) {
+      failed.push_back(fmt::format("{} (exit status {})", r.suite, r.exit_status));
+    }
   }
   if (!failed.empty()) {
     // The report is written; a suite that failed is a fault of the harness or of the code

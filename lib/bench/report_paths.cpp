@@ -89,7 +89,8 @@ ReportPaths ReportPaths::for_suite(const std::filesystem::path& work,
   std::vector<std::pair<std::string, std::filesystem::path>> folders;
   if (!work.empty()) folders.emplace_back("$WORK", work);
   for (const auto& output : outputs) {
-    if (!output.empty()) folders.emplace_back("$OUT", std::filesystem::absolute(output).parent_path());
+    if (output.empty()) continue;
+    folders.emplace_back("$OUT", std::filesystem::absolute(output).parent_path());
   }
   return ReportPaths(find_repository_root(), folders);
 }

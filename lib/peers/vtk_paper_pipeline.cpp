@@ -448,8 +448,8 @@ PeerResult paper_pipeline(const NodeSamples& samples, const PaperSubvolume& sv,
 
   vtkNew<vtk_support::ErrorCapture> errors;
   const auto start = Clock::now();
-  FilterChain chain(make_rectilinear_grid(samples, fields.fields, fields.nan_values, drop_nan_cells),
-                    *errors);
+  FilterChain chain(
+      make_rectilinear_grid(samples, fields.fields, fields.nan_values, drop_nan_cells), *errors);
   if (drop_nan_cells) append_valid_cells(chain);
   append_limit_clips(chain, sv);
   if (sv.domain) append_domain_clips(chain, samples, *sv.domain);
