@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "bench/advect_suite.h"
+#include "bench/report_paths.h"
 #include "commands.h"
 #include "suite_output.h"
 
@@ -26,7 +27,8 @@ int run(const AdvectFlags& f) {
   o.trajectories = f.trajectories;
   o.quick = f.quick;
   o.plot_png = f.plot;
-  o.command_line = f.command_line;
+  // Quoted in the plot's data file as well as in the reports.
+  o.command_line = bench::ReportPaths::for_suite({}, {f.csv, f.json, f.plot}).text(f.command_line);
   const auto report = bench::run_advect_suite(o);
   const auto tables = bench::advect_report_tables(report);
   const std::string header = fmt::format(
@@ -34,7 +36,7 @@ int run(const AdvectFlags& f) {
       "suite took {:.0f} s; {} cores",
       report.runs.size(), o.quick ? 2 : o.trajectories, o.quick ? 1 : o.repeat, report.seconds,
       report.machine.value("cores", 0u));
-  emit_suite_report(header, tables, f.csv, f.json,
+  emit_suite_report(header, tables, f.csv, f.json, {},
                     [&] { return bench::advect_report_json(report, tables); });
   if (!report.plot_status.empty()) std::cout << "plot: " << report.plot_status << "\n";
   return 0;

@@ -88,7 +88,7 @@ int run(const ExtractFlags& f) {
       o.dims.x, o.dims.y, o.dims.z, fmt::join(o.variables, ","), fmt::join(o.bricks, ","),
       report.seconds, report.input.generate_seconds, report.convert_seconds,
       report.machine.value("cores", 0u), report.machine.value("load_average_1min_end", -1.0));
-  emit_suite_report(header, tables, f.csv, f.json,
+  emit_suite_report(header, tables, f.csv, f.json, o.work,
                     [&] { return bench::extract_report_json(report, tables); });
   if (!report.plot_status.empty()) std::cout << "plot: " << report.plot_status << "\n";
   return 0;

@@ -94,7 +94,8 @@ int run(const IoFlags& f) {
   emit_suite_report(fmt::format("strielad-bench io: {}x{}x{}, {}, 1 step; suite took {:.0f} s",
                                 o.dims.x, o.dims.y, o.dims.z, fmt::join(o.variables, ","),
                                 report.seconds),
-                    tables, f.csv, f.json, [&] { return bench::io_report_json(report, tables); });
+                    tables, f.csv, f.json, o.work,
+                    [&] { return bench::io_report_json(report, tables); });
   return 0;
 }
 

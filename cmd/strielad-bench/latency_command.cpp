@@ -74,7 +74,7 @@ int run(const LatencyFlags& f) {
       o.server_binary.empty() ? std::string("in-process") : std::string("process"), o.threads,
       o.cache_mib, report.seconds, report.input.generate_seconds, report.convert_seconds,
       report.machine.value("cores", 0u), report.machine.value("load_average_1min_end", -1.0));
-  emit_suite_report(header, tables, f.csv, f.json,
+  emit_suite_report(header, tables, f.csv, f.json, o.work,
                     [&] { return bench::latency_report_json(report, tables); });
   return 0;
 }

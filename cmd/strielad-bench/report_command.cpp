@@ -3,6 +3,8 @@
 //                       [--work DIR] [--rerun SUITES]
 // Runs every suite as its own process (this binary), one after the other, each writing
 // its JSON, CSV and output into DIR, then writes DIR/BENCHMARKS.md with the charts.
+// Paths in all of them as bench/report_paths.h writes them. When a suite failed, the
+// report is still written and the tool exits with the internal-error status (70).
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
@@ -86,13 +88,15 @@ bench::SuiteRun planned_run(const ReportFlags& f, const std::string& suite,
   return run;
 }
 
-void execute(bench::SuiteRun& run) {
+// Runs the suite; its captured output names paths as `paths` writes them.
+void execute(bench::SuiteRun& run, const bench::ReportPaths& paths) {
   std::filesystem::remove(run.json);
   spdlog::info("report: running {}", bench::shell_command(run.argv));
   const auto result = bench::run_process(run.argv, run.log);
+  paths.rewrite_file(run.log);
   run.exit_status = result.exit_status;
   run.seconds = result.seconds;
-  run.output_tail = result.exit_status != 0 ? result.output_tail : std::string();
+  run.output_tail = result.exit_status != 0 ? paths.text(result.output_tail) : std::string();
   spdlog::info("report: {} exited {} after {:.1f} s", run.suite, run.exit_status, run.seconds);
 }
 
@@ -110,13 +114,14 @@ int run(const ReportFlags& f) {
   const std::filesystem::path out = std::filesystem::absolute(f.out);
   std::filesystem::create_directories(out);
   const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+  const auto paths = bench::ReportPaths::for_suite(f.work, {(out / kRunsFile).string()});
   bench::ReportInput input;
   if (rerun) {
-    input = bench::load_report_runs(out / kRunsFile);
+    input = bench::load_report_runs(out / kRunsFile, paths);
     input.notes.push_back(fmt::format("Re-run by `{}`: {}; the other suites are as first run.",
-                                      f.command_line, fmt::join(suites, ", ")));
+                                      paths.text(f.command_line), fmt::join(suites, ", ")));
   } else {
-    input.command_line = f.command_line;
+    input.command_line = paths.text(f.command_line);
     input.mode = f.quick ? "quick mode: small data, checks the harness, not the figures"
                          : fmt::format("generated data {}", f.dims);
   }
@@ -126,26 +131,32 @@ int run(const ReportFlags& f) {
                                    [&](const bench::SuiteRun& r) { return r.suite == suite; });
     take_probes(input, (rerun ? "re-run, before " : "before ") + suite);
     if (kept != input.runs.end()) {
-      execute(*kept);  // the same command as the first run
+      execute(*kept, paths);  // the same command as the first run
     } else {
       input.runs.push_back(planned_run(f, suite, out, self));
-      execute(input.runs.back());
+      execute(input.runs.back(), paths);
     }
   }
   take_probes(input, (rerun ? "re-run, after " : "after ") + suites.back());
-  bench::save_report_runs(input, out / kRunsFile);
-  const auto written = bench::write_benchmark_report(input);
+  bench::save_report_runs(input, out / kRunsFile, paths);
+  const auto written = bench::write_benchmark_report(input, paths);
   std::cout << "report: " << written.markdown.string() << " (" << written.charts.size()
             << " charts";
   if (!written.chart_problems.empty()) {
     std::cout << "; not drawn: " << fmt::format("{}", fmt::join(written.chart_problems, "; "));
   }
   std::cout << ")\n";
-  int failed = 0;
-  for (const auto& r : input.runs) failed += r.exit_status != 0;
-  if (failed) {
-    std::cerr << "strielad-bench report: " << failed << " suite(s) failed; see the report\n";
-    return 1;
+  std::vector<std::string> failed;
+  for (const auto& r : input.runs) {
+    if (r.exit_status != 0) {
+      failed.push_back(fmt::format("{} (exit status {})", r.suite, r.exit_status));
+    }
+  }
+  if (!failed.empty()) {
+    // The report is written; a suite that failed is a fault of the harness or of the code
+    // it measures.
+    throw make_error(ErrorCode::kInternal, "{} suite(s) failed: {}; see {}", failed.size(),
+                     fmt::join(failed, ", "), written.markdown.string());
   }
   return 0;
 }

@@ -36,7 +36,7 @@ int run(const RobustnessFlags& f) {
       "{:.1f} s; {} threads, {} cores",
       report.cases.size(), report.cases.size() - deviating, deviating, report.seconds, o.threads,
       report.machine.value("cores", 0u));
-  emit_suite_report(header, tables, f.csv, f.json,
+  emit_suite_report(header, tables, f.csv, f.json, o.work_dir,
                     [&] { return bench::robustness_report_json(report, tables); });
   return deviating == 0 ? 0 : 1;
 }

@@ -45,7 +45,7 @@ int run(const ScalingFlags& f) {
   const std::string header = fmt::format(
       "strielad-bench scaling: grids {} of {}x{}x{}, {} round(s); suite took {:.0f} s",
       fmt::join(o.fractions, ", "), o.dims.x, o.dims.y, o.dims.z, o.repeat, report.seconds);
-  emit_suite_report(header, tables, f.csv, f.json,
+  emit_suite_report(header, tables, f.csv, f.json, o.work,
                     [&] { return bench::scaling_json(report, tables); });
   return 0;
 }

@@ -37,7 +37,7 @@ int run(const SceneFlags& f) {
       "{:.0f} s",
       o.dims.x, o.dims.y, o.dims.z, o.variables.size(), o.brick, report.scene_json.size(),
       report.seconds);
-  emit_suite_report(header, tables, f.csv, f.json,
+  emit_suite_report(header, tables, f.csv, f.json, o.work,
                     [&] { return bench::scene_economy_json(report, tables); });
   return 0;
 }

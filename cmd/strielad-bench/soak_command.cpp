@@ -67,7 +67,7 @@ int run(SoakFlags& f) {
       o.clients, o.slow_readers, o.tricklers, o.seconds, double(report.rss_start) / (1 << 20),
       double(report.rss_max) / (1 << 20), double(report.rss_end) / (1 << 20), report.seconds,
       report.machine.value("cores", 0u), report.machine.value("load_average_1min_end", -1.0));
-  emit_suite_report(header, tables, f.csv, f.json,
+  emit_suite_report(header, tables, f.csv, f.json, o.work,
                     [&] { return bench::soak_report_json(report, tables); });
   return 0;
 }

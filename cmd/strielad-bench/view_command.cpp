@@ -78,7 +78,7 @@ int run(const ViewFlags& f) {
 
   const bench::ViewSuiteReport report = bench::run_view_suite(o);
   const auto tables = bench::view_report_tables(report);
-  emit_suite_report(describe(report), tables, f.csv, f.json,
+  emit_suite_report(describe(report), tables, f.csv, f.json, o.work,
                     [&] { return bench::view_report_json(report, tables); });
   return 0;
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The `strielad-bench advect` suite (issue 6, "Error against run time"): every
+// The `strielad-bench advect` suite ("Error against run time"): every
 // integrator of lib/advect (Euler, RK4, Dormand-Prince 5(4), Rosenbrock RODAS3) at
 // several step sizes or tolerances on wind fields sampled onto grids whose trajectories
 // are known: solid-body rotation, a shear layer with rising air, stiff convergence

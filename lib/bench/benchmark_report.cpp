@@ -60,7 +60,7 @@ std::string noise_markdown(const std::vector<NoiseProbe>& probes) {
 
 }  // namespace
 
-ReportOutput write_benchmark_report(const ReportInput& input) {
+ReportOutput write_benchmark_report(const ReportInput& input, const ReportPaths& paths) {
   ReportOutput out;
   std::string md;
   md += "# STRIELAD benchmark report\n\n";
@@ -128,7 +128,7 @@ ReportOutput write_benchmark_report(const ReportInput& input) {
     md += "\n";
   }
   out.markdown = input.out / "BENCHMARKS.md";
-  write_text_file(out.markdown, md);
+  write_text_file(out.markdown, paths.text(md));
   return out;
 }
 

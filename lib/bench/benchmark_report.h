@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The one reproducible performance report (issue 7, strielad-bench report): the suites'
+// The one reproducible performance report (strielad-bench report): the suites'
 // JSON reports, gathered after each ran as its own process, become one Markdown file
 // with the machine, every suite's command, status and tables, and the charts: throughput
 // against peers, the cut's arrival curves, error against run time, scene economy.
@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include "bench/report_paths.h"
 
 namespace strielad::bench {
 
@@ -43,8 +45,8 @@ struct ReportOutput {
 };
 
 // Reads every run's JSON (a missing or unreadable one is reported in the Markdown, not
-// thrown), draws the charts and writes OUT/BENCHMARKS.md.
-// \error kIo when the Markdown cannot be written.
-ReportOutput write_benchmark_report(const ReportInput& input);
+// thrown), draws the charts and writes OUT/BENCHMARKS.md with its paths as `paths`
+// writes them. \error kIo when the Markdown cannot be written.
+ReportOutput write_benchmark_report(const ReportInput& input, const ReportPaths& paths);
 
 }  // namespace strielad::bench

@@ -145,6 +145,61 @@ ReadSet vdb_pass(const BrickReadOptions& o, const Store& store,
       });
 }
 
+// A fresh reader each time: MANIFEST, step header/footer/section table, one index
+// section and one brick, all cold.
+ReadSet first_brick_set(const BrickReadOptions& o, const std::vector<ReadSample>& level0,
+                        const std::function<void()>& evict) {
+  ReadSet first{"store cold first brick",
+                "Store::open + step open + index section of the variable + one brick, all files "
+                "evicted", {}, {}, {}, {}};
+  const auto manifest = o.store / "MANIFEST";
+  const std::size_t n = std::min(o.first_brick_reads, level0.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& s = level0[i];
+    evict();
+    evict_file(manifest);
+    const auto before = read_proc_io();
+    const Stopwatch clock;
+    const auto fresh = Store::open(o.store);
+    const Brick b = fresh->read_brick(0, s.variable, s.node);
+    first.latency_us.push_back(clock.microseconds());
+    const auto after = read_proc_io();
+    first.disk_bytes.push_back(before && after ? static_cast<double>(after->read_bytes - before->read_bytes) : 0);
+    first.payload_bytes.push_back(0);
+    first.page_bytes.push_back(0);
+    (void)b;
+  }
+  return first;
+}
+
+// The same bricks' samples read from the NetCDF input (o.netcdf), cold and warm.
+void netcdf_sets(const BrickReadOptions& o, const OctreeLayout& layout,
+                 const std::vector<ReadSample>& level0, BrickReadBench& bench) {
+  NetcdfRegionReader nc(o.netcdf, o.variables, /*chunk_cache_bytes=*/0);
+  EvictableFile nc_file(o.netcdf);
+  const auto nc_evict = [&] { nc_file.evict(); };
+  DiskMeter nc_meter(bench.method, o.netcdf);
+  const auto chunks = nc.chunking(0);
+  const std::string chunk_text =
+      chunks.size() == 3 ? fmt::format("{}x{}x{} (z,y,x) chunks", chunks[0], chunks[1], chunks[2])
+                         : "contiguous";
+  // Warm-up: loads HDF5's chunk B-tree into its metadata cache (as the store index is).
+  netcdf_pass(nc, layout, level0, true, "warm-up", "", {}, nc_meter);
+  const std::string aligned = fmt::format(
+      "nc_get_vara_float of the brick's first {}^3 samples (chunk-aligned: one chunk), {}, "
+      "deflate 1 + shuffle, chunk cache 0", layout.brick(), chunk_text);
+  const std::string whole = fmt::format(
+      "nc_get_vara_float of the brick's {}^3 samples (the same samples as the brick: up to 8 "
+      "chunks), {}, chunk cache 0", layout.brick() + 1, chunk_text);
+  bench.sets.push_back(netcdf_pass(nc, layout, level0, false, "netcdf cold, B^3 box",
+                                   aligned + ", file evicted before each read", nc_evict, nc_meter));
+  bench.sets.push_back(netcdf_pass(nc, layout, level0, true, "netcdf cold, (B+1)^3 box",
+                                   whole + ", file evicted before each read", nc_evict, nc_meter));
+  netcdf_pass(nc, layout, level0, false, "warm-up", "", {}, nc_meter);
+  bench.sets.push_back(netcdf_pass(nc, layout, level0, false, "netcdf warm, B^3 box",
+                                   aligned + ", after a warm-up pass", {}, nc_meter));
+}
+
 }  // namespace
 
 const char* disk_byte_method_name(DiskByteMethod m) {
@@ -266,58 +321,8 @@ BrickReadBench run_brick_read_bench(const BrickReadOptions& o) {
                                   one_read + ", after a warm-up pass over the same bricks", {},
                                   store_meter));
 
-  // A fresh reader each time: MANIFEST, step header/footer/section table, one index
-  // section and one brick, all cold.
-  if (o.first_brick_reads > 0) {
-    ReadSet first{"store cold first brick",
-                  "Store::open + step open + index section of the variable + one brick, all files "
-                  "evicted", {}, {}, {}, {}};
-    const auto manifest = o.store / "MANIFEST";
-    const std::size_t n = std::min(o.first_brick_reads, level0.size());
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto& s = level0[i];
-      evict();
-      evict_file(manifest);
-      const auto before = read_proc_io();
-      const Stopwatch clock;
-      const auto fresh = Store::open(o.store);
-      const Brick b = fresh->read_brick(0, s.variable, s.node);
-      first.latency_us.push_back(clock.microseconds());
-      const auto after = read_proc_io();
-      first.disk_bytes.push_back(before && after ? static_cast<double>(after->read_bytes - before->read_bytes) : 0);
-      first.payload_bytes.push_back(0);
-      first.page_bytes.push_back(0);
-      (void)b;
-    }
-    bench.sets.push_back(std::move(first));
-  }
-
-  if (!o.netcdf.empty()) {
-    NetcdfRegionReader nc(o.netcdf, o.variables, /*chunk_cache_bytes=*/0);
-    EvictableFile nc_file(o.netcdf);
-    const auto nc_evict = [&] { nc_file.evict(); };
-    DiskMeter nc_meter(bench.method, o.netcdf);
-    const auto& layout = store->octree();
-    const auto chunks = nc.chunking(0);
-    const std::string chunk_text =
-        chunks.size() == 3 ? fmt::format("{}x{}x{} (z,y,x) chunks", chunks[0], chunks[1], chunks[2])
-                           : "contiguous";
-    // Warm-up: loads HDF5's chunk B-tree into its metadata cache (as the store index is).
-    netcdf_pass(nc, layout, level0, true, "warm-up", "", {}, nc_meter);
-    const std::string aligned = fmt::format(
-        "nc_get_vara_float of the brick's first {}^3 samples (chunk-aligned: one chunk), {}, "
-        "deflate 1 + shuffle, chunk cache 0", layout.brick(), chunk_text);
-    const std::string whole = fmt::format(
-        "nc_get_vara_float of the brick's {}^3 samples (the same samples as the brick: up to 8 "
-        "chunks), {}, chunk cache 0", layout.brick() + 1, chunk_text);
-    bench.sets.push_back(netcdf_pass(nc, layout, level0, false, "netcdf cold, B^3 box",
-                                     aligned + ", file evicted before each read", nc_evict, nc_meter));
-    bench.sets.push_back(netcdf_pass(nc, layout, level0, true, "netcdf cold, (B+1)^3 box",
-                                     whole + ", file evicted before each read", nc_evict, nc_meter));
-    netcdf_pass(nc, layout, level0, false, "warm-up", "", {}, nc_meter);
-    bench.sets.push_back(netcdf_pass(nc, layout, level0, false, "netcdf warm, B^3 box",
-                                     aligned + ", after a warm-up pass", {}, nc_meter));
-  }
+  if (o.first_brick_reads > 0) bench.sets.push_back(first_brick_set(o, level0, evict));
+  if (!o.netcdf.empty()) netcdf_sets(o, store->octree(), level0, bench);
   if (!o.vdb_files.empty()) bench.sets.push_back(vdb_pass(o, *store, level0, bench.method));
   return bench;
 }

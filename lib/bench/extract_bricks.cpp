@@ -222,9 +222,11 @@ NodeSamples no_surface_samples(const NodeSamples& samples, std::size_t field, do
   return out;
 }
 
-BrickGroup run_brick_group(const Store& store, const ExtractCase& c,
-                           const BrickGroupOptions& options) {
-  const Stopwatch clock;
+namespace {
+
+// The contenders of a group on `c`: the kernel and the paper pipeline, plus the
+// single-threshold peers when the case has one limit.
+BrickGroup plan_group(const Store& store, const ExtractCase& c, const BrickGroupOptions& options) {
   BrickGroup g;
   g.extract_case = c;
   g.brick = store.octree().brick();
@@ -234,113 +236,159 @@ BrickGroup run_brick_group(const Store& store, const ExtractCase& c,
     g.contenders.push_back(kFlyingEdges);
     if (options.openvdb) g.contenders.push_back(kOpenVdb);
   }
+  return g;
+}
+
+// Up to options.bricks candidate nodes drawn at random (seeded), in node order.
+std::vector<NodeId> pick_nodes(const Store& store, const ExtractCase& c,
+                               const BrickGroupOptions& options, BrickGroup& g) {
   std::vector<NodeId> nodes = candidate_nodes(store, c);
   g.candidates = nodes.size();
   std::mt19937_64 rng(options.seed);
   std::shuffle(nodes.begin(), nodes.end(), rng);
   if (nodes.size() > options.bricks) nodes.resize(options.bricks);
   std::sort(nodes.begin(), nodes.end());
+  return nodes;
+}
+
+void expect_nothing(const Mesh& m, const std::string& who, NodeId node) {
+  if (m.triangle_count() != 0) {
+    throw make_error(ErrorCode::kInternal,
+                     "bench: {} made {} triangles on node {} with nothing to extract", who,
+                     m.triangle_count(), node);
+  }
+}
+
+// One brick's turns: its samples, the same samples with nothing to extract (kernel and
+// FlyingEdges also run on those, right after their own turn), and the first round's meshes.
+struct BrickTurns {
+  BrickTurns(const Loaded& samples, NodeId id, double threshold)
+      : in(samples), node(id), iso(threshold) {}
+
+  const Loaded& in;
+  NodeId node;
+  double iso;
+  bool with_no_surface = false;
+  NodeSamples empty;
+  peers::PaperPipelineOptions paper_options;
+  std::vector<std::vector<double>> no_surface_rounds;
+  Mesh kernel_mesh, paper_mesh, fe_mesh;
+};
+
+// Contender `i` (`who`) once on the brick in round `r`; its seconds.
+double time_turn(const std::string& who, std::size_t i, int r, BrickTurns& t, BrickRun& run) {
+  const Loaded& in = t.in;
+  if (who == kKernel) {
+    ExtractStats stats;
+    const Stopwatch w;
+    Mesh m = extract_node_mesh(in.samples, in.request, &stats);
+    const double seconds = w.seconds();
+    if (r == 0) {
+      run.kernel_stats = stats;
+      t.kernel_mesh = std::move(m);
+    }
+    if (t.with_no_surface) {
+      const Stopwatch e;
+      const Mesh none = extract_node_mesh(t.empty, in.request, nullptr);
+      t.no_surface_rounds[i].push_back(e.seconds());
+      if (r == 0) expect_nothing(none, who, t.node);
+    }
+    return seconds;
+  }
+  if (who == kPaper) {
+    peers::PeerResult p = peers::run_paper_pipeline(in.samples, in.request, t.paper_options);
+    if (r == 0) t.paper_mesh = std::move(p.mesh);
+    return p.seconds;
+  }
+  if (who == kFlyingEdges) {
+    peers::PeerResult p = peers::run_flying_edges(in.samples, in.select_field, t.iso, {1});
+    if (r == 0) t.fe_mesh = std::move(p.mesh);
+    const peers::PeerResult none = peers::run_flying_edges(t.empty, in.select_field, t.iso, {1});
+    t.no_surface_rounds[i].push_back(none.seconds);
+    if (r == 0) expect_nothing(none.mesh, who, t.node);
+    return p.seconds;
+  }
+  peers::PeerResult p =
+      peers::run_openvdb_volume_to_mesh(in.samples, in.select_field, t.iso, {.threads = 1});
+  if (r == 0) run.triangles[i] = run.limit_triangles[i] = p.mesh.triangle_count();
+  return p.seconds;
+}
+
+// Triangles, volumes and cleanliness of the first round's meshes, and the reference volume.
+void measure_meshes(const BrickGroup& g, const BrickTurns& t, bool region_is_above,
+                    BrickRun& run) {
+  const std::size_t ik = g.index_of(kKernel), ip = g.index_of(kPaper);
+  run.triangles[ik] = t.kernel_mesh.triangle_count();
+  run.volume[ik] = enclosed_volume(t.kernel_mesh);
+  run.kernel_clean = check_mesh(t.kernel_mesh).clean();
+  run.reference_volume = trilinear_region_volume(t.in.samples, t.in.request, kReferenceSubsamples);
+  run.triangles[ip] = t.paper_mesh.triangle_count();
+  auto limit_count = [](const Mesh& m) {
+    return static_cast<std::uint64_t>(
+        std::count(m.face_kinds.begin(), m.face_kinds.end(), FaceKind::kLimit));
+  };
+  run.limit_triangles[ik] = limit_count(t.kernel_mesh);
+  run.limit_triangles[ip] = limit_count(t.paper_mesh);
+  run.volume[ip] = enclosed_volume(t.paper_mesh);
+  if (const std::size_t ife = g.index_of(kFlyingEdges); ife != std::string::npos) {
+    run.triangles[ife] = run.limit_triangles[ife] = t.fe_mesh.triangle_count();
+    run.volume[ife] = closed_flying_edges_volume(t.fe_mesh, t.paper_mesh, region_is_above);
+  }
+}
+
+// Every contender `g.repeat` times on one node, taking turns, then the meshes measured.
+BrickRun run_brick(const Store& store, const BrickGroup& g, NodeId node) {
+  const ExtractCase& c = g.extract_case;
+  const bool region_is_above = std::isfinite(c.limits.at(c.select).min);
+  const std::size_t n_contenders = g.contenders.size();
+  const Loaded in = load_node(store, c, node);
+  BrickRun run;
+  run.node = node;
+  const auto dims = in.samples.dims();
+  run.cells = std::uint64_t(dims[0] - 1) * (dims[1] - 1) * (dims[2] - 1);
+  run.node_volume = in.node_volume;
+  run.rounds.assign(n_contenders, {});
+  run.triangles.assign(n_contenders, 0);
+  run.limit_triangles.assign(n_contenders, 0);
+  run.volume.assign(n_contenders, std::numeric_limits<double>::quiet_NaN());
+
+  BrickTurns t(in, node, c.threshold());
+  t.with_no_surface = g.index_of(kFlyingEdges) != std::string::npos;
+  if (t.with_no_surface) {
+    t.empty = no_surface_samples(in.samples, in.select_field, t.iso, region_is_above);
+  }
+  t.paper_options.threads = 1;
+  t.paper_options.measure = false;
+  t.no_surface_rounds.resize(n_contenders);
+  for (int r = 0; r < g.repeat; ++r) {
+    // Contenders take turns: each round starts with the next one.
+    for (std::size_t k = 0; k < n_contenders; ++k) {
+      const std::size_t i = (k + static_cast<std::size_t>(r)) % n_contenders;
+      run.rounds[i].push_back(time_turn(g.contenders[i], i, r, t, run));
+    }
+  }
+  for (std::size_t i = 0; i < n_contenders; ++i) {
+    run.seconds.push_back(median(run.rounds[i]));
+    run.no_surface_seconds.push_back(t.no_surface_rounds[i].empty()
+                                         ? std::numeric_limits<double>::quiet_NaN()
+                                         : median(t.no_surface_rounds[i]));
+  }
+  measure_meshes(g, t, region_is_above, run);
+  return run;
+}
+
+}  // namespace
+
+BrickGroup run_brick_group(const Store& store, const ExtractCase& c,
+                           const BrickGroupOptions& options) {
+  const Stopwatch clock;
+  BrickGroup g = plan_group(store, c, options);
+  const std::vector<NodeId> nodes = pick_nodes(store, c, options, g);
   spdlog::info("bench: {} ({}), brick {}: {} of {} cut nodes, {} round(s), contenders {}", c.name,
                c.label, g.brick, nodes.size(), g.candidates, g.repeat,
                fmt::join(g.contenders, ", "));
-
-  const double iso = c.threshold();
-  const bool region_is_above = std::isfinite(c.limits.at(c.select).min);
-  const std::size_t n_contenders = g.contenders.size();
-  peers::PaperPipelineOptions paper_options;
-  paper_options.threads = 1;
-  paper_options.measure = false;
   for (std::size_t b = 0; b < nodes.size(); ++b) {
-    const Loaded in = load_node(store, c, nodes[b]);
-    BrickRun run;
-    run.node = nodes[b];
-    const auto dims = in.samples.dims();
-    run.cells = std::uint64_t(dims[0] - 1) * (dims[1] - 1) * (dims[2] - 1);
-    run.node_volume = in.node_volume;
-    run.rounds.assign(n_contenders, {});
-    // Kernel and FlyingEdges also on the brick with nothing to extract, right after their
-    // own turn.
-    const bool with_no_surface = g.index_of(kFlyingEdges) != std::string::npos;
-    const NodeSamples empty =
-        with_no_surface ? no_surface_samples(in.samples, in.select_field, iso, region_is_above)
-                        : NodeSamples{};
-    std::vector<std::vector<double>> no_surface_rounds(n_contenders);
-    auto expect_nothing = [&](const Mesh& m, const std::string& who) {
-      if (m.triangle_count() != 0) {
-        throw make_error(ErrorCode::kInternal,
-                         "bench: {} made {} triangles on node {} with nothing to extract", who,
-                         m.triangle_count(), nodes[b]);
-      }
-    };
-    run.triangles.assign(n_contenders, 0);
-    run.limit_triangles.assign(n_contenders, 0);
-    run.volume.assign(n_contenders, std::numeric_limits<double>::quiet_NaN());
-    Mesh kernel_mesh, paper_mesh, fe_mesh;
-    for (int r = 0; r < g.repeat; ++r) {
-      // Contenders take turns: each round starts with the next one.
-      for (std::size_t k = 0; k < n_contenders; ++k) {
-        const std::size_t i = (k + static_cast<std::size_t>(r)) % n_contenders;
-        const std::string& who = g.contenders[i];
-        double seconds = 0;
-        if (who == kKernel) {
-          ExtractStats stats;
-          const Stopwatch w;
-          Mesh m = extract_node_mesh(in.samples, in.request, &stats);
-          seconds = w.seconds();
-          if (r == 0) {
-            run.kernel_stats = stats;
-            kernel_mesh = std::move(m);
-          }
-          if (with_no_surface) {
-            const Stopwatch e;
-            const Mesh none = extract_node_mesh(empty, in.request, nullptr);
-            no_surface_rounds[i].push_back(e.seconds());
-            if (r == 0) expect_nothing(none, who);
-          }
-        } else if (who == kPaper) {
-          peers::PeerResult p = peers::run_paper_pipeline(in.samples, in.request, paper_options);
-          seconds = p.seconds;
-          if (r == 0) paper_mesh = std::move(p.mesh);
-        } else if (who == kFlyingEdges) {
-          peers::PeerResult p = peers::run_flying_edges(in.samples, in.select_field, iso, {1});
-          seconds = p.seconds;
-          if (r == 0) fe_mesh = std::move(p.mesh);
-          const peers::PeerResult none = peers::run_flying_edges(empty, in.select_field, iso, {1});
-          no_surface_rounds[i].push_back(none.seconds);
-          if (r == 0) expect_nothing(none.mesh, who);
-        } else {
-          peers::PeerResult p =
-              peers::run_openvdb_volume_to_mesh(in.samples, in.select_field, iso, {.threads = 1});
-          seconds = p.seconds;
-          if (r == 0) run.triangles[i] = run.limit_triangles[i] = p.mesh.triangle_count();
-        }
-        run.rounds[i].push_back(seconds);
-      }
-    }
-    for (std::size_t i = 0; i < n_contenders; ++i) {
-      run.seconds.push_back(median(run.rounds[i]));
-      run.no_surface_seconds.push_back(no_surface_rounds[i].empty()
-                                           ? std::numeric_limits<double>::quiet_NaN()
-                                           : median(no_surface_rounds[i]));
-    }
-    const std::size_t ik = g.index_of(kKernel), ip = g.index_of(kPaper);
-    run.triangles[ik] = kernel_mesh.triangle_count();
-    run.volume[ik] = enclosed_volume(kernel_mesh);
-    run.kernel_clean = check_mesh(kernel_mesh).clean();
-    run.reference_volume = trilinear_region_volume(in.samples, in.request, kReferenceSubsamples);
-    run.triangles[ip] = paper_mesh.triangle_count();
-    auto limit_count = [](const Mesh& m) {
-      return static_cast<std::uint64_t>(
-          std::count(m.face_kinds.begin(), m.face_kinds.end(), FaceKind::kLimit));
-    };
-    run.limit_triangles[ik] = limit_count(kernel_mesh);
-    run.limit_triangles[ip] = limit_count(paper_mesh);
-    run.volume[ip] = enclosed_volume(paper_mesh);
-    if (const std::size_t ife = g.index_of(kFlyingEdges); ife != std::string::npos) {
-      run.triangles[ife] = run.limit_triangles[ife] = fe_mesh.triangle_count();
-      run.volume[ife] = closed_flying_edges_volume(fe_mesh, paper_mesh, region_is_above);
-    }
-    g.runs.push_back(std::move(run));
+    g.runs.push_back(run_brick(store, g, nodes[b]));
     if ((b + 1) % 50 == 0 && b + 1 < nodes.size()) {
       spdlog::info("bench:   {}/{} bricks, {:.0f} s", b + 1, nodes.size(), clock.seconds());
     }

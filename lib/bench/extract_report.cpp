@@ -174,7 +174,7 @@ Table brick_table(const ExtractSuiteReport& r, const ExtractCase& c) {
       "OpenVDB's surface stops half a cell short of the node's faces and encloses nothing "
       "(see the whole-level table); max dV/node = max over bricks of |V - V_paper| / node box "
       "volume; dV vs trilinear = against the volume of the exact region (every limit on the "
-      "trilinearly interpolated field, the issue's definition), by the midpoint rule on 8^3 points "
+      "trilinearly interpolated field), by the midpoint rule on 8^3 points "
       "per cell the boundary may cross; clean = check_mesh: closed, consistently oriented, no "
       "zero-area triangle, unit "
       "normals");
@@ -264,7 +264,7 @@ Table whole_level_table(const ExtractSuiteReport& r) {
 
 Table targets_table(const ExtractSuiteReport& r) {
   Table t{"targets",
-          "Targets (issue 3): kernel >= 50x paper, >= 2x vtkFlyingEdges3D, equal volumes",
+          "Targets: kernel >= 50x paper, >= 2x vtkFlyingEdges3D, equal volumes",
           {"target", "measured", "met"},
           {},
           {}};
@@ -325,22 +325,96 @@ std::vector<Table> extract_report_tables(const ExtractSuiteReport& r) {
   return tables;
 }
 
-nlohmann::json extract_report_json(const ExtractSuiteReport& r, const std::vector<Table>& tables) {
-  const auto& o = r.options;
-  auto case_json = [](const ExtractCase& c) {
-    nlohmann::json limits = nlohmann::json::array();
-    for (const CaseLimit& l : c.limits) {
-      nlohmann::json j = {{"var", l.var}};
-      if (std::isfinite(l.min)) j["min"] = l.min;
-      if (std::isfinite(l.max)) j["max"] = l.max;
-      limits.push_back(j);
-    }
-    return nlohmann::json{
-        {"name", c.name}, {"label", c.label}, {"limits", limits}, {"select", c.select}};
-  };
+namespace {
+
+nlohmann::json case_json(const ExtractCase& c) {
+  nlohmann::json limits = nlohmann::json::array();
+  for (const CaseLimit& l : c.limits) {
+    nlohmann::json j = {{"var", l.var}};
+    if (std::isfinite(l.min)) j["min"] = l.min;
+    if (std::isfinite(l.max)) j["max"] = l.max;
+    limits.push_back(j);
+  }
+  return nlohmann::json{
+      {"name", c.name}, {"label", c.label}, {"limits", limits}, {"select", c.select}};
+}
+
+nlohmann::json options_json(const ExtractSuiteOptions& o) {
   nlohmann::json cases = nlohmann::json::array(), level_cases = nlohmann::json::array();
   for (const auto& c : o.cases) cases.push_back(case_json(c));
   for (const auto& c : o.level_cases) level_cases.push_back(case_json(c));
+  return {{"dims", {o.dims.x, o.dims.y, o.dims.z}},
+          {"variables", o.variables},
+          {"bricks", o.bricks},
+          {"bricks_per_case", o.bricks_per_case},
+          {"repeat", o.repeat},
+          {"pick_seed", o.pick_seed},
+          {"seed", o.seed},
+          {"threads", o.threads},
+          {"cases", cases},
+          {"levels", o.levels},
+          {"level_brick", o.level_brick},
+          {"level_cases", level_cases},
+          {"level_repeat", o.level_repeat}};
+}
+
+nlohmann::json finite_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
+
+// Per-brick medians and volumes as columns, for anyone recomputing the summaries.
+nlohmann::json brick_group_json(const BrickGroup& g) {
+  nlohmann::json nodes = nlohmann::json::array(), reference = nlohmann::json::array();
+  nlohmann::json seconds = nlohmann::json::object(), volume = nlohmann::json::object();
+  nlohmann::json no_surface = nlohmann::json::object();
+  for (const auto& c : g.contenders) {
+    seconds[c] = nlohmann::json::array();
+    no_surface[c] = nlohmann::json::array();
+    volume[c] = nlohmann::json::array();
+  }
+  for (const BrickRun& run : g.runs) {
+    nodes.push_back(run.node);
+    reference.push_back(run.reference_volume);
+    for (std::size_t i = 0; i < g.contenders.size(); ++i) {
+      seconds[g.contenders[i]].push_back(run.seconds[i]);
+      no_surface[g.contenders[i]].push_back(finite_or_null(run.no_surface_seconds[i]));
+      volume[g.contenders[i]].push_back(finite_or_null(run.volume[i]));
+    }
+  }
+  return {{"case", g.extract_case.name},
+          {"brick", g.brick},
+          {"contenders", g.contenders},
+          {"candidates", g.candidates},
+          {"group_seconds", g.seconds},
+          {"nodes", nodes},
+          {"median_seconds", seconds},
+          {"no_surface_median_seconds", no_surface},
+          {"volume", volume},
+          {"trilinear_volume", reference}};
+}
+
+nlohmann::json level_group_json(const LevelGroup& g) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const LevelRow& row : g.rows) {
+    rows.push_back({{"level", row.level},
+                    {"seconds_all", row.seconds_all},
+                    {"seconds_one", row.seconds_one},
+                    {"volume", row.volume},
+                    {"volume_error", row.volume_error},
+                    {"distance_to_fine", row.distance_to_fine},
+                    {"distance_from_fine", row.distance_from_fine},
+                    {"triangles", row.triangles}});
+  }
+  return {{"case", g.extract_case.name},
+          {"brick", g.brick},
+          {"threads_all", g.threads_all},
+          {"rows", rows}};
+}
+
+}  // namespace
+
+nlohmann::json extract_report_json(const ExtractSuiteReport& r, const std::vector<Table>& tables) {
+  const auto& o = r.options;
   nlohmann::json targets = nlohmann::json::array();
   for (const auto& t : r.targets) {
     targets.push_back(
@@ -349,20 +423,7 @@ nlohmann::json extract_report_json(const ExtractSuiteReport& r, const std::vecto
   nlohmann::json j = {
       {"suite", "extract"},
       {"command", o.command_line},
-      {"options",
-       {{"dims", {o.dims.x, o.dims.y, o.dims.z}},
-        {"variables", o.variables},
-        {"bricks", o.bricks},
-        {"bricks_per_case", o.bricks_per_case},
-        {"repeat", o.repeat},
-        {"pick_seed", o.pick_seed},
-        {"seed", o.seed},
-        {"threads", o.threads},
-        {"cases", cases},
-        {"levels", o.levels},
-        {"level_brick", o.level_brick},
-        {"level_cases", level_cases},
-        {"level_repeat", o.level_repeat}}},
+      {"options", options_json(o)},
       {"machine", r.machine},
       {"input",
        {{"bytes", r.input.bytes},
@@ -375,59 +436,11 @@ nlohmann::json extract_report_json(const ExtractSuiteReport& r, const std::vecto
       {"tables", nlohmann::json::array()},
   };
   for (const auto& t : tables) j["tables"].push_back(table_json(t));
-  // Per-brick medians and volumes as columns, for anyone recomputing the summaries.
-  auto finite_or_null = [](double v) {
-    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
-  };
   nlohmann::json groups = nlohmann::json::array();
-  for (const BrickGroup& g : r.groups) {
-    nlohmann::json nodes = nlohmann::json::array(), reference = nlohmann::json::array();
-    nlohmann::json seconds = nlohmann::json::object(), volume = nlohmann::json::object();
-    nlohmann::json no_surface = nlohmann::json::object();
-    for (const auto& c : g.contenders) {
-      seconds[c] = nlohmann::json::array();
-      no_surface[c] = nlohmann::json::array();
-      volume[c] = nlohmann::json::array();
-    }
-    for (const BrickRun& run : g.runs) {
-      nodes.push_back(run.node);
-      reference.push_back(run.reference_volume);
-      for (std::size_t i = 0; i < g.contenders.size(); ++i) {
-        seconds[g.contenders[i]].push_back(run.seconds[i]);
-        no_surface[g.contenders[i]].push_back(finite_or_null(run.no_surface_seconds[i]));
-        volume[g.contenders[i]].push_back(finite_or_null(run.volume[i]));
-      }
-    }
-    groups.push_back({{"case", g.extract_case.name},
-                      {"brick", g.brick},
-                      {"contenders", g.contenders},
-                      {"candidates", g.candidates},
-                      {"group_seconds", g.seconds},
-                      {"nodes", nodes},
-                      {"median_seconds", seconds},
-                      {"no_surface_median_seconds", no_surface},
-                      {"volume", volume},
-                      {"trilinear_volume", reference}});
-  }
+  for (const BrickGroup& g : r.groups) groups.push_back(brick_group_json(g));
   j["bricks"] = groups;
   nlohmann::json levels = nlohmann::json::array();
-  for (const LevelGroup& g : r.level_groups) {
-    nlohmann::json rows = nlohmann::json::array();
-    for (const LevelRow& row : g.rows) {
-      rows.push_back({{"level", row.level},
-                      {"seconds_all", row.seconds_all},
-                      {"seconds_one", row.seconds_one},
-                      {"volume", row.volume},
-                      {"volume_error", row.volume_error},
-                      {"distance_to_fine", row.distance_to_fine},
-                      {"distance_from_fine", row.distance_from_fine},
-                      {"triangles", row.triangles}});
-    }
-    levels.push_back({{"case", g.extract_case.name},
-                      {"brick", g.brick},
-                      {"threads_all", g.threads_all},
-                      {"rows", rows}});
-  }
+  for (const LevelGroup& g : r.level_groups) levels.push_back(level_group_json(g));
   j["levels"] = levels;
   return j;
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The `strielad-bench extract` suite (issue 3, "Measured in strielad-bench"): on a
+// The `strielad-bench extract` suite: on a
 // generated sample dataset converted into stores of several brick sizes it compares, on
 // the same level-0 bricks, this project's extraction kernel with the paper's VTK clip
 // pipeline, vtkFlyingEdges3D and OpenVDB's volumeToMesh (one thread each), and measures

@@ -94,7 +94,7 @@ struct IoSuiteReport {
 
 IoSuiteReport run_io_suite(const IoSuiteOptions& options);
 
-// Evaluates the targets from the measurements.
+// Evaluates the io targets (bench/targets.h) from the measurements.
 std::vector<Target> evaluate_io_targets(const IoSuiteReport& report);
 
 std::vector<Table> io_report_tables(const IoSuiteReport& report);

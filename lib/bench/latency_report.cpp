@@ -223,7 +223,7 @@ std::vector<Target> evaluate_latency_targets(const LatencySuiteReport& r) {
 std::vector<Table> latency_report_tables(const LatencySuiteReport& r) {
   return {fly_in_table(r),      phase_table(r),   paper_table(r),
           rapid_table(r),       concurrent_table(r), summary_table(r),
-          targets_table("Targets (issue 4), on this machine's cores", r.targets)};
+          targets_table("Targets, on this machine's cores", r.targets)};
 }
 
 nlohmann::json latency_report_json(const LatencySuiteReport& r, const std::vector<Table>& tables) {

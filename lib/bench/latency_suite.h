@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The `strielad-bench latency` suite (issue 4, "Measured in strielad-bench"): a simulated
+// The `strielad-bench latency` suite: a simulated
 // viewer (bench/cut_client.h: the viewer's own LOD cut code) plays a camera path over
 // loopback against strielad-serve on a generated time step and measures
 //  - the fly-in: how complete the cut is while the camera moves, and how long after it

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The `strielad-bench robustness` suite (issue 6, "Stability on stiff and extreme
-// cases"): runs the robustness matrix (robust/extreme_cases.h) through conversion,
+// The `strielad-bench robustness` suite ("Stability on stiff and
+// extreme cases"): runs the robustness matrix (robust/extreme_cases.h) through conversion,
 // verification, statistics, coarse levels, extraction, the server and advection, and
 // reports each stage's outcome against the expected one (docs/robustness.md).
 #pragma once

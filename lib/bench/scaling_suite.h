@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The `strielad-bench scaling` suite (issue 7, "Scaling"): how cost grows
+// The `strielad-bench scaling` suite ("Scaling"): how cost grows
 //  - with the grid: generated time steps of a quarter, half and the whole of a full grid
 //    (the paper's 1429 x 1556 x 150 by default; the horizontal axes scaled alike), each
 //    converted, then its full-resolution level and one view's LOD cut extracted;

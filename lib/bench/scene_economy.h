@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The `strielad-bench scene` suite (issue 7, "Scene economy"): what a scene and a view
+// The `strielad-bench scene` suite ("Scene economy"): what a scene and a view
 // cost against the whole time step. For a few typical scenes and camera positions on a
 // generated time step, the viewer's own level-of-detail cut (lib/lod) is extracted node
 // by node through the server's node task (serve/node_executor.h, the code a server runs),

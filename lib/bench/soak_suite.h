@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The `strielad-bench soak` suite (issue 28, "The server's memory and connection slots
+// The `strielad-bench soak` suite ("The server's memory and connection slots
 // are bounded"): strielad-serve as a child process on loopback against normal clients
 // doing real work in a loop, slow readers that send requests and never read, and
 // tricklers that send a handshake byte every few seconds (bench/soak_clients.h), for a

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The `strielad-bench view` suite (issue 5, "Measured in strielad-bench"), side by side
+// The `strielad-bench view` suite, side by side
 // in one run:
 //  1. LodCut::update per frame along the default fly-in on the paper's 51,393-node
 //     octree (1429 x 1556 x 150, brick 20; built from the axes alone, no data);

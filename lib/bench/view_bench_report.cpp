@@ -199,7 +199,7 @@ std::vector<Target> evaluate_view_targets(const ViewSuiteReport& r) {
 
 std::vector<Table> view_report_tables(const ViewSuiteReport& r) {
   return {cut_update_table(r), frame_table(r), abuffer_table(r), time_change_table(r),
-          targets_table("Targets (issue 5), on this machine", r.targets,
+          targets_table("Targets, on this machine", r.targets,
                         r.software_gl ? std::vector<std::string>{"rendered with software OpenGL "
                                                                  "(" + r.gl + ")"}
                                       : std::vector<std::string>{})};

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // OpenVDB's volumeToMesh on one node's samples: a peer of this project's kernel for
-// tests and strielad-bench (issue 3). OpenVDB types stay inside the .cpp (~40 s to
+// tests and strielad-bench. OpenVDB types stay inside the .cpp (~40 s to
 // compile: OpenVDB core plus the volumeToMesh templates).
 //
 // The field is copied into a FloatGrid in index space (voxel (i, j, k) = sample (i, j, k),

@@ -280,60 +280,76 @@ void measure_with_vtk(vtkPolyData* surface, PeerResult& result,
   result.non_manifold_edges = std::uint64_t(non_manifold->GetOutput()->GetNumberOfLines());
 }
 
-PeerResult paper_pipeline(const NodeSamples& samples, const PaperSubvolume& sv,
-                          const PaperPipelineOptions& options) {
-  PeerResult result;
-  result.cells = lattice_cells(samples);
-
-  // Fields VTK needs: those with limits, then attributes.
+// The fields VTK needs (those with limits, then attributes), each with the value its NaN
+// samples become (NaN: kept), and whether a limit's field has a NaN to replace.
+struct VtkFields {
   std::vector<std::size_t> fields;
+  std::vector<float> nan_values;
+  bool limit_field_has_nan = false;
+};
+
+VtkFields vtk_fields(const NodeSamples& samples, const PaperSubvolume& sv,
+                     const PaperPipelineOptions& options) {
+  VtkFields out;
   auto add_field = [&](std::size_t f) {
-    if (std::find(fields.begin(), fields.end(), f) == fields.end()) fields.push_back(f);
+    if (std::find(out.fields.begin(), out.fields.end(), f) == out.fields.end()) {
+      out.fields.push_back(f);
+    }
   };
   for (const auto& limit : sv.limits) add_field(limit.field);
   for (const auto& attribute : options.attributes) add_field(attribute.field);
-  std::vector<float> nan_values;
-  bool limit_field_has_nan = false;
-  for (std::size_t f : fields) {
-    nan_values.push_back(nan_replacement(sv, f));
-    if (!std::isnan(nan_values.back())) {
+  for (std::size_t f : out.fields) {
+    out.nan_values.push_back(nan_replacement(sv, f));
+    if (!std::isnan(out.nan_values.back())) {
       for (float v : samples.fields[f]) {
         if (std::isnan(v)) {
-          limit_field_has_nan = true;
+          out.limit_field_has_nan = true;
           break;
         }
       }
     }
   }
-  const bool drop_nan_cells = options.nan_policy == NanPolicy::kDropCells && limit_field_has_nan;
+  return out;
+}
 
-  vtkNew<vtk_support::ErrorCapture> errors;
-  const auto start = Clock::now();
-  vtkSmartPointer<vtkRectilinearGrid> grid =
-      make_rectilinear_grid(samples, fields, nan_values, drop_nan_cells);
+// A linear VTK pipeline on one grid: each filter reads the one before it.
+class FilterChain {
+ public:
+  FilterChain(vtkSmartPointer<vtkRectilinearGrid> grid, vtk_support::ErrorCapture& errors)
+      : grid_(std::move(grid)), errors_(errors) {}
 
-  std::vector<vtkSmartPointer<vtkAlgorithm>> chain;
-  auto append = [&](vtkSmartPointer<vtkAlgorithm> filter) {
-    errors->watch(filter);
-    if (chain.empty()) {
-      filter->SetInputDataObject(grid);
+  void append(vtkSmartPointer<vtkAlgorithm> filter) {
+    errors_.watch(filter);
+    if (chain_.empty()) {
+      filter->SetInputDataObject(grid_);
     } else {
-      filter->SetInputConnection(chain.back()->GetOutputPort());
+      filter->SetInputConnection(chain_.back()->GetOutputPort());
     }
-    chain.push_back(std::move(filter));
-  };
-
-  if (drop_nan_cells) {
-    auto threshold = vtkSmartPointer<vtkThreshold>::New();
-    threshold->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
-                                      "strielad_valid");
-    threshold->SetLowerThreshold(0.5);
-    threshold->SetUpperThreshold(1.5);
-    threshold->SetThresholdFunction(vtkThreshold::THRESHOLD_BETWEEN);
-    threshold->SetAllScalars(1);  // a cell is kept when all its points are valid
-    threshold->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-    append(threshold);
+    chain_.push_back(std::move(filter));
   }
+
+ private:
+  vtkSmartPointer<vtkRectilinearGrid> grid_;
+  vtk_support::ErrorCapture& errors_;
+  std::vector<vtkSmartPointer<vtkAlgorithm>> chain_;
+};
+
+// Keeps only the cells whose points are all valid (make_rectilinear_grid's
+// "strielad_valid" array).
+void append_valid_cells(FilterChain& chain) {
+  auto threshold = vtkSmartPointer<vtkThreshold>::New();
+  threshold->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+                                    "strielad_valid");
+  threshold->SetLowerThreshold(0.5);
+  threshold->SetUpperThreshold(1.5);
+  threshold->SetThresholdFunction(vtkThreshold::THRESHOLD_BETWEEN);
+  threshold->SetAllScalars(1);  // a cell is kept when all its points are valid
+  threshold->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  chain.append(threshold);
+}
+
+// One scalar clip per bound of every limit.
+void append_limit_clips(FilterChain& chain, const PaperSubvolume& sv) {
   for (const auto& limit : sv.limits) {
     const std::string name = field_array_name(limit.field);
     for (int side = 0; side < 2; ++side) {
@@ -345,39 +361,46 @@ PeerResult paper_pipeline(const NodeSamples& samples, const PaperSubvolume& sv,
       clip->SetInsideOut(side == 1);  // min: keep >= min; max: keep <= max
       clip->GenerateClipScalarsOff();
       clip->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-      append(clip);
+      chain.append(clip);
     }
   }
-  if (sv.domain) {
-    for (int a = 0; a < 3; ++a) {
-      const auto& c = samples.coords[a];
-      const double node_lo = std::min(c.front(), c.back());
-      const double node_hi = std::max(c.front(), c.back());
-      for (int side = 0; side < 2; ++side) {
-        const double bound = side == 0 ? sv.domain->lo[a] : sv.domain->hi[a];
-        // A side with the whole node on its inside changes nothing: no clip.
-        if (side == 0 ? !(bound > node_lo) : !(bound < node_hi)) continue;
-        vtkNew<vtkPlane> plane;
-        double origin[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
-        origin[a] = bound;
-        normal[a] = side == 0 ? 1.0 : -1.0;  // function >= 0 inside the box
-        plane->SetOrigin(origin);
-        plane->SetNormal(normal);
-        auto clip = vtkSmartPointer<vtkTableBasedClipDataSet>::New();
-        clip->SetClipFunction(plane);
-        clip->SetValue(0.0);
-        clip->InsideOutOff();
-        clip->GenerateClipScalarsOff();
-        clip->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-        append(clip);
-      }
+}
+
+// One plane clip per side of the sub-volume's box that cuts the node.
+void append_domain_clips(FilterChain& chain, const NodeSamples& samples, const AxisBox& domain) {
+  for (int a = 0; a < 3; ++a) {
+    const auto& c = samples.coords[a];
+    const double node_lo = std::min(c.front(), c.back());
+    const double node_hi = std::max(c.front(), c.back());
+    for (int side = 0; side < 2; ++side) {
+      const double bound = side == 0 ? domain.lo[a] : domain.hi[a];
+      // A side with the whole node on its inside changes nothing: no clip.
+      if (side == 0 ? !(bound > node_lo) : !(bound < node_hi)) continue;
+      vtkNew<vtkPlane> plane;
+      double origin[3] = {0, 0, 0}, normal[3] = {0, 0, 0};
+      origin[a] = bound;
+      normal[a] = side == 0 ? 1.0 : -1.0;  // function >= 0 inside the box
+      plane->SetOrigin(origin);
+      plane->SetNormal(normal);
+      auto clip = vtkSmartPointer<vtkTableBasedClipDataSet>::New();
+      clip->SetClipFunction(plane);
+      clip->SetValue(0.0);
+      clip->InsideOutOff();
+      clip->GenerateClipScalarsOff();
+      clip->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+      chain.append(clip);
     }
   }
-  append(vtkSmartPointer<vtkDataSetSurfaceFilter>::New());
+}
+
+// The clipped cells' outer surface as triangles with consistent point normals; the last
+// filter of the chain.
+vtkSmartPointer<vtkPolyDataNormals> append_surface(FilterChain& chain) {
+  chain.append(vtkSmartPointer<vtkDataSetSurfaceFilter>::New());
   auto triangles = vtkSmartPointer<vtkTriangleFilter>::New();
   triangles->PassVertsOff();
   triangles->PassLinesOff();
-  append(triangles);
+  chain.append(triangles);
   // The surface filter emits each boundary face with its cell's outward orientation
   // (VTK cell faces are outward and the grid is ascending), so Consistency keeps every
   // connected piece outward; AutoOrientNormals would turn the inner wall of a shell
@@ -389,12 +412,14 @@ PeerResult paper_pipeline(const NodeSamples& samples, const PaperSubvolume& sv,
   normals->ConsistencyOn();
   normals->AutoOrientNormalsOff();
   normals->NonManifoldTraversalOff();
-  append(normals);
-  normals->Update();
-  result.seconds = seconds_since(start);
-  throw_if_failed(*errors, kPaperWho);
+  chain.append(normals);
+  return normals;
+}
 
-  vtkPolyData* surface = normals->GetOutput();
+// The pipeline's surface as result.mesh, its faces classified, and its edges counted.
+void take_surface(vtkPolyData* surface, const NodeSamples& samples, const PaperSubvolume& sv,
+                  const PaperPipelineOptions& options, vtk_support::ErrorCapture& errors,
+                  PeerResult& result) {
   result.mesh = to_mesh(surface, options.attributes);
   result.mesh.subvolume_id = sv.id;
   const bool float_points =
@@ -402,8 +427,8 @@ PeerResult paper_pipeline(const NodeSamples& samples, const PaperSubvolume& sv,
   classify_faces(result.mesh, samples, sv.domain, float_points);
   result.divergence_volume = enclosed_volume(result.mesh);
   if (options.measure && !result.mesh.empty()) {
-    measure_with_vtk(surface, result, *errors);
-    throw_if_failed(*errors, kPaperWho);
+    measure_with_vtk(surface, result, errors);
+    throw_if_failed(errors, kPaperWho);
   } else {
     const EdgeCounts edges = count_open_edges(result.mesh);
     result.boundary_edges = edges.boundary;
@@ -411,6 +436,28 @@ PeerResult paper_pipeline(const NodeSamples& samples, const PaperSubvolume& sv,
   }
   result.closed = !result.mesh.empty() && result.boundary_edges == 0 &&
                   result.non_manifold_edges == 0;
+}
+
+PeerResult paper_pipeline(const NodeSamples& samples, const PaperSubvolume& sv,
+                          const PaperPipelineOptions& options) {
+  PeerResult result;
+  result.cells = lattice_cells(samples);
+  const VtkFields fields = vtk_fields(samples, sv, options);
+  const bool drop_nan_cells =
+      options.nan_policy == NanPolicy::kDropCells && fields.limit_field_has_nan;
+
+  vtkNew<vtk_support::ErrorCapture> errors;
+  const auto start = Clock::now();
+  FilterChain chain(
+      make_rectilinear_grid(samples, fields.fields, fields.nan_values, drop_nan_cells), *errors);
+  if (drop_nan_cells) append_valid_cells(chain);
+  append_limit_clips(chain, sv);
+  if (sv.domain) append_domain_clips(chain, samples, *sv.domain);
+  const auto normals = append_surface(chain);
+  normals->Update();
+  result.seconds = seconds_since(start);
+  throw_if_failed(*errors, kPaperWho);
+  take_surface(normals->GetOutput(), samples, sv, options, *errors, result);
   return result;
 }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The STRIELAD paper's extraction pipeline, run with VTK 9.1 on one node's samples, and
 // vtkFlyingEdges3D on the same samples: the references this project's kernel is tested
-// and benchmarked against (issue 3). VTK types stay inside vtk_paper_pipeline.cpp.
+// and benchmarked against. VTK types stay inside vtk_paper_pipeline.cpp.
 //
 // Paper pipeline, per node and sub-volume:
 //   samples -> vtkRectilinearGrid (axes as stored; a descending axis is mirrored into
@@ -20,8 +20,8 @@
 // The paper's ICON-LEM grid has a stretched height axis, so a vtkRectilinearGrid is what
 // it needs; it is used for uniform axes too, to keep one code path.
 //
-// Missing samples. The paper's data had none; the issue's rule is "fill/NaN samples are
-// outside". VTK's clip would compare NaN as neither inside nor outside, so NaN samples
+// Missing samples. The paper's data had none; this project's rule is "fill/NaN samples
+// are outside". VTK's clip would compare NaN as neither inside nor outside, so NaN samples
 // of a field that has limits are replaced, in the copy given to VTK, by a value far
 // outside the first of its limits (min - 1e6 (|min| + 1), or max + 1e6 (|max| + 1),
 // peers/peer_input.h). A clip edge from a valid sample to a NaN sample is then cut
@@ -92,7 +92,7 @@ struct PaperPipelineOptions {
   std::vector<AttributeField> attributes;
   NanPolicy nan_policy = NanPolicy::kFarOutside;
   // 1: VTK runs in a one-thread oneTBB arena (VTK 9.1's SMP backend here is TBB), giving
-  // the per-core figures the issue asks for; 0: the caller's arena (all cores); n: n.
+  // per-core figures; 0: the caller's arena (all cores); n: n.
   unsigned threads = 1;
   // Run vtkMassProperties and vtkFeatureEdges on the result (not timed).
   bool measure = true;

@@ -308,16 +308,127 @@ Scene case_scene(const ExtremeCase& c, const format::Manifest& manifest) {
   return scene;
 }
 
-StageFindings check_extraction(const ExtremeCase& c, const Store& store, int threads) {
-  StageFindings f;
+namespace {
+
+// Every node's value range in the input, widened on the coarse levels to the samples
+// those levels hold.
+std::vector<NodeReference> reference_ranges(const ExtremeCase& c, const Store& store) {
   const OctreeLayout& layout = store.octree();
-  const ResolvedScene scene = resolve_scene(case_scene(c, store.manifest()), store.manifest(), c.name);
   const std::vector<std::vector<double>> level0 = reference_level0(c);
   std::vector<NodeReference> ranges = reference_node_stats(layout, level0.at(0));
   for (std::size_t level = 1; level < layout.level_count(); ++level) {
     widen_to_level_samples(ranges, layout, level, read_level_samples(store, 0, 0, level).values);
   }
+  return ranges;
+}
+
+struct ExtractionTally {
   std::uint64_t meshes = 0, empty = 0, skipped = 0, triangles = 0, pinches = 0;
+};
+
+// One level's extraction against the input: what every sub-volume result is checked with.
+struct LevelCheck {
+  const Store& store;
+  const ResolvedScene& scene;
+  const std::vector<NodeReference>& ranges;
+  const LevelSamples& samples;
+  std::size_t level;
+  bool longitude_x;
+};
+
+bool is_skip(NodeOutcome outcome) {
+  return outcome == NodeOutcome::kSkippedValueRange || outcome == NodeOutcome::kSkippedNoData ||
+         outcome == NodeOutcome::kSkippedDomain;
+}
+
+// A skip, an empty result or a mesh as the node's box and the input's value range call for.
+void check_outcome(const std::string& where, const SubVolumeResult& sv,
+                   const ResolvedSubVolume& rsv, const NodeReference& r, bool outside_box,
+                   StageFindings& f) {
+  const bool skip = is_skip(sv.outcome);
+  if (sv.outcome == NodeOutcome::kSkippedDomain && !outside_box) {
+    f.problem("{}: skipped by domain ({}) but the node meets the domain", where, sv.reason);
+  } else if (!rsv.limits.empty() && !(outside_box && (skip || sv.outcome == NodeOutcome::kEmpty))) {
+    const ResolvedLimit& limit = rsv.limits.front();
+    const NodeOutcome want = std::isnan(r.min) ? NodeOutcome::kSkippedNoData
+                             : (r.max < limit.min || r.min > limit.max)
+                                 ? NodeOutcome::kSkippedValueRange
+                                 : NodeOutcome::kMesh;
+    if (want != NodeOutcome::kMesh && sv.outcome != want) {
+      f.problem("{}: {} but the input's range [{}, {}] calls for {}", where,
+                node_outcome_name(sv.outcome), r.min, r.max, node_outcome_name(want));
+    } else if (want == NodeOutcome::kMesh && skip) {
+      f.problem("{}: {} ({}) but the input's range [{}, {}] meets [{}, {}]", where,
+                node_outcome_name(sv.outcome), sv.reason, r.min, r.max, limit.min, limit.max);
+    }
+  }
+  if (sv.outcome != NodeOutcome::kMesh && !sv.mesh.empty()) {
+    f.problem("{}: outcome {} with triangles", where, node_outcome_name(sv.outcome));
+  }
+}
+
+// The region's volume inside the node: the domain's part of the box without limits,
+// between the cells wholly inside and those touching a lone limit.
+void check_node_volume(const LevelCheck& lc, const std::string& where, const Mesh& mesh,
+                       const ResolvedSubVolume& rsv, const NodeGeometry& g, const IndexBox& box,
+                       StageFindings& f) {
+  const double volume = enclosed_volume(mesh);
+  const double slack = 1e-9 * box_volume(g);
+  if (rsv.limits.empty()) {
+    const double want = box_part(g, rsv, lc.store.manifest());
+    if (std::fabs(volume - want) > slack + 1e-9 * want) {
+      f.problem("{}: encloses {} but the domain cuts {} out of the node", where, volume, want);
+    }
+  } else if (rsv.box != std::array<AxisRange, 3>{AxisRange{-kInfinity, kInfinity},
+                                                 AxisRange{-kInfinity, kInfinity},
+                                                 AxisRange{-kInfinity, kInfinity}}) {
+    // A limit inside a box: checked on the level's union against VTK (check_unions).
+  } else {
+    const VolumeBounds b = limit_volume_bounds(lc.samples, box, g, rsv.limits.front());
+    if (volume < b.lower * (1 - 1e-9) - slack || volume > b.upper * (1 + 1e-9) + slack) {
+      f.problem("{}: encloses {}, outside [{}, {}] (cells wholly inside .. touching the limit)",
+                where, volume, b.lower, b.upper);
+    }
+  }
+}
+
+// Every sub-volume result of one node.
+void check_node(const LevelCheck& lc, const NodeExtraction& node, StageFindings& f,
+                ExtractionTally& tally) {
+  const OctreeLayout& layout = lc.store.octree();
+  const IndexBox box = layout.level_box(layout.key(node.node));
+  const NodeGeometry g = node_geometry(lc.store, node.node);
+  const bool missing = any_missing(lc.samples, box);
+  const NodeReference& r = lc.ranges[node.node];
+  for (std::size_t s = 0; s < node.results.size(); ++s) {
+    const SubVolumeResult& sv = node.results[s];
+    const ResolvedSubVolume& rsv = lc.scene.subvolumes[s];
+    const std::string where =
+        fmt::format("level {} node {} sub-volume {}", lc.level, node.node, sv.subvolume_id);
+    const bool skip = is_skip(sv.outcome);
+    tally.skipped += skip ? 1 : 0;
+    tally.empty += sv.outcome == NodeOutcome::kEmpty ? 1 : 0;
+    const bool outside_box = box_part(g, rsv, lc.store.manifest()) == 0;
+    check_outcome(where, sv, rsv, r, outside_box, f);
+    if (skip) continue;
+    if (sv.outcome == NodeOutcome::kMesh) {
+      ++tally.meshes;
+      tally.triangles += sv.mesh.triangle_count();
+      check_mesh_content(sv.mesh, g, missing, 1e-12, true, lc.longitude_x, f, where,
+                         &tally.pinches);
+    }
+    check_node_volume(lc, where, sv.mesh, rsv, g, box, f);
+  }
+}
+
+}  // namespace
+
+StageFindings check_extraction(const ExtremeCase& c, const Store& store, int threads) {
+  StageFindings f;
+  const OctreeLayout& layout = store.octree();
+  const ResolvedScene scene = resolve_scene(case_scene(c, store.manifest()), store.manifest(), c.name);
+  const std::vector<NodeReference> ranges = reference_ranges(c, store);
+  ExtractionTally tally;
   UnionTally unions;
   const bool longitude_x = store.manifest().x.kind == AxisKind::kLongitude;
   std::vector<std::string> per_level;
@@ -335,77 +446,17 @@ StageFindings check_extraction(const ExtremeCase& c, const Store& store, int thr
       return f;
     }
     const LevelSamples samples = read_level_samples(store, 0, 0, level);
-    for (const NodeExtraction& node : result.nodes) {
-      const NodeKey key = layout.key(node.node);
-      const IndexBox box = layout.level_box(key);
-      const NodeGeometry g = node_geometry(store, node.node);
-      const bool missing = any_missing(samples, box);
-      const NodeReference& r = ranges[node.node];
-      for (std::size_t s = 0; s < node.results.size(); ++s) {
-        const SubVolumeResult& sv = node.results[s];
-        const ResolvedSubVolume& rsv = scene.subvolumes[s];
-        const std::string where =
-            fmt::format("level {} node {} sub-volume {}", level, node.node, sv.subvolume_id);
-        const bool skip = sv.outcome == NodeOutcome::kSkippedValueRange ||
-                          sv.outcome == NodeOutcome::kSkippedNoData ||
-                          sv.outcome == NodeOutcome::kSkippedDomain;
-        skipped += skip ? 1 : 0;
-        empty += sv.outcome == NodeOutcome::kEmpty ? 1 : 0;
-        const bool outside_box = box_part(g, rsv, store.manifest()) == 0;
-        if (sv.outcome == NodeOutcome::kSkippedDomain && !outside_box) {
-          f.problem("{}: skipped by domain ({}) but the node meets the domain", where, sv.reason);
-        } else if (!rsv.limits.empty() && !(outside_box && (skip || sv.outcome == NodeOutcome::kEmpty))) {
-          const ResolvedLimit& limit = rsv.limits.front();
-          const NodeOutcome want = std::isnan(r.min) ? NodeOutcome::kSkippedNoData
-                                   : (r.max < limit.min || r.min > limit.max)
-                                       ? NodeOutcome::kSkippedValueRange
-                                       : NodeOutcome::kMesh;
-          if (want != NodeOutcome::kMesh && sv.outcome != want) {
-            f.problem("{}: {} but the input's range [{}, {}] calls for {}", where,
-                      node_outcome_name(sv.outcome), r.min, r.max, node_outcome_name(want));
-          } else if (want == NodeOutcome::kMesh && skip) {
-            f.problem("{}: {} ({}) but the input's range [{}, {}] meets [{}, {}]", where,
-                      node_outcome_name(sv.outcome), sv.reason, r.min, r.max, limit.min, limit.max);
-          }
-        }
-        if (sv.outcome != NodeOutcome::kMesh && !sv.mesh.empty()) {
-          f.problem("{}: outcome {} with triangles", where, node_outcome_name(sv.outcome));
-        }
-        if (skip) continue;
-        if (sv.outcome == NodeOutcome::kMesh) {
-          ++meshes;
-          triangles += sv.mesh.triangle_count();
-          check_mesh_content(sv.mesh, g, missing, 1e-12, true, longitude_x, f, where, &pinches);
-        }
-        // The region's volume inside the node.
-        const double volume = enclosed_volume(sv.mesh);
-        const double slack = 1e-9 * box_volume(g);
-        if (rsv.limits.empty()) {
-          const double want = box_part(g, rsv, store.manifest());
-          if (std::fabs(volume - want) > slack + 1e-9 * want) {
-            f.problem("{}: encloses {} but the domain cuts {} out of the node", where, volume, want);
-          }
-        } else if (rsv.box != std::array<AxisRange, 3>{AxisRange{-kInfinity, kInfinity},
-                                                       AxisRange{-kInfinity, kInfinity},
-                                                       AxisRange{-kInfinity, kInfinity}}) {
-          // A limit inside a box: checked on the level's union against VTK (below).
-        } else {
-          const VolumeBounds b = limit_volume_bounds(samples, box, g, rsv.limits.front());
-          if (volume < b.lower * (1 - 1e-9) - slack || volume > b.upper * (1 + 1e-9) + slack) {
-            f.problem("{}: encloses {}, outside [{}, {}] (cells wholly inside .. touching the limit)",
-                      where, volume, b.lower, b.upper);
-          }
-        }
-      }
-    }
+    const LevelCheck lc{store, scene, ranges, samples, level, longitude_x};
+    for (const NodeExtraction& node : result.nodes) check_node(lc, node, f, tally);
     if (c.check_unions) check_unions(store, scene, result, level, f, unions);
     per_level.push_back(fmt::format("level {}: {} nodes", level, result.nodes.size()));
   }
   f.summary = fmt::format("{}; {} meshes ({} triangles), {} empty, {} skipped, all checked{}{}",
-                          fmt::join(per_level, ", "), meshes, triangles, empty, skipped,
-                          pinches ? fmt::format("; {} edges where the region touches itself "
-                                                "(4 triangles each, balanced)", pinches)
-                                  : std::string(),
+                          fmt::join(per_level, ", "), tally.meshes, tally.triangles, tally.empty,
+                          tally.skipped,
+                          tally.pinches ? fmt::format("; {} edges where the region touches itself "
+                                                      "(4 triangles each, balanced)", tally.pinches)
+                                        : std::string(),
                           c.check_unions ? fmt::format("; {} seamless unions closed, volumes "
                                                        "within {:.2g} of VTK's table clip "
                                                        "(boxes every level, limits level 0)",
@@ -414,10 +465,9 @@ StageFindings check_extraction(const ExtremeCase& c, const Store& store, int thr
   return f;
 }
 
-StageFindings check_server(const ExtremeCase& c, const std::filesystem::path& root,
-                           const std::string& dataset, int threads,
-                           std::chrono::milliseconds timeout) {
-  StageFindings f;
+namespace {
+
+serve::ServerConfig check_server_config(const std::filesystem::path& root, int threads) {
   serve::ServerConfig config;
   config.root = root;
   config.listen = net::Endpoint{"127.0.0.1", 0};
@@ -427,6 +477,109 @@ StageFindings check_server(const ExtremeCase& c, const std::filesystem::path& ro
   config.cache_bytes = 16 << 20;
   config.max_clients = 2;
   config.server_name = "strielad robustness check";
+  return config;
+}
+
+// The root and the coarse levels first, then level-0 nodes, at most 64 in all.
+std::vector<protocol::NodePriority> coarse_first_cut(const OctreeLayout& layout) {
+  std::vector<protocol::NodePriority> cut;
+  for (NodeId n = static_cast<NodeId>(layout.node_count()); n-- > 0 && cut.size() < 64;) {
+    cut.push_back({n, static_cast<float>(cut.size())});
+  }
+  return cut;
+}
+
+// What the server answered so far.
+struct ServerAnswers {
+  std::map<NodeId, bool> answered;
+  std::uint64_t meshes = 0, failures = 0;
+  std::string first_failure;
+};
+
+// A node's result over the wire against batch extraction of the same node.
+void compare_with_batch(const protocol::NodeResult& r, const Store& store,
+                        const ResolvedScene& resolved, StageFindings& f, ServerAnswers& answers) {
+  const NodeExtraction batch = extract_node(store, nullptr, resolved, 0, r.node);
+  if (r.subvolumes.size() != batch.results.size()) {
+    f.problem("node {}: {} sub-volumes, batch extraction {}", r.node, r.subvolumes.size(),
+              batch.results.size());
+    return;
+  }
+  const NodeGeometry g = node_geometry(store, r.node);
+  for (std::size_t s = 0; s < batch.results.size(); ++s) {
+    const auto& got = r.subvolumes[s];
+    const auto& want = batch.results[s];
+    const std::string where = fmt::format("node {} sub-volume {}", r.node, want.subvolume_id);
+    if (got.outcome != want.outcome || got.reason != want.reason) {
+      f.problem("{}: {} ({}) over the wire, {} ({}) in batch", where,
+                node_outcome_name(got.outcome), got.reason, node_outcome_name(want.outcome),
+                want.reason);
+      continue;
+    }
+    if (got.mesh.triangles != want.mesh.triangles || got.mesh.face_kinds != want.mesh.face_kinds) {
+      f.problem("{}: {} triangles over the wire, {} in batch", where, got.mesh.triangle_count(),
+                want.mesh.triangle_count());
+      continue;
+    }
+    if (got.outcome != NodeOutcome::kMesh) continue;
+    ++answers.meshes;
+    bool missing = false;
+    for (float v : want.mesh.attributes.at(0)) missing = missing || std::isnan(v);
+    // Positions are quantized to 1/65535 of the mesh's box per axis.
+    check_mesh_content(got.mesh, g, missing, 1.0 / 65535.0, false,
+                       store.manifest().x.kind == AxisKind::kLongitude, f, where, nullptr);
+  }
+}
+
+// The scene the server was asked for and what its answers are compared with.
+struct ServerCheck {
+  const client::ServerClient& client;
+  std::size_t cut_size;
+  std::chrono::milliseconds timeout;
+  std::uint32_t generation;
+  const Store& store;
+  const ResolvedScene& resolved;
+};
+
+// One message from the server; false when no more are to be read (timeout, error).
+bool take_message(const std::optional<protocol::Message>& message, const ServerCheck& sc,
+                  StageFindings& f, ServerAnswers& answers) {
+  if (!message) {
+    f.problem("{} of {} nodes answered within {} ms ({})", answers.answered.size(), sc.cut_size,
+              sc.timeout.count(), sc.client.close_reason());
+    return false;
+  }
+  if (auto* e = std::get_if<protocol::ErrorMessage>(&*message)) {
+    f.problem("server error: {}", e->message);
+    return false;
+  }
+  if (auto* failed = std::get_if<protocol::NodeFailed>(&*message)) {
+    answers.answered[failed->node] = true;
+    if (answers.failures++ == 0) answers.first_failure = failed->message;
+    if (failed->code == protocol::WireError::kInternal) {
+      f.problem("node {} failed with an internal error: {}", failed->node, failed->message);
+    }
+    return true;
+  }
+  auto* r = std::get_if<protocol::NodeResult>(&*message);
+  if (!r) return true;
+  if (r->generation != sc.generation) {
+    f.problem("node {}: result of generation {}, expected {}", r->node, r->generation,
+              sc.generation);
+  }
+  if (answers.answered.count(r->node) != 0) f.problem("node {} answered twice", r->node);
+  answers.answered[r->node] = true;
+  compare_with_batch(*r, sc.store, sc.resolved, f, answers);
+  return true;
+}
+
+}  // namespace
+
+StageFindings check_server(const ExtremeCase& c, const std::filesystem::path& root,
+                           const std::string& dataset, int threads,
+                           std::chrono::milliseconds timeout) {
+  StageFindings f;
+  const serve::ServerConfig config = check_server_config(root, threads);
   serve::Server server(config);
   server.start();
   client::ClientOptions options;
@@ -437,90 +590,30 @@ StageFindings check_server(const ExtremeCase& c, const std::filesystem::path& ro
   client->open_dataset(dataset);
   const Scene scene = case_scene(c, client->manifest());
   const auto started = client->set_scene(scene);
-  const OctreeLayout& layout = client->octree();
-
-  // The root and the coarse levels first, then level-0 nodes, at most 64 in all.
-  std::vector<protocol::NodePriority> cut;
-  for (NodeId n = static_cast<NodeId>(layout.node_count()); n-- > 0 && cut.size() < 64;) {
-    cut.push_back({n, static_cast<float>(cut.size())});
-  }
+  const std::vector<protocol::NodePriority> cut = coarse_first_cut(client->octree());
   client->update_cut(cut, {}, {});
 
   const auto store = Store::open(root / dataset);
   const ResolvedScene resolved = resolve_scene(scene, store->manifest(), c.name);
-  std::map<NodeId, bool> answered;
-  std::uint64_t meshes = 0, failures = 0;
-  std::string first_failure;
+  const ServerCheck sc{*client, cut.size(), timeout, started.generation, *store, resolved};
+  ServerAnswers answers;
   const auto deadline = std::chrono::steady_clock::now() + timeout;
-  while (answered.size() < cut.size()) {
+  while (answers.answered.size() < cut.size()) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
         deadline - std::chrono::steady_clock::now());
-    auto message = left.count() > 0 ? client->wait(left) : std::nullopt;
-    if (!message) {
-      f.problem("{} of {} nodes answered within {} ms ({})", answered.size(), cut.size(),
-                timeout.count(), client->close_reason());
-      break;
-    }
-    if (auto* e = std::get_if<protocol::ErrorMessage>(&*message)) {
-      f.problem("server error: {}", e->message);
-      break;
-    }
-    if (auto* failed = std::get_if<protocol::NodeFailed>(&*message)) {
-      answered[failed->node] = true;
-      if (failures++ == 0) first_failure = failed->message;
-      if (failed->code == protocol::WireError::kInternal) {
-        f.problem("node {} failed with an internal error: {}", failed->node, failed->message);
-      }
-      continue;
-    }
-    auto* r = std::get_if<protocol::NodeResult>(&*message);
-    if (!r) continue;
-    if (r->generation != started.generation) {
-      f.problem("node {}: result of generation {}, expected {}", r->node, r->generation,
-                started.generation);
-    }
-    if (answered.count(r->node) != 0) f.problem("node {} answered twice", r->node);
-    answered[r->node] = true;
-    const NodeExtraction batch = extract_node(*store, nullptr, resolved, 0, r->node);
-    if (r->subvolumes.size() != batch.results.size()) {
-      f.problem("node {}: {} sub-volumes, batch extraction {}", r->node, r->subvolumes.size(),
-                batch.results.size());
-      continue;
-    }
-    const NodeGeometry g = node_geometry(*store, r->node);
-    for (std::size_t s = 0; s < batch.results.size(); ++s) {
-      const auto& got = r->subvolumes[s];
-      const auto& want = batch.results[s];
-      const std::string where = fmt::format("node {} sub-volume {}", r->node, want.subvolume_id);
-      if (got.outcome != want.outcome || got.reason != want.reason) {
-        f.problem("{}: {} ({}) over the wire, {} ({}) in batch", where,
-                  node_outcome_name(got.outcome), got.reason, node_outcome_name(want.outcome),
-                  want.reason);
-        continue;
-      }
-      if (got.mesh.triangles != want.mesh.triangles || got.mesh.face_kinds != want.mesh.face_kinds) {
-        f.problem("{}: {} triangles over the wire, {} in batch", where, got.mesh.triangle_count(),
-                  want.mesh.triangle_count());
-        continue;
-      }
-      if (got.outcome != NodeOutcome::kMesh) continue;
-      ++meshes;
-      bool missing = false;
-      for (float v : want.mesh.attributes.at(0)) missing = missing || std::isnan(v);
-      // Positions are quantized to 1/65535 of the mesh's box per axis.
-      check_mesh_content(got.mesh, g, missing, 1.0 / 65535.0, false,
-                         store->manifest().x.kind == AxisKind::kLongitude, f, where, nullptr);
-    }
+    const auto message = left.count() > 0 ? client->wait(left) : std::nullopt;
+    if (!take_message(message, sc, f, answers)) break;
   }
-  if (failures > 0 && f.ok()) {
-    if (failures == answered.size()) {
-      f.refusal = fmt::format("every node failed: {}", first_failure);
+  if (answers.failures > 0 && f.ok()) {
+    if (answers.failures == answers.answered.size()) {
+      f.refusal = fmt::format("every node failed: {}", answers.first_failure);
     } else {
-      f.problem("{} of {} nodes failed, e.g.: {}", failures, answered.size(), first_failure);
+      f.problem("{} of {} nodes failed, e.g.: {}", answers.failures, answers.answered.size(),
+                answers.first_failure);
     }
   }
   f.summary = fmt::format("{} nodes answered, {} meshes, equal to batch extraction",
-                          answered.size(), meshes);
+                          answers.answered.size(), answers.meshes);
   client.reset();
   server.stop();
   return f;

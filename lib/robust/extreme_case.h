@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// One extreme input of the robustness matrix (issue 6, "Stability on stiff and extreme
-// cases"; docs/robustness.md): a small CF-NetCDF grid with one variable "f" whose values,
+// One extreme input of the robustness matrix ("Stability on stiff and extreme cases";
+// docs/robustness.md): a small CF-NetCDF grid with one variable "f" whose values,
 // axes or size are extreme, the limits a scene puts on it, and the outcome expected of
 // every stage (conversion, verification, statistics, coarse levels, extraction, the
 // server, advection). Plain data: extreme_cases.h lists the cases, case_runner.h runs one.

@@ -437,7 +437,7 @@ ExtremeCase::DomainBox on_samples(int axis, const std::vector<double>& v, std::s
   return box;
 }
 
-// Boxes whose bounds are sample coordinates (issue 27: round numbers on a 2.5-degree grid,
+// Boxes whose bounds are sample coordinates (round numbers on a 2.5-degree grid,
 // integer pressure levels), on every axis, from a node face to a node face, from a sample
 // inside a node to a node face and between two samples inside nodes; with and without a
 // limit; and one over all three axes.

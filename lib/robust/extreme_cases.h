@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The robustness matrix: every extreme input of issue 6 with the outcome expected of each
+// The robustness matrix: every extreme input with the outcome expected of each
 // stage (docs/robustness.md explains each row). Grids are small (a few 4-cell bricks,
 // two time steps) so that the whole matrix runs in seconds; the huge-grid cases declare
 // their size in the NetCDF file without writing data and are refused (or planned) from

@@ -72,14 +72,14 @@ void check(int status, const std::filesystem::path& path) {
 
 }  // namespace
 
-SampleTerrainResult write_sample_terrain(const SampleTerrainSpec& spec,
-                                         const std::filesystem::path& path) {
-  if (spec.samples < 2 || spec.samples > 16384) {
-    throw make_error(ErrorCode::kInvalidArgument, "--terrain {}: must be 2 to 16384 samples",
-                     spec.samples);
-  }
-  const geo::GridProjection pole = pole_projection();
-  // The rotated box around the domain's boundary, 3% wider on each side.
+namespace {
+
+// The rotated axes of an n x n grid over the domain's rotated box, 3% wider on each side.
+struct RotatedAxes {
+  std::vector<double> rlon, rlat;
+};
+
+RotatedAxes rotated_axes(const geo::GridProjection& pole, std::size_t n) {
   double rlon0 = INFINITY, rlon1 = -INFINITY, rlat0 = INFINITY, rlat1 = -INFINITY;
   for (int i = 0; i <= 100; ++i) {
     const double t = i / 100.0;
@@ -95,58 +95,77 @@ SampleTerrainResult write_sample_terrain(const SampleTerrainSpec& spec,
   }
   const double mx = 0.03 * (rlon1 - rlon0), my = 0.03 * (rlat1 - rlat0);
   rlon0 -= mx, rlon1 += mx, rlat0 -= my, rlat1 += my;
-  const std::size_t n = spec.samples;
-  std::vector<double> rlon(n), rlat(n), x_km(n), y_km(n);
+  RotatedAxes axes{std::vector<double>(n), std::vector<double>(n)};
   for (std::size_t i = 0; i < n; ++i) {
-    rlon[i] = rlon0 + (rlon1 - rlon0) * double(i) / double(n - 1);
-    rlat[i] = rlat0 + (rlat1 - rlat0) * double(i) / double(n - 1);
-    x_km[i] = rlon[i] * 111.195;
-    y_km[i] = rlat[i] * 111.195;
+    axes.rlon[i] = rlon0 + (rlon1 - rlon0) * double(i) / double(n - 1);
+    axes.rlat[i] = rlat0 + (rlat1 - rlat0) * double(i) / double(n - 1);
+  }
+  return axes;
+}
+
+// Height in m of the land at (lon, lat), from the detail noise `d` and the ridged noise `r`.
+double land_height(const geo::LonLat& g, double d, double r) {
+  // Lowlands rising to the south, the Alpine foreland, the Alps.
+  double h = 30 + 420 * smoothstep(53.5, 49.0, g.lat) + 120 * d;
+  h += 250 * smoothstep(49.0, 47.9, g.lat);
+  const double alps = smoothstep(48.05, 47.45, g.lat + 0.08 * std::sin(g.lon * 1.7));
+  h += alps * (1400 + 2200 * r * r + 500 * d);
+  for (const auto& m : kRanges) {
+    const double dx = (g.lon - m.lon) * 111.195 * std::cos(m.lat * 3.14159265 / 180.0) / m.stretch;
+    const double dy = (g.lat - m.lat) * 111.195;
+    const double q = (dx * dx + dy * dy) / (m.radius_km * m.radius_km);
+    h += m.height_m * std::exp(-q) * (0.65 + 0.5 * r);
+  }
+  // Coasts slope down to the sea.
+  return std::max(h * (0.4 + 0.6 * smoothstep(54.4, 53.0, g.lat)) + 60 * d, 1.0);
+}
+
+// HSURF (sea: _FillValue) and the geographic position of every sample, rows by rlat.
+struct TerrainFields {
+  std::vector<float> hsurf, lat, lon;
+  float max_height_m = 0;
+};
+
+TerrainFields terrain_fields(const SampleTerrainSpec& spec, const geo::GridProjection& pole,
+                             const RotatedAxes& axes) {
+  const std::size_t n = axes.rlon.size();
+  std::vector<double> x_km(n), y_km(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    x_km[i] = axes.rlon[i] * 111.195;
+    y_km[i] = axes.rlat[i] * 111.195;
   }
   const FbmPlane detail({.wavelength_km = 60, .wavelength_z_km = 1, .octaves = 6, .gain = 0.5},
                         noise_key(spec.seed, 0x7e77a1), x_km, y_km, 0.0);
   const FbmPlane ridges({.wavelength_km = 25, .wavelength_z_km = 1, .octaves = 5, .gain = 0.55,
                          .stretch_x = 2.5},
                         noise_key(spec.seed, 0x7e77a2), x_km, y_km, 0.0);
-  std::vector<float> hsurf(n * n), lat2(n * n), lon2(n * n);
+  TerrainFields out{std::vector<float>(n * n), std::vector<float>(n * n),
+                    std::vector<float>(n * n)};
   std::vector<float> row_detail(n), row_ridges(n);
-  SampleTerrainResult result;
-  result.width = result.height = n;
   for (std::size_t j = 0; j < n; ++j) {
     detail.row(j, row_detail);
     ridges.row(j, row_ridges);
     for (std::size_t i = 0; i < n; ++i) {
-      const auto [lon, lat] = pole.to_geographic(rlon[i], rlat[j]);
+      const auto [lon, lat] = pole.to_geographic(axes.rlon[i], axes.rlat[j]);
       const geo::LonLat g{lon, lat};
-      lon2[j * n + i] = static_cast<float>(g.lon);
-      lat2[j * n + i] = static_cast<float>(g.lat);
+      out.lon[j * n + i] = static_cast<float>(g.lon);
+      out.lat[j * n + i] = static_cast<float>(g.lat);
       if (is_sea(g.lon, g.lat)) {
-        hsurf[j * n + i] = kFill;
+        out.hsurf[j * n + i] = kFill;
         continue;
       }
-      const double d = row_detail[i], r = 1.0 - std::fabs(row_ridges[i]);  // ridged noise
-      // Lowlands rising to the south, the Alpine foreland, the Alps.
-      double h = 30 + 420 * smoothstep(53.5, 49.0, g.lat) + 120 * d;
-      h += 250 * smoothstep(49.0, 47.9, g.lat);
-      const double alps = smoothstep(48.05, 47.45, g.lat + 0.08 * std::sin(g.lon * 1.7));
-      h += alps * (1400 + 2200 * r * r + 500 * d);
-      for (const auto& m : kRanges) {
-        const double dx = (g.lon - m.lon) * 111.195 * std::cos(m.lat * 3.14159265 / 180.0) / m.stretch;
-        const double dy = (g.lat - m.lat) * 111.195;
-        const double q = (dx * dx + dy * dy) / (m.radius_km * m.radius_km);
-        h += m.height_m * std::exp(-q) * (0.65 + 0.5 * r);
-      }
-      // Coasts slope down to the sea.
-      h = std::max(h * (0.4 + 0.6 * smoothstep(54.4, 53.0, g.lat)) + 60 * d, 1.0);
-      hsurf[j * n + i] = static_cast<float>(h);
-      result.max_height_m = std::max(result.max_height_m, hsurf[j * n + i]);
+      const double r = 1.0 - std::fabs(row_ridges[i]);  // ridged noise
+      out.hsurf[j * n + i] = static_cast<float>(land_height(g, row_detail[i], r));
+      out.max_height_m = std::max(out.max_height_m, out.hsurf[j * n + i]);
     }
   }
+  return out;
+}
 
-  std::error_code ec;
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
-  const auto tmp = std::filesystem::path(path.string() + ".tmp");
-  std::lock_guard lock(ingest::netcdf_mutex());
+// The CF-NetCDF terrain file `tmp`: rotated axes, the pole, 2-D lat/lon and HSURF.
+void write_terrain_netcdf(const std::filesystem::path& tmp, const RotatedAxes& axes,
+                          const TerrainFields& fields) {
+  const std::size_t n = axes.rlon.size();
   int nc = -1;
   check(nc_create(tmp.c_str(), NC_CLOBBER | NC_NETCDF4, &nc), tmp);
   try {
@@ -185,18 +204,43 @@ SampleTerrainResult write_sample_terrain(const SampleTerrainSpec& spec,
     text(NC_GLOBAL, "Conventions", "CF-1.8");
     text(NC_GLOBAL, "title", "STRIELAD sample terrain (synthetic, deterministic)");
     check(nc_enddef(nc), tmp);
-    check(nc_put_var_double(nc, vrlat, rlat.data()), tmp);
-    check(nc_put_var_double(nc, vrlon, rlon.data()), tmp);
-    check(nc_put_var_float(nc, vlat, lat2.data()), tmp);
-    check(nc_put_var_float(nc, vlon, lon2.data()), tmp);
-    check(nc_put_var_float(nc, vh, hsurf.data()), tmp);
+    check(nc_put_var_double(nc, vrlat, axes.rlat.data()), tmp);
+    check(nc_put_var_double(nc, vrlon, axes.rlon.data()), tmp);
+    check(nc_put_var_float(nc, vlat, fields.lat.data()), tmp);
+    check(nc_put_var_float(nc, vlon, fields.lon.data()), tmp);
+    check(nc_put_var_float(nc, vh, fields.hsurf.data()), tmp);
     check(nc_close(nc), tmp);
   } catch (...) {
     nc_close(nc);
+    std::error_code ec;
     std::filesystem::remove(tmp, ec);
     throw;
   }
-  std::filesystem::rename(tmp, path, ec);
+}
+
+}  // namespace
+
+SampleTerrainResult write_sample_terrain(const SampleTerrainSpec& spec,
+                                         const std::filesystem::path& path) {
+  if (spec.samples < 2 || spec.samples > 16384) {
+    throw make_error(ErrorCode::kInvalidArgument, "--terrain {}: must be 2 to 16384 samples",
+                     spec.samples);
+  }
+  const geo::GridProjection pole = pole_projection();
+  const RotatedAxes axes = rotated_axes(pole, spec.samples);
+  const TerrainFields fields = terrain_fields(spec, pole, axes);
+  SampleTerrainResult result;
+  result.width = result.height = spec.samples;
+  result.max_height_m = fields.max_height_m;
+
+  std::error_code ec;
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
+  const auto tmp = std::filesystem::path(path.string() + ".tmp");
+  {
+    std::lock_guard lock(ingest::netcdf_mutex());
+    write_terrain_netcdf(tmp, axes, fields);
+    std::filesystem::rename(tmp, path, ec);
+  }
   if (ec) {
     throw make_error(ErrorCode::kIo, "{}: cannot rename from {}: {}", path.string(), tmp.string(),
                      ec.message());

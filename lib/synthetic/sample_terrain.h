@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// A synthetic DEM under the sample domain (issue 8, "Terrain"), written as CF-NetCDF on a
+// A synthetic DEM under the sample domain, written as CF-NetCDF on a
 // rotated-pole grid like the regional models' (the HSURF of COSMO/CCLM: pole at 39.25 N,
 // 162 W), so the sample exercises the same reading path as real model output.
 // Deterministic from the seed: Alps-like ranges in the south (up to about 3.5 km),

@@ -50,7 +50,7 @@ SampleTracksResult write_sample_tracks(const SampleTrackSpec& spec, const std::f
     const double lat0 = kLatMin + (kLatMax - kLatMin) * u(2);
     const double heading = 2 * std::numbers::pi * u(3);
     const double speed = 200 + 50 * u(4);
-    // Every aircraft is in the air during the whole span (the scene of the issue: 27,000
+    // Every aircraft is in the air during the whole span (the benchmarked scene: 27,000
     // tracks on screen at once), taking off up to its duration before the span ends.
     const double duration = std::max(1200 + 1800 * u(6), spec.span_seconds + 600);
     const double start = (spec.span_seconds - duration) * u(5);  // take-off, <= 0

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Synthetic flight tracks over the sample domain (issue 8: "27,000 tracks at interactive
-// frame rates", measured on a generated scene). Deterministic from the seed: each
+// Synthetic flight tracks over the sample domain ("27,000 tracks at
+// interactive frame rates", measured on a generated scene). Deterministic from the seed: each
 // aircraft flies a straight line across the domain at 200-250 m/s, at a cruise level
 // of 9-12.5 km, or climbing from or descending to the ground near the domain's
 // airports; every aircraft is in the air during the whole span (flights of 20 to 50

@@ -35,6 +35,91 @@ int define_coordinate(int ncid, const char* name, int dimid, const std::string& 
   return varid;
 }
 
+// The four dimensions (time unlimited) and their CF coordinate variables.
+struct Coordinates {
+  int dim_time = -1, dim_height = -1, dim_lat = -1, dim_lon = -1;
+  int v_time = -1, v_height = -1, v_lat = -1, v_lon = -1;
+};
+
+// Callers hold netcdf_mutex().
+Coordinates define_coordinates(int ncid, const Dims3& dims, const std::string& ctx) {
+  Coordinates c;
+  nc_check(nc_def_dim(ncid, "time", NC_UNLIMITED, &c.dim_time), ctx + ": define time");
+  nc_check(nc_def_dim(ncid, "height", dims.z, &c.dim_height), ctx + ": define height");
+  nc_check(nc_def_dim(ncid, "lat", dims.y, &c.dim_lat), ctx + ": define lat");
+  nc_check(nc_def_dim(ncid, "lon", dims.x, &c.dim_lon), ctx + ": define lon");
+
+  c.v_time = define_coordinate(ncid, "time", c.dim_time, ctx);
+  put_text(ncid, c.v_time, "standard_name", "time", ctx);
+  put_text(ncid, c.v_time, "long_name", "time", ctx);
+  put_text(ncid, c.v_time, "units", kSampleTimeUnits, ctx);
+  put_text(ncid, c.v_time, "calendar", "proleptic_gregorian", ctx);
+  put_text(ncid, c.v_time, "axis", "T", ctx);
+
+  c.v_height = define_coordinate(ncid, "height", c.dim_height, ctx);
+  put_text(ncid, c.v_height, "standard_name", "height", ctx);
+  put_text(ncid, c.v_height, "long_name", "height above ground of full levels", ctx);
+  put_text(ncid, c.v_height, "units", "m", ctx);
+  put_text(ncid, c.v_height, "positive", "up", ctx);
+  put_text(ncid, c.v_height, "axis", "Z", ctx);
+
+  c.v_lat = define_coordinate(ncid, "lat", c.dim_lat, ctx);
+  put_text(ncid, c.v_lat, "standard_name", "latitude", ctx);
+  put_text(ncid, c.v_lat, "long_name", "latitude", ctx);
+  put_text(ncid, c.v_lat, "units", "degrees_north", ctx);
+  put_text(ncid, c.v_lat, "axis", "Y", ctx);
+
+  c.v_lon = define_coordinate(ncid, "lon", c.dim_lon, ctx);
+  put_text(ncid, c.v_lon, "standard_name", "longitude", ctx);
+  put_text(ncid, c.v_lon, "long_name", "longitude", ctx);
+  put_text(ncid, c.v_lon, "units", "degrees_east", ctx);
+  put_text(ncid, c.v_lon, "axis", "X", ctx);
+  return c;
+}
+
+// One (time, height, lat, lon) float variable per layout variable, chunked by level;
+// their ids in layout order. Callers hold netcdf_mutex().
+std::vector<int> define_variables(int ncid, const Coordinates& c, const Dims3& dims,
+                                  const SampleFileLayout& layout, const std::string& ctx) {
+  const int var_dims[4] = {c.dim_time, c.dim_height, c.dim_lat, c.dim_lon};
+  const std::size_t chunk[4] = {1, 1, dims.y, dims.x};
+  std::vector<int> varids;
+  for (const SampleVariable v : layout.variables) {
+    const SampleVariableInfo& info = sample_variable_info(v);
+    const std::string name(info.name);
+    const std::string vctx = fmt::format("{}: variable {}", ctx, name);
+    int varid = -1;
+    nc_check(nc_def_var(ncid, name.c_str(), NC_FLOAT, 4, var_dims, &varid), vctx + ": define");
+    nc_check(nc_def_var_chunking(ncid, varid, NC_CHUNKED, chunk), vctx + ": chunking");
+    if (layout.deflate > 0) {
+      nc_check(nc_def_var_deflate(ncid, varid, 1, 1, layout.deflate), vctx + ": deflate");
+    }
+    nc_check(nc_put_att_float(ncid, varid, "_FillValue", NC_FLOAT, 1, &kSampleFillValue),
+             vctx + ": _FillValue");
+    put_text(ncid, varid, "units", info.units, vctx);
+    put_text(ncid, varid, "long_name", info.long_name, vctx);
+    if (!info.standard_name.empty()) {
+      put_text(ncid, varid, "standard_name", info.standard_name, vctx);
+    }
+    varids.push_back(varid);
+  }
+  return varids;
+}
+
+// Callers hold netcdf_mutex().
+void put_global_attributes(int ncid, unsigned long long seed, const std::string& ctx) {
+  put_text(ncid, NC_GLOBAL, "Conventions", "CF-1.8", ctx);
+  put_text(ncid, NC_GLOBAL, "title",
+           "STRIELAD synthetic sample of ICON-LEM-like output over Germany", ctx);
+  put_text(ncid, NC_GLOBAL, "source", "strielad-sample", ctx);
+  put_text(ncid, NC_GLOBAL, "comment",
+           "Deterministic synthetic fields (standard atmosphere, jet, cyclone, fractal "
+           "clouds along frontal bands); not model output.",
+           ctx);
+  nc_check(nc_put_att_ulonglong(ncid, NC_GLOBAL, "seed", NC_UINT64, 1, &seed),
+           ctx + ": attribute seed");
+}
+
 void fsync_path(const std::filesystem::path& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0 || ::fsync(fd) != 0) {
@@ -61,78 +146,16 @@ SampleFileWriter::SampleFileWriter(std::filesystem::path path, const SampleGrid&
     int old_mode = 0;
     nc_check(nc_set_fill(ncid_, NC_NOFILL, &old_mode), ctx + ": set fill mode");
 
-    int dim_time = -1, dim_height = -1, dim_lat = -1, dim_lon = -1;
-    nc_check(nc_def_dim(ncid_, "time", NC_UNLIMITED, &dim_time), ctx + ": define time");
-    nc_check(nc_def_dim(ncid_, "height", dims_.z, &dim_height), ctx + ": define height");
-    nc_check(nc_def_dim(ncid_, "lat", dims_.y, &dim_lat), ctx + ": define lat");
-    nc_check(nc_def_dim(ncid_, "lon", dims_.x, &dim_lon), ctx + ": define lon");
-
-    const int v_time = define_coordinate(ncid_, "time", dim_time, ctx);
-    put_text(ncid_, v_time, "standard_name", "time", ctx);
-    put_text(ncid_, v_time, "long_name", "time", ctx);
-    put_text(ncid_, v_time, "units", kSampleTimeUnits, ctx);
-    put_text(ncid_, v_time, "calendar", "proleptic_gregorian", ctx);
-    put_text(ncid_, v_time, "axis", "T", ctx);
-
-    const int v_height = define_coordinate(ncid_, "height", dim_height, ctx);
-    put_text(ncid_, v_height, "standard_name", "height", ctx);
-    put_text(ncid_, v_height, "long_name", "height above ground of full levels", ctx);
-    put_text(ncid_, v_height, "units", "m", ctx);
-    put_text(ncid_, v_height, "positive", "up", ctx);
-    put_text(ncid_, v_height, "axis", "Z", ctx);
-
-    const int v_lat = define_coordinate(ncid_, "lat", dim_lat, ctx);
-    put_text(ncid_, v_lat, "standard_name", "latitude", ctx);
-    put_text(ncid_, v_lat, "long_name", "latitude", ctx);
-    put_text(ncid_, v_lat, "units", "degrees_north", ctx);
-    put_text(ncid_, v_lat, "axis", "Y", ctx);
-
-    const int v_lon = define_coordinate(ncid_, "lon", dim_lon, ctx);
-    put_text(ncid_, v_lon, "standard_name", "longitude", ctx);
-    put_text(ncid_, v_lon, "long_name", "longitude", ctx);
-    put_text(ncid_, v_lon, "units", "degrees_east", ctx);
-    put_text(ncid_, v_lon, "axis", "X", ctx);
-
-    const int var_dims[4] = {dim_time, dim_height, dim_lat, dim_lon};
-    const std::size_t chunk[4] = {1, 1, dims_.y, dims_.x};
-    for (const SampleVariable v : layout.variables) {
-      const SampleVariableInfo& info = sample_variable_info(v);
-      const std::string name(info.name);
-      const std::string vctx = fmt::format("{}: variable {}", ctx, name);
-      int varid = -1;
-      nc_check(nc_def_var(ncid_, name.c_str(), NC_FLOAT, 4, var_dims, &varid), vctx + ": define");
-      nc_check(nc_def_var_chunking(ncid_, varid, NC_CHUNKED, chunk), vctx + ": chunking");
-      if (layout.deflate > 0) {
-        nc_check(nc_def_var_deflate(ncid_, varid, 1, 1, layout.deflate), vctx + ": deflate");
-      }
-      nc_check(nc_put_att_float(ncid_, varid, "_FillValue", NC_FLOAT, 1, &kSampleFillValue),
-               vctx + ": _FillValue");
-      put_text(ncid_, varid, "units", info.units, vctx);
-      put_text(ncid_, varid, "long_name", info.long_name, vctx);
-      if (!info.standard_name.empty()) {
-        put_text(ncid_, varid, "standard_name", info.standard_name, vctx);
-      }
-      varids_.push_back(varid);
-    }
-
-    put_text(ncid_, NC_GLOBAL, "Conventions", "CF-1.8", ctx);
-    put_text(ncid_, NC_GLOBAL, "title",
-             "STRIELAD synthetic sample of ICON-LEM-like output over Germany", ctx);
-    put_text(ncid_, NC_GLOBAL, "source", "strielad-sample", ctx);
-    put_text(ncid_, NC_GLOBAL, "comment",
-             "Deterministic synthetic fields (standard atmosphere, jet, cyclone, fractal "
-             "clouds along frontal bands); not model output.",
-             ctx);
-    const unsigned long long seed = layout.seed;
-    nc_check(nc_put_att_ulonglong(ncid_, NC_GLOBAL, "seed", NC_UINT64, 1, &seed),
-             ctx + ": attribute seed");
+    const Coordinates c = define_coordinates(ncid_, dims_, ctx);
+    varids_ = define_variables(ncid_, c, dims_, layout, ctx);
+    put_global_attributes(ncid_, layout.seed, ctx);
     nc_check(nc_enddef(ncid_), ctx + ": end define mode");
 
-    nc_check(nc_put_var_double(ncid_, v_height, grid.height.data()), ctx + ": write height");
-    nc_check(nc_put_var_double(ncid_, v_lat, grid.lat.data()), ctx + ": write lat");
-    nc_check(nc_put_var_double(ncid_, v_lon, grid.lon.data()), ctx + ": write lon");
+    nc_check(nc_put_var_double(ncid_, c.v_height, grid.height.data()), ctx + ": write height");
+    nc_check(nc_put_var_double(ncid_, c.v_lat, grid.lat.data()), ctx + ": write lat");
+    nc_check(nc_put_var_double(ncid_, c.v_lon, grid.lon.data()), ctx + ": write lon");
     const std::size_t t_start = 0, t_count = layout.times.size();
-    nc_check(nc_put_vara_double(ncid_, v_time, &t_start, &t_count, layout.times.data()),
+    nc_check(nc_put_vara_double(ncid_, c.v_time, &t_start, &t_count, layout.times.data()),
              ctx + ": write time");
   } catch (...) {
     nc_close(ncid_);
