@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "bench/robustness_suite.h"
+#include "core/error.h"
 #include "commands.h"
 #include "suite_output.h"
 
@@ -38,7 +39,7 @@ int run(const RobustnessFlags& f) {
       report.machine.value("cores", 0u));
   emit_suite_report(header, tables, f.csv, f.json, o.work_dir,
                     [&] { return bench::robustness_report_json(report, tables); });
-  return deviating == 0 ? 0 : 1;
+  return deviating == 0 ? 0 : kExitStatusChecksFailed;
 }
 
 }  // namespace

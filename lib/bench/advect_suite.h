@@ -5,7 +5,7 @@
 // are known: solid-body rotation, a shear layer with rising air, stiff convergence
 // towards a fixed line (stiffness ratios 10^3 and 10^4); and, against a very fine RK4
 // reference, a time-dependent field of vortices and the wind of the sample-data generator
-// (lib/synthetic, the ua/va/wa that `strielad-convert sample` writes) at two output times
+// (lib/synthetic, the ua/va/wa that `strielad-sample` writes) at two output times
 // on its lon/lat/height grid. Reports the error at the end time against wall time and
 // against the number of field evaluations, and can draw the work-precision diagrams.
 #pragma once

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Parsing of the command-line spellings used by `strielad-convert sample`, kept here so
+// Parsing of the command-line spellings used by `strielad-sample`, kept here so
 // that they are testable without the tool.
 #pragma once
 
