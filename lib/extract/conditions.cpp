@@ -2,6 +2,7 @@
 #include "extract/conditions.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -172,33 +173,27 @@ class Builder {
   std::size_t n_;
 };
 
-}  // namespace
-
-ConditionSet build_conditions(const NodeSamples& samples, const ExtractRequest& request) {
-  ConditionSet set;
-  build_conditions(samples, request, set);
-  return set;
-}
-
-void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
-                      ConditionSet& set) {
-  const auto dims = samples.dims();
+void check_lattice(const std::array<std::size_t, 3>& dims) {
   for (int a = 0; a < 3; ++a) {
     if (dims[a] < 2) {
       throw make_error(ErrorCode::kInvalidArgument,
                        "extraction needs at least 2 samples along axis {} (has {})", a, dims[a]);
     }
   }
-  const std::size_t n = samples.sample_count();
+}
+
+// Forgets the set's conditions, keeping their value buffers as spares.
+void recycle_conditions(ConditionSet& set) {
   for (Condition& c : set.conditions) {
     if (!c.values.empty()) set.spare.push_back(std::move(c.values));
   }
   set.conditions.clear();
-  set.empty = false;
-  set.all = 0;
-  set.box_sides = 0;
-  // At most two conditions per limit, one validity condition and two per bounded box
-  // axis.
+}
+
+// Narrow (16-bit) masks when the request can make no more conditions than they hold:
+// at most two per limit, one validity condition, two per bounded box axis and the
+// sample conditions.
+void size_masks(const ExtractRequest& request, std::size_t n, ConditionSet& set) {
   std::size_t most = 1;
   for (const ExtractLimit& limit : request.limits) {
     most += (limit.min > -kUnbounded ? 1 : 0) + (limit.max < kUnbounded ? 1 : 0);
@@ -211,8 +206,10 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
   } else {
     set.inside64.resize(n);
   }
-  Builder builder(set, n);
+}
 
+void check_limits(const NodeSamples& samples, const ExtractRequest& request) {
+  const std::size_t n = samples.sample_count();
   for (const ExtractLimit& limit : request.limits) {
     if (limit.field >= samples.fields.size()) {
       throw make_error(ErrorCode::kInvalidArgument, "limit on field {} but the node has {} fields",
@@ -228,10 +225,12 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
                        limit.field, field.size(), n);
     }
   }
+}
 
-  // Missing samples (NaN or infinite) in any limit field make a validity condition;
-  // the limit conditions take the neutral value 0 there (so hold there: x - min >= 0
-  // exactly when x >= min).
+// The limits' conditions. Missing samples (NaN or infinite) in any limit field make a
+// validity condition; the limit conditions take the neutral value 0 there (so hold
+// there: x - min >= 0 exactly when x >= min). Returns false when one holds nowhere.
+bool add_limit_conditions(const NodeSamples& samples, const ExtractRequest& request, Builder& builder) {
   bool any_missing = false;
   auto add_limit = [&](const ExtractLimit& limit, bool is_min) {
     Condition c;
@@ -256,6 +255,7 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
     if (!empty && !has_min && !has_max) any_missing |= has_missing(limit);
   }
   if (!empty && any_missing) {
+    const std::size_t n = samples.sample_count();
     Condition c;
     c.kind = ConditionKind::kValidity;
     c.values = builder.buffer();
@@ -268,7 +268,16 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
     }
     empty = !builder.add(std::move(c));
   }
+  return !empty;
+}
 
+// The domain box's conditions, two per bounded axis (none once `empty`); every axis's
+// range is checked, and its ends on the node's first or last sample plane noted in
+// set.box_sides. Sets `empty` when the box has no volume in the node or a condition
+// holds nowhere.
+void add_box_conditions(const NodeSamples& samples, const ExtractRequest& request, ConditionSet& set,
+                        Builder& builder, bool& empty) {
+  const auto dims = samples.dims();
   for (int a = 0; a < 3; ++a) {
     const auto [lo, hi] = request.box[a];
     if (std::isnan(lo) || std::isnan(hi) || lo > hi) {
@@ -311,7 +320,10 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
       empty = !builder.add(std::move(c));
     }
   }
+}
 
+// The request's per-sample conditions (none once `empty`).
+void add_sample_conditions(const ExtractRequest& request, std::size_t n, Builder& builder, bool& empty) {
   for (std::size_t k = 0; k < request.sample_conditions.size() && !empty; ++k) {
     const auto& given = request.sample_conditions[k];
     if (given.size() != n) {
@@ -331,7 +343,11 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
     }
     empty = !builder.add(std::move(c));
   }
+}
 
+// The set's final state: empty (no conditions), every condition holding everywhere (no
+// conditions, masks zero), or `all` with a bit per condition.
+void finish_conditions(const ExtractRequest& request, std::size_t n, bool empty, ConditionSet& set) {
   if (set.conditions.size() > kMaxConditions) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "sub-volume {} needs {} conditions in one node (at most {})",
@@ -339,10 +355,7 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
   }
   set.empty = empty;
   if (empty) {
-    for (Condition& c : set.conditions) {
-      if (!c.values.empty()) set.spare.push_back(std::move(c.values));
-    }
-    set.conditions.clear();
+    recycle_conditions(set);
     return;
   }
   if (set.conditions.empty()) {  // every condition holds everywhere
@@ -352,6 +365,31 @@ void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
   }
   set.all = set.conditions.size() >= 64 ? ~std::uint64_t{0}
                                         : (std::uint64_t{1} << set.conditions.size()) - 1;
+}
+
+}  // namespace
+
+ConditionSet build_conditions(const NodeSamples& samples, const ExtractRequest& request) {
+  ConditionSet set;
+  build_conditions(samples, request, set);
+  return set;
+}
+
+void build_conditions(const NodeSamples& samples, const ExtractRequest& request,
+                      ConditionSet& set) {
+  check_lattice(samples.dims());
+  const std::size_t n = samples.sample_count();
+  recycle_conditions(set);
+  set.empty = false;
+  set.all = 0;
+  set.box_sides = 0;
+  size_masks(request, n, set);
+  Builder builder(set, n);
+  check_limits(samples, request);
+  bool empty = !add_limit_conditions(samples, request, builder);
+  add_box_conditions(samples, request, set, builder, empty);
+  add_sample_conditions(request, n, builder, empty);
+  finish_conditions(request, n, empty, set);
 }
 
 }  // namespace strielad

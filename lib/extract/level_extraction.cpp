@@ -2,6 +2,7 @@
 #include "extract/level_extraction.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -37,12 +38,14 @@ LevelExtraction extract_level(const Store& store, const ResolvedScene& scene,
   std::atomic<std::uint64_t> done{0};
   const auto start = std::chrono::steady_clock::now();
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  tbb::enumerable_thread_specific<ExtractScratch> scratch;  // one per worker thread
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1),
                       [&](const tbb::blocked_range<std::size_t>& r) {
+                        ExtractScratch& own = scratch.local();
                         for (std::size_t i = r.begin(); i != r.end(); ++i) {
                           out.nodes[i] = extract_node(store, &cache, scene, options.step,
-                                                      static_cast<NodeId>(first + i), {},
+                                                      static_cast<NodeId>(first + i), own, {},
                                                       options.merge_face_squares);
                           const std::uint64_t d = done.fetch_add(1) + 1;
                           if (options.progress) options.progress(d, count);

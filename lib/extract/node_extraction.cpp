@@ -174,13 +174,13 @@ void throw_if_stopped(const std::stop_token& stop, const Store& store, NodeId no
   }
 }
 
-// Float buffers for the node's fields, kept per thread across nodes (a fresh vector
+// Float buffers for the node's fields, taken from the caller's pool (a fresh vector
 // per brick would be allocated and zeroed before every copy). Returned on scope exit.
 class FieldBuffers {
  public:
-  explicit FieldBuffers(NodeSamples& ns) : ns_(ns) {}
+  FieldBuffers(NodeSamples& ns, std::vector<std::vector<float>>& pool) : ns_(ns), pool_(pool) {}
   ~FieldBuffers() {
-    for (auto& f : ns_.fields) pool().push_back(std::move(f));
+    for (auto& f : ns_.fields) pool_.push_back(std::move(f));
   }
   FieldBuffers(const FieldBuffers&) = delete;
   FieldBuffers& operator=(const FieldBuffers&) = delete;
@@ -190,9 +190,9 @@ class FieldBuffers {
   // sample stays valid (an infinity would read as missing and poison attributes).
   void add(const Brick& brick) {
     std::vector<float> out;
-    if (!pool().empty()) {
-      out = std::move(pool().back());
-      pool().pop_back();
+    if (!pool_.empty()) {
+      out = std::move(pool_.back());
+      pool_.pop_back();
     }
     out.resize(brick.sample_count());
     if (brick.kind == format::BrickKind::kData && brick.dtype == DType::kFloat32) {
@@ -207,11 +207,8 @@ class FieldBuffers {
   }
 
  private:
-  static std::vector<std::vector<float>>& pool() {
-    thread_local std::vector<std::vector<float>> buffers;
-    return buffers;
-  }
   NodeSamples& ns_;
+  std::vector<std::vector<float>>& pool_;
 };
 
 // On a periodic longitude axis the faces on the grid's first and last meridian are the
@@ -260,6 +257,119 @@ void add_stats(ExtractStats& total, const ExtractStats& s) {
   total.empty_by_condition = total.empty_by_condition || s.empty_by_condition;
 }
 
+
+// The slices to extract, in scene order; the others are decided here, from the index
+// and the geometry alone (no brick read).
+std::vector<std::size_t> plan_slices(const Store& store, const ResolvedScene& scene, std::uint32_t step,
+                                     const NodeGeometry& geometry, NodeId node,
+                                     std::vector<SliceResult>& slices) {
+  std::vector<std::size_t> plans;
+  slices.resize(scene.slices.size());
+  for (std::size_t i = 0; i < scene.slices.size(); ++i) {
+    if (!skip_slice(store, scene.slices[i], step, geometry, node, slices[i])) plans.push_back(i);
+  }
+  return plans;
+}
+
+// The node's fields as NodeSamples fields: each needed brick fetched once, on first use.
+struct NodeFields {
+  const Store& store;
+  BrickCache* cache;
+  std::uint32_t step;
+  NodeId node;
+  const std::stop_token& stop;
+  NodeSamples& ns;
+  FieldBuffers& buffers;
+  std::uint32_t& bricks_used;
+  std::map<std::uint32_t, std::uint32_t> field_of{};  // variable -> NodeSamples field
+
+  // The NodeSamples field of `variable`, its brick read now if it is not yet.
+  std::uint32_t field(std::uint32_t variable) {
+    const auto [it, inserted] = field_of.try_emplace(variable, static_cast<std::uint32_t>(ns.fields.size()));
+    if (inserted) {
+      throw_if_stopped(stop, store, node);
+      std::shared_ptr<const Brick> brick =
+          cache ? store.read_brick(step, variable, node, *cache)
+                : std::make_shared<const Brick>(store.read_brick(step, variable, node));
+      ++bricks_used;
+      const std::size_t samples = ns.sample_count();
+      if (brick->sample_count() != samples) {
+        throw make_error(ErrorCode::kCorrupt, "{}: brick holds {} samples, the node has {}",
+                         store.describe_node(variable, node), brick->sample_count(), samples);
+      }
+      buffers.add(*brick);
+    }
+    return it->second;
+  }
+};
+
+// The scene's attributes as fields of the node's samples, and their names.
+struct Attributes {
+  std::vector<std::uint32_t> fields;
+  std::vector<std::string> names;
+};
+
+// One sub-volume's request in the node, without its domain box (set per longitude turn).
+ExtractRequest subvolume_request(const ResolvedSubVolume& sv, const SubVolumePlan& plan,
+                                 const Attributes& attributes, bool merge_face_squares,
+                                 NodeFields& fields) {
+  ExtractRequest request;
+  request.subvolume_id = sv.id;
+  for (const ResolvedLimit& limit : plan.limits) {
+    request.limits.push_back({fields.field(limit.variable), limit.min, limit.max});
+  }
+  request.attribute_fields = attributes.fields;
+  request.attribute_names = attributes.names;
+  request.merge_face_squares = merge_face_squares;
+  // Geographic conditions per horizontal sample, the same on every level of the node.
+  const std::size_t samples = fields.ns.sample_count();
+  for (const auto& horizontal : plan.geographic) {
+    std::vector<double>& c = request.sample_conditions.emplace_back();
+    c.reserve(samples);
+    for (std::size_t z = 0; z < fields.ns.coords[2].size(); ++z) c.insert(c.end(), horizontal.begin(), horizontal.end());
+  }
+  return request;
+}
+
+// One sub-volume's mesh in the node: one piece per whole longitude turn its box meets,
+// shifted back by that turn.
+void extract_subvolume(const Store& store, const ResolvedSubVolume& sv, const SubVolumePlan& plan,
+                       const NodeGeometry& geometry, const Attributes& attributes,
+                       bool merge_face_squares, NodeFields& fields, NodeMeshScratch& scratch,
+                       SubVolumeResult& r) {
+  ExtractRequest request = subvolume_request(sv, plan, attributes, merge_face_squares, fields);
+  NodeSamples& ns = fields.ns;
+  for (const int turn : plan.turns) {
+    const double shift = kFullTurn * turn;
+    for (int a = 0; a < 3; ++a) request.box[a] = {sv.box[a].lo, sv.box[a].hi};
+    request.box[0] = {sv.box[0].lo - shift, sv.box[0].hi - shift};
+    ns.grid_edge = geometry.grid_edge;
+    if (store.manifest().x.periodic) seam_faces(geometry, request.box[0], ns.grid_edge);
+    ExtractStats stats;
+    Mesh piece = extract_node_mesh(ns, request, scratch, &stats);
+    for (auto& p : piece.positions) p[0] += shift;
+    append_mesh(r.mesh, std::move(piece));
+    add_stats(r.stats, stats);
+  }
+  r.mesh.subvolume_id = sv.id;
+  r.mesh.attribute_names = attributes.names;
+  r.outcome = r.mesh.empty() ? NodeOutcome::kEmpty : NodeOutcome::kMesh;
+}
+
+// One slice's mesh in the node.
+void extract_slice(const Store& store, const ResolvedSlice& slice, NodeFields& fields,
+                   NodeMeshScratch& scratch, SliceResult& r) {
+  SliceRequest request;
+  request.slice_id = slice.id;
+  request.axis = slice.axis;
+  request.value = slice.value;
+  if (slice.is_level()) request.level_field = fields.field(slice.level_variable);
+  request.colour_field = fields.field(slice.variable);
+  request.colour_name = store.manifest().variables[slice.variable].name;
+  r.mesh = extract_slice_mesh(fields.ns, request, scratch);
+  r.outcome = r.mesh.empty() ? NodeOutcome::kEmpty : NodeOutcome::kMesh;
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> node_brick_variables(const Store& store, const ResolvedScene& scene,
@@ -287,9 +397,8 @@ std::vector<std::uint32_t> node_brick_variables(const Store& store, const Resolv
 }
 
 NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
-                            std::uint32_t step, NodeId node, std::stop_token stop,
-                            bool merge_face_squares) {
-  const format::Manifest& m = store.manifest();
+                            std::uint32_t step, NodeId node, ExtractScratch& scratch,
+                            std::stop_token stop, bool merge_face_squares) {
   check_node(store, node);
   throw_if_stopped(stop, store, node);
   NodeExtraction out;
@@ -297,99 +406,42 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
   const NodeGeometry geometry = node_geometry(store, node);
   const std::vector<SubVolumePlan> plans =
       plan_subvolumes(store, scene, step, geometry, node, out.results);
-  // Slices to extract (the others are decided here, without reading bricks).
-  std::vector<std::size_t> slice_plans;
-  out.slices.resize(scene.slices.size());
-  for (std::size_t i = 0; i < scene.slices.size(); ++i) {
-    if (!skip_slice(store, scene.slices[i], step, geometry, node, out.slices[i])) {
-      slice_plans.push_back(i);
-    }
-  }
+  const std::vector<std::size_t> slice_plans = plan_slices(store, scene, step, geometry, node, out.slices);
   if (plans.empty() && slice_plans.empty()) return out;
   if (has_no_cells(geometry)) {
     for (const SubVolumePlan& plan : plans) out.results[plan.subvolume].outcome = NodeOutcome::kEmpty;
     return out;  // slices not skipped stay kEmpty
   }
 
-  // Fetch each needed brick once.
-  std::map<std::uint32_t, std::uint32_t> field_of;  // variable -> NodeSamples field
   NodeSamples ns;
   ns.coords = geometry.coords;
   ns.grid_edge = geometry.grid_edge;
-  const std::size_t samples = ns.sample_count();
-  FieldBuffers buffers(ns);
-  auto field = [&](std::uint32_t variable) {
-    const auto [it, inserted] = field_of.try_emplace(variable, static_cast<std::uint32_t>(ns.fields.size()));
-    if (inserted) {
-      throw_if_stopped(stop, store, node);
-      std::shared_ptr<const Brick> brick =
-          cache ? store.read_brick(step, variable, node, *cache)
-                : std::make_shared<const Brick>(store.read_brick(step, variable, node));
-      ++out.bricks_used;
-      if (brick->sample_count() != samples) {
-        throw make_error(ErrorCode::kCorrupt, "{}: brick holds {} samples, the node has {}",
-                         store.describe_node(variable, node), brick->sample_count(), samples);
-      }
-      buffers.add(*brick);
-    }
-    return it->second;
-  };
-  std::vector<std::uint32_t> attribute_fields;
-  std::vector<std::string> attribute_names;
+  FieldBuffers buffers(ns, scratch.field_buffers);
+  NodeFields fields{store, cache, step, node, stop, ns, buffers, out.bricks_used};
+  const format::Manifest& m = store.manifest();
+  Attributes attributes;
   // The scene's attributes are per-vertex values of sub-volume meshes only.
   for (std::uint32_t v : plans.empty() ? std::vector<std::uint32_t>{} : scene.attributes) {
-    attribute_fields.push_back(field(v));
-    attribute_names.push_back(m.variables[v].name);
+    attributes.fields.push_back(fields.field(v));
+    attributes.names.push_back(m.variables[v].name);
   }
   for (const SubVolumePlan& plan : plans) {
     throw_if_stopped(stop, store, node);
-    const ResolvedSubVolume& sv = scene.subvolumes[plan.subvolume];
-    ExtractRequest request;
-    request.subvolume_id = sv.id;
-    for (const ResolvedLimit& limit : plan.limits) {
-      request.limits.push_back({field(limit.variable), limit.min, limit.max});
-    }
-    request.attribute_fields = attribute_fields;
-    request.attribute_names = attribute_names;
-    request.merge_face_squares = merge_face_squares;
-    // Geographic conditions per horizontal sample, the same on every level of the node.
-    for (const auto& horizontal : plan.geographic) {
-      std::vector<double>& c = request.sample_conditions.emplace_back();
-      c.reserve(samples);
-      for (std::size_t z = 0; z < ns.coords[2].size(); ++z) c.insert(c.end(), horizontal.begin(), horizontal.end());
-    }
-    SubVolumeResult& r = out.results[plan.subvolume];
-    for (const int turn : plan.turns) {
-      const double shift = kFullTurn * turn;
-      for (int a = 0; a < 3; ++a) request.box[a] = {sv.box[a].lo, sv.box[a].hi};
-      request.box[0] = {sv.box[0].lo - shift, sv.box[0].hi - shift};
-      ns.grid_edge = geometry.grid_edge;
-      if (m.x.periodic) seam_faces(geometry, request.box[0], ns.grid_edge);
-      ExtractStats stats;
-      Mesh piece = extract_node_mesh(ns, request, &stats);
-      for (auto& p : piece.positions) p[0] += shift;
-      append_mesh(r.mesh, std::move(piece));
-      add_stats(r.stats, stats);
-    }
-    r.mesh.subvolume_id = sv.id;
-    r.mesh.attribute_names = attribute_names;
-    r.outcome = r.mesh.empty() ? NodeOutcome::kEmpty : NodeOutcome::kMesh;
+    extract_subvolume(store, scene.subvolumes[plan.subvolume], plan, geometry, attributes,
+                      merge_face_squares, fields, scratch.mesh, out.results[plan.subvolume]);
   }
   for (const std::size_t i : slice_plans) {
     throw_if_stopped(stop, store, node);
-    const ResolvedSlice& slice = scene.slices[i];
-    SliceRequest request;
-    request.slice_id = slice.id;
-    request.axis = slice.axis;
-    request.value = slice.value;
-    if (slice.is_level()) request.level_field = field(slice.level_variable);
-    request.colour_field = field(slice.variable);
-    request.colour_name = m.variables[slice.variable].name;
-    SliceResult& r = out.slices[i];
-    r.mesh = extract_slice_mesh(ns, request);
-    r.outcome = r.mesh.empty() ? NodeOutcome::kEmpty : NodeOutcome::kMesh;
+    extract_slice(store, scene.slices[i], fields, scratch.mesh, out.slices[i]);
   }
   return out;
+}
+
+NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
+                            std::uint32_t step, NodeId node, std::stop_token stop,
+                            bool merge_face_squares) {
+  return extract_node(store, cache, scene, step, node, this_thread_scratch(), std::move(stop),
+                      merge_face_squares);
 }
 
 }  // namespace strielad

@@ -13,6 +13,7 @@
 
 #include "extract/extract_request.h"
 #include "extract/mesh.h"
+#include "extract/thread_scratch.h"
 #include "format/step_file_format.h"
 #include "octree/octree_layout.h"
 #include "scene/scene.h"
@@ -68,7 +69,12 @@ struct NodeExtraction {
 // (lib/extract/slice_extraction.h) share the node's bricks with the sub-volumes: each
 // needed brick is fetched once.
 // `merge_face_squares`: as ExtractRequest::merge_face_squares (false for output frames
-// that are not affine on the grid).
+// that are not affine on the grid). Works in `scratch` (one extraction at a time).
+NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
+                            std::uint32_t step, NodeId node, ExtractScratch& scratch,
+                            std::stop_token stop = {}, bool merge_face_squares = true);
+
+// The same in this thread's scratch (this_thread_scratch()).
 NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
                             std::uint32_t step, NodeId node, std::stop_token stop = {},
                             bool merge_face_squares = true);

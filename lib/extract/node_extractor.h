@@ -20,17 +20,25 @@
 // triangles that still collapse once in axis coordinates are removed at the end
 // (collapsed_triangles.h), so extreme value ratios leave no slivers or cracks.
 //
-// Scratch buffers (condition masks, vertex slots, the mesh builder) are kept per
-// thread between calls (about 1 MB per thread for 25^3 samples): concurrent calls from
-// different threads are fine.
+// Parts: conditions.h (the conditions and their masks), cell_sweep.h (the walk over the
+// cells), cell_kernel.h (each cut cell's faces), cell_tables.h (the marching tables),
+// lattice_to_axis.h (positions, normals and attributes in axis coordinates).
 #pragma once
 
 #include "extract/extract_request.h"
 #include "extract/mesh.h"
+#include "extract/node_mesh_scratch.h"
 #include "extract/node_samples.h"
+#include "extract/thread_scratch.h"
 
 namespace strielad {
 
+// The sub-volume's mesh in the node, working in `scratch` (its buffers kept for the next
+// call: a node costs no fresh pages).
+Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request, NodeMeshScratch& scratch,
+                       ExtractStats* stats = nullptr);
+
+// The same in this thread's scratch (this_thread_scratch()).
 Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request,
                        ExtractStats* stats = nullptr);
 

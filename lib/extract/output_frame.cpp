@@ -100,6 +100,41 @@ Vec3 combine(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& v) {
           a[2] * v[0] + b[2] * v[1] + c[2] * v[2]};
 }
 
+// Normal n (unit, axis frame) through the map with Jacobian columns cx, cy, cz
+// (determinant det): n' = J^-T n = (n_x (J_y x J_z) + n_y (J_z x J_x) + n_z (J_x x J_y))
+// / det J, unit length; n is kept where that has none.
+void transform_normal(const Vec3& cx, const Vec3& cy, const Vec3& cz, double det, std::array<float, 3>& n) {
+  const Vec3 a = cross(cy, cz), b = cross(cz, cx), c = cross(cx, cy);
+  Vec3 g{};
+  for (int i = 0; i < 3; ++i) g[i] = (n[0] * a[i] + n[1] * b[i] + n[2] * c[i]) / det;
+  const double len = std::sqrt(dot(g, g));
+  if (len > 0 && std::isfinite(len)) {
+    n = {static_cast<float>(g[0] / len), static_cast<float>(g[1] / len), static_cast<float>(g[2] / len)};
+  }
+}
+
+// The mesh's normals as its own area-weighted face normals (where those have a length).
+void placed_surface_normals(Mesh& mesh) {
+  std::vector<Vec3> sum(mesh.positions.size(), Vec3{0, 0, 0});
+  for (const auto& t : mesh.triangles) {
+    const auto& p0 = mesh.positions[t[0]];
+    const auto& p1 = mesh.positions[t[1]];
+    const auto& p2 = mesh.positions[t[2]];
+    const Vec3 n = cross(Vec3{p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
+                         Vec3{p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
+    for (std::uint32_t i : t) {
+      for (int a = 0; a < 3; ++a) sum[i][a] += n[a];
+    }
+  }
+  for (std::size_t v = 0; v < sum.size() && v < mesh.normals.size(); ++v) {
+    const double len = std::sqrt(dot(sum[v], sum[v]));
+    if (len > 0 && std::isfinite(len)) {
+      mesh.normals[v] = {static_cast<float>(sum[v][0] / len), static_cast<float>(sum[v][1] / len),
+                         static_cast<float>(sum[v][2] / len)};
+    }
+  }
+}
+
 }  // namespace
 
 OutputFrame parse_output_frame(std::string_view name) {
@@ -253,8 +288,8 @@ std::array<double, 3> FrameTransform::lon_lat_height(const std::array<double, 3>
   return {lon, lat, h};
 }
 
-void FrameTransform::apply(Mesh& mesh) const {
-  if (frame_ == OutputFrame::kAxis) return;
+// The attribute that places vertices vertically, or null when the placement uses none.
+const std::vector<float>* FrameTransform::placing_heights(const Mesh& mesh) const {
   const std::vector<float>* heights = nullptr;
   if (vertical_.kind == VerticalPlacement::Kind::kHeightVariable) {
     for (std::size_t a = 0; a < mesh.attribute_names.size(); ++a) {
@@ -266,91 +301,72 @@ void FrameTransform::apply(Mesh& mesh) const {
                        vertical_.variable);
     }
   }
-  const bool geographic = geographic_;
+  return heights;
+}
+
+FrameTransform::MappedPoint FrameTransform::map_point(const std::array<double, 3>& q, double hv) const {
+  // Axis to (lon, lat, h) or, on a Cartesian grid, to metres: position and Jacobian
+  // columns (d/dx, d/dy, d/dz).
+  std::array<double, 3> llh;
+  Vec3 jx{1, 0, 0}, jy{0, 1, 0}, jz{0, 0, 0};
+  if (geographic_) {
+    llh = lon_lat_height(q, hv);
+    if (!projection_.identity()) {
+      const auto j = projection_.jacobian(q[0], q[1], jacobian_step_);
+      jx = {j[0], j[2], 0};
+      jy = {j[1], j[3], 0};
+    }
+  } else {  // Cartesian metres about the domain's centre
+    const double sx = *metres_per_length_unit(manifest_->x.units);
+    const double sy = *metres_per_length_unit(manifest_->y.units);
+    llh = {(q[0] - midpoint(manifest_->x)) * sx, (q[1] - midpoint(manifest_->y)) * sy,
+           lon_lat_height(q, hv)[2]};
+    jx = {sx, 0, 0};
+    jy = {0, sy, 0};
+  }
+  if (vertical_.kind == VerticalPlacement::Kind::kHeightAxis) {
+    jz = {0, 0, z_unit_};
+  } else if (vertical_.kind == VerticalPlacement::Kind::kStandardAtmosphere) {
+    const double pa = q[2] * z_unit_, dp = std::max(pa * 1e-6, 1e-9);
+    jz = {0, 0, (geo::standard_height_m(pa + dp) - geo::standard_height_m(pa - dp)) / (2 * dp) * z_unit_};
+  }
+  MappedPoint m;
+  if (geographic_) {
+    const FramePoint f = frame_point(frame_, llh[0], llh[1], llh[2], lon0_, lat0_);
+    m.p = f.p;
+    m.cx = combine(f.d_lon, f.d_lat, f.d_h, jx);
+    m.cy = combine(f.d_lon, f.d_lat, f.d_h, jy);
+    m.cz = combine(f.d_lon, f.d_lat, f.d_h, jz);
+  } else {
+    m.p = {llh[0], llh[1], llh[2]};
+    m.cx = jx;
+    m.cy = jy;
+    m.cz = jz;
+  }
+  return m;
+}
+
+void FrameTransform::apply(Mesh& mesh) const {
+  if (frame_ == OutputFrame::kAxis) return;
+  const std::vector<float>* heights = placing_heights(mesh);
   int orientation = 0;  // sign of the map's Jacobian determinant
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    const auto& q = mesh.positions[v];
     const double hv = heights != nullptr ? static_cast<double>((*heights)[v]) : 0.0;
-    // Axis to (lon, lat, h) or, on a Cartesian grid, to metres: position and Jacobian
-    // columns (d/dx, d/dy, d/dz).
-    std::array<double, 3> llh;
-    Vec3 jx{1, 0, 0}, jy{0, 1, 0}, jz{0, 0, 0};
-    if (geographic) {
-      llh = lon_lat_height(q, hv);
-      if (!projection_.identity()) {
-        const auto j = projection_.jacobian(q[0], q[1], jacobian_step_);
-        jx = {j[0], j[2], 0};
-        jy = {j[1], j[3], 0};
-      }
-    } else {  // Cartesian metres about the domain's centre
-      const double sx = *metres_per_length_unit(manifest_->x.units);
-      const double sy = *metres_per_length_unit(manifest_->y.units);
-      llh = {(q[0] - midpoint(manifest_->x)) * sx, (q[1] - midpoint(manifest_->y)) * sy,
-             lon_lat_height(q, hv)[2]};
-      jx = {sx, 0, 0};
-      jy = {0, sy, 0};
-    }
-    if (vertical_.kind == VerticalPlacement::Kind::kHeightAxis) {
-      jz = {0, 0, z_unit_};
-    } else if (vertical_.kind == VerticalPlacement::Kind::kStandardAtmosphere) {
-      const double pa = q[2] * z_unit_, dp = std::max(pa * 1e-6, 1e-9);
-      jz = {0, 0, (geo::standard_height_m(pa + dp) - geo::standard_height_m(pa - dp)) / (2 * dp) * z_unit_};
-    }
-    Vec3 out;
-    Vec3 cx, cy, cz;  // Jacobian columns of the whole map
-    if (geographic) {
-      const FramePoint f = frame_point(frame_, llh[0], llh[1], llh[2], lon0_, lat0_);
-      out = f.p;
-      cx = combine(f.d_lon, f.d_lat, f.d_h, jx);
-      cy = combine(f.d_lon, f.d_lat, f.d_h, jy);
-      cz = combine(f.d_lon, f.d_lat, f.d_h, jz);
-    } else {
-      out = {llh[0], llh[1], llh[2]};
-      cx = jx;
-      cy = jy;
-      cz = jz;
-    }
-    const double det = dot(cx, cross(cy, cz));
+    const MappedPoint m = map_point(mesh.positions[v], hv);
+    const double det = dot(m.cx, cross(m.cy, m.cz));
     if (orientation == 0 && det != 0 && std::isfinite(det)) orientation = det < 0 ? -1 : 1;
     if (v < mesh.normals.size() && vertical_.kind != VerticalPlacement::Kind::kHeightVariable) {
-      // Gradient transform: n' = J^-T n = (n_x (J_y x J_z) + n_y (J_z x J_x) +
-      // n_z (J_x x J_y)) / det J.
-      const auto& n = mesh.normals[v];
-      const Vec3 a = cross(cy, cz), b = cross(cz, cx), c = cross(cx, cy);
-      Vec3 g{};
-      for (int i = 0; i < 3; ++i) g[i] = (n[0] * a[i] + n[1] * b[i] + n[2] * c[i]) / det;
-      const double len = std::sqrt(dot(g, g));
-      if (len > 0 && std::isfinite(len)) {
-        mesh.normals[v] = {static_cast<float>(g[0] / len), static_cast<float>(g[1] / len),
-                           static_cast<float>(g[2] / len)};
-      }
+      transform_normal(m.cx, m.cy, m.cz, det, mesh.normals[v]);
     }
-    mesh.positions[v] = out;
+    mesh.positions[v] = m.p;
   }
   if (orientation < 0) {  // the map reverses orientation (a pressure axis, say)
     for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
   }
   if (vertical_.kind == VerticalPlacement::Kind::kHeightVariable && !mesh.normals.empty()) {
     // Heights from a field: the map's vertical derivatives are not known per vertex, so
-    // the normals are the placed surface's own (area-weighted face normals).
-    std::vector<Vec3> sum(mesh.positions.size(), Vec3{0, 0, 0});
-    for (const auto& t : mesh.triangles) {
-      const auto& p0 = mesh.positions[t[0]];
-      const auto& p1 = mesh.positions[t[1]];
-      const auto& p2 = mesh.positions[t[2]];
-      const Vec3 n = cross(Vec3{p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
-                           Vec3{p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
-      for (std::uint32_t i : t) {
-        for (int a = 0; a < 3; ++a) sum[i][a] += n[a];
-      }
-    }
-    for (std::size_t v = 0; v < sum.size() && v < mesh.normals.size(); ++v) {
-      const double len = std::sqrt(dot(sum[v], sum[v]));
-      if (len > 0 && std::isfinite(len)) {
-        mesh.normals[v] = {static_cast<float>(sum[v][0] / len), static_cast<float>(sum[v][1] / len),
-                           static_cast<float>(sum[v][2] / len)};
-      }
-    }
+    // the normals are the placed surface's own.
+    placed_surface_normals(mesh);
   }
 }
 

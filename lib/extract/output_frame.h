@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "extract/mesh.h"
 #include "format/manifest.h"
@@ -87,6 +88,14 @@ class FrameTransform {
                                        double height = 0) const;
 
  private:
+  // A position in the frame and the Jacobian columns (d/dx, d/dy, d/dz) of the map there.
+  struct MappedPoint {
+    std::array<double, 3> p, cx, cy, cz;
+  };
+  // Axis position q (and the height variable's value hv there) through the map.
+  MappedPoint map_point(const std::array<double, 3>& q, double hv) const;
+  const std::vector<float>* placing_heights(const Mesh& mesh) const;
+
   OutputFrame frame_;
   VerticalPlacement vertical_;
   const format::Manifest* manifest_;

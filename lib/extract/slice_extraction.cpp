@@ -82,7 +82,7 @@ Mesh axis_plane(const NodeSamples& ns, const SliceRequest& rq) {
 }
 
 // The iso-level as the limit faces of the region {level >= value}.
-Mesh level_surface(const NodeSamples& ns, const SliceRequest& rq) {
+Mesh level_surface(const NodeSamples& ns, const SliceRequest& rq, NodeMeshScratch& scratch) {
   Mesh out;
   out.subvolume_id = rq.slice_id;
   out.attribute_names = {rq.colour_name};
@@ -91,7 +91,7 @@ Mesh level_surface(const NodeSamples& ns, const SliceRequest& rq) {
   ExtractRequest request;
   request.subvolume_id = rq.slice_id;
   request.limits.push_back({rq.level_field, rq.value, kUnbounded});
-  const Mesh region = extract_node_mesh(ns, request);
+  const Mesh region = extract_node_mesh(ns, request, scratch);
   const std::size_t nv = region.vertex_count();
   // Per vertex: usable (the level field is defined there) and its colour.
   std::vector<std::uint8_t> usable(nv, 0);
@@ -174,7 +174,8 @@ double field_at_lattice(const NodeSamples& samples, std::uint32_t field,
   return sum;
 }
 
-Mesh extract_slice_mesh(const NodeSamples& samples, const SliceRequest& request) {
+Mesh extract_slice_mesh(const NodeSamples& samples, const SliceRequest& request,
+                        NodeMeshScratch& scratch) {
   check_field(samples, request.colour_field, request, "colour");
   if (request.axis >= 0) {
     if (request.axis > 2) {
@@ -184,7 +185,11 @@ Mesh extract_slice_mesh(const NodeSamples& samples, const SliceRequest& request)
     return axis_plane(samples, request);
   }
   check_field(samples, request.level_field, request, "level");
-  return level_surface(samples, request);
+  return level_surface(samples, request, scratch);
+}
+
+Mesh extract_slice_mesh(const NodeSamples& samples, const SliceRequest& request) {
+  return extract_slice_mesh(samples, request, this_thread_scratch().mesh);
 }
 
 bool skip_slice(const Store& store, const ResolvedSlice& slice, std::uint32_t step,

@@ -28,6 +28,7 @@
 
 #include "extract/mesh.h"
 #include "extract/node_extraction.h"
+#include "extract/node_mesh_scratch.h"
 #include "extract/node_samples.h"
 #include "scene/scene.h"
 
@@ -47,7 +48,12 @@ struct SliceRequest {
 // The slice's mesh in the node (face kind kSlice only, one attribute; empty when the
 // plane or level misses the node). Axis planes are drawn when the plane lies within the
 // node's lattice (boundaries included: skipping a shared face is skip_slice's job).
-// \error kInvalidArgument for a field index or axis the samples do not have.
+// \error kInvalidArgument for a field index or axis the samples do not have. An
+// iso-level works in `scratch` (extract_node_mesh).
+Mesh extract_slice_mesh(const NodeSamples& samples, const SliceRequest& request,
+                        NodeMeshScratch& scratch);
+
+// The same in this thread's scratch (this_thread_scratch()).
 Mesh extract_slice_mesh(const NodeSamples& samples, const SliceRequest& request);
 
 // Whether the slice can be decided without reading bricks, from the node's sample

@@ -40,7 +40,8 @@ double TetClipper::value(std::uint32_t v, std::size_t c) const {
 
 // The point where condition c crosses the polytope edge a-b (value(a) >= 0 > value(b)
 // or the reverse).
-std::uint32_t TetClipper::crossing(std::uint32_t a, std::uint32_t b, std::size_t c) {
+std::uint32_t TetClipper::crossing(std::uint32_t a, std::uint32_t b, std::size_t c,
+                                   std::uint64_t& corner_crossings) {
   const Vertex& va = vertices_[a];
   const Vertex& vb = vertices_[b];
   const std::uint64_t common = va.planes & vb.planes;
@@ -59,7 +60,7 @@ std::uint32_t TetClipper::crossing(std::uint32_t a, std::uint32_t b, std::size_t
     }
     if (faces_shared == 2 && s[p] != s[q] && (s[p] >= 0) != (s[q] >= 0)) {
       // The same point as the kernel's marching tetrahedra make on this edge.
-      const EdgeCrossing x = edge_crossing(corner_pos_[p], corner_pos_[q], s[p], s[q]);
+      const EdgeCrossing x = edge_crossing(corner_pos_[p], corner_pos_[q], s[p], s[q], corner_crossings);
       w[p] = 1.0 - x.t;
       w[q] = x.t;
       return add_vertex(w, common | new_plane, x.p);
@@ -87,7 +88,8 @@ std::uint32_t TetClipper::crossing(std::uint32_t a, std::uint32_t b, std::size_t
           const int p = k[i == 2 ? 0 : i], q = k[i == 2 ? 2 : i + 1], r = k[i == 0 ? 2 : i == 1 ? 0 : 1];
           if (zero[p] != 0.0 || zero[q] != 0.0 || zero[r] == 0.0) continue;
           if ((other[p] >= 0) == (other[q] >= 0)) continue;
-          const EdgeCrossing x = edge_crossing(corner_pos_[p], corner_pos_[q], other[p], other[q]);
+          const EdgeCrossing x = edge_crossing(corner_pos_[p], corner_pos_[q], other[p], other[q],
+                                               corner_crossings);
           w[p] = 1.0 - x.t;
           w[q] = x.t;
           return add_vertex(w, common | new_plane, x.p);
@@ -120,7 +122,7 @@ std::uint32_t TetClipper::crossing(std::uint32_t a, std::uint32_t b, std::size_t
   return add_vertex(w, common | new_plane);
 }
 
-bool TetClipper::clip_by(std::size_t c) {
+bool TetClipper::clip_by(std::size_t c, std::uint64_t& corner_crossings) {
   vertex_values_.resize(vertices_.size());
   bool any_in = false, any_out = false;
   for (std::uint32_t v = 0; v < vertices_.size(); ++v) {
@@ -142,7 +144,7 @@ bool TetClipper::clip_by(std::size_t c) {
     for (const auto& x : crossings_) {
       if (x[0] == lo && x[1] == hi) return x[2];
     }
-    const std::uint32_t v = crossing(lo, hi, c);
+    const std::uint32_t v = crossing(lo, hi, c, corner_crossings);
     crossings_.push_back({lo, hi, v});
     return v;
   };
@@ -223,7 +225,7 @@ Vec3 TetClipper::barycentric_gradient(int k) const {
 
 bool TetClipper::clip(const std::array<std::size_t, 4>& corners,
                       const std::array<Vec3, 4>& positions, const ConditionSet& set,
-                      std::uint64_t conditions) {
+                      std::uint64_t conditions, std::uint64_t& corner_crossings) {
   corner_pos_ = positions;
   for (std::uint64_t bits = conditions; bits != 0; bits &= bits - 1) {
     const std::size_t c = static_cast<std::size_t>(std::countr_zero(bits));
@@ -257,7 +259,7 @@ bool TetClipper::clip(const std::array<std::size_t, 4>& corners,
     for (std::uint32_t v : kFaces[k]) loop_.push_back(v);
   }
   for (std::uint64_t bits = conditions; bits != 0; bits &= bits - 1) {
-    if (!clip_by(static_cast<std::size_t>(std::countr_zero(bits)))) return false;
+    if (!clip_by(static_cast<std::size_t>(std::countr_zero(bits)), corner_crossings)) return false;
   }
   return true;
 }

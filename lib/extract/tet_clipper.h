@@ -55,17 +55,17 @@ inline Vec3 lattice_point(const std::array<Vec3, 4>& corners, const std::array<d
 // cell wide). The surface moves by less than 1e-9 of a cell.
 inline constexpr double kCrossingSnap = 0x1p-30;
 
-// Crossings this thread has put on a corner (a sample exactly on a bound, or snapped):
-// only then can surfaces coincide (sheets without volume, collapsed_triangles.h), so
-// the kernel looks for them only when this count moved.
-inline thread_local std::uint64_t corner_crossings = 0;
-
 struct EdgeCrossing {
   double t = 0;
   Vec3 p{};
 };
 
-inline EdgeCrossing edge_crossing(const Vec3& P, const Vec3& Q, double sp, double sq) {
+// `corner_crossings` counts the crossings snapped onto a corner (a sample exactly on a
+// bound, or within kCrossingSnap of one): only then can surfaces coincide (sheets
+// without volume, collapsed_triangles.h), so the caller looks for them only when its
+// count moved.
+inline EdgeCrossing edge_crossing(const Vec3& P, const Vec3& Q, double sp, double sq,
+                                  std::uint64_t& corner_crossings) {
   const double t = sp / (sp - sq);
   const double wp = 1.0 - t, wq = t;
   if (wq <= kCrossingSnap) {
@@ -104,8 +104,9 @@ class TetClipper {
 
   // corners: sample ids in ascending order and their lattice positions; conditions:
   // bit c set = clip by condition c of `set`. Returns false when nothing is left.
+  // Crossings put on a lattice corner are counted in `corner_crossings` (edge_crossing).
   bool clip(const std::array<std::size_t, 4>& corners, const std::array<Vec3, 4>& positions,
-            const ConditionSet& set, std::uint64_t conditions);
+            const ConditionSet& set, std::uint64_t conditions, std::uint64_t& corner_crossings);
 
   const std::vector<Face>& faces() const { return faces_; }
   const std::vector<std::uint32_t>& loop() const { return loop_; }
@@ -123,9 +124,10 @@ class TetClipper {
   };
   std::uint32_t add_vertex(const std::array<double, 4>& w, std::uint64_t planes);
   std::uint32_t add_vertex(const std::array<double, 4>& w, std::uint64_t planes, const Vec3& p);
-  std::uint32_t crossing(std::uint32_t a, std::uint32_t b, std::size_t c);
+  std::uint32_t crossing(std::uint32_t a, std::uint32_t b, std::size_t c,
+                         std::uint64_t& corner_crossings);
   double value(std::uint32_t v, std::size_t c) const;
-  bool clip_by(std::size_t c);
+  bool clip_by(std::size_t c, std::uint64_t& corner_crossings);
 
   std::array<Vec3, 4> corner_pos_{};
   std::array<double, 4 * kMaxConditions> corner_values_{};  // [c * 4 + k]

@@ -23,7 +23,8 @@ struct Input {
 
 // The same inline code, compiled without FMA (the default x86-64 target) ...
 EdgeCrossing crossing_default_target(const Input& in) {
-  return edge_crossing(in.p, in.q, in.sp, in.sq);
+  std::uint64_t corner_crossings = 0;
+  return edge_crossing(in.p, in.q, in.sp, in.sq, corner_crossings);
 }
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -31,7 +32,8 @@ EdgeCrossing crossing_default_target(const Input& in) {
 // ... and with FMA available to the compiler (flatten: edge_crossing inlined here, so
 // compiled for this target).
 __attribute__((target("avx2,fma"), flatten)) EdgeCrossing crossing_fma_target(const Input& in) {
-  return edge_crossing(in.p, in.q, in.sp, in.sq);
+  std::uint64_t corner_crossings = 0;
+  return edge_crossing(in.p, in.q, in.sp, in.sq, corner_crossings);
 }
 #endif
 
