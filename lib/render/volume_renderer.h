@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The pseudo-volumetric renderer of strielad-view (the paper's A-buffer, issue 5):
+// The pseudo-volumetric renderer of strielad-view (the paper's A-buffer):
 // 1. opaque pass: the background, terrain and flight tracks into a colour and a depth
 //    texture;
 // 2. geometry pass: every node's closed meshes, nearest node first, depth-tested
