@@ -118,7 +118,7 @@ std::shared_ptr<const view::TerrainFrame> fully_loaded_terrain(view::TerrainTile
 struct RunFacts {
   const ViewerSession& session;
   const view::ViewController& controller;
-  const render::VolumeRenderer& renderer;
+  render::VolumeRenderer& renderer;
   double advect_s = 0;
   const std::optional<view::SunAtTime>& sun;
   const std::shared_ptr<const view::TrackLines>& tracks;
