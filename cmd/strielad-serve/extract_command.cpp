@@ -33,10 +33,12 @@ struct ExtractArgs {
   std::optional<std::string> height_var;
 };
 
-int run_extract(const ExtractArgs& args) {
-  const auto store = Store::open(args.store);
-  const format::Manifest& manifest = store->manifest();
-  const OutputFrame frame = parse_output_frame(args.frame);
+// The transform of .vtp positions into --frame (none for the axis frame), heights placed
+// by --height-var or the store's choice. \error kInvalidArgument for --height-var in the
+// axis frame.
+std::optional<FrameTransform> output_transform(const ExtractArgs& args,
+                                               const format::Manifest& manifest,
+                                               OutputFrame frame) {
   if (args.height_var && frame == OutputFrame::kAxis) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "--height-var {}: the axis frame keeps the vertical axis as it is; give "
@@ -49,45 +51,54 @@ int run_extract(const ExtractArgs& args) {
     spdlog::info("frame {}: heights from the {}", output_frame_name(frame),
                  transform->vertical().description);
   }
+  return transform;
+}
+
+// The scene file at --time, resolved against the store. A height variable travels with
+// the meshes as an attribute (the placement reads it).
+ResolvedScene scene_to_extract(const ExtractArgs& args, const format::Manifest& manifest,
+                               const std::optional<FrameTransform>& transform) {
   Scene scene = load_scene_file(args.scene);
   if (args.time) scene.time = *args.time;
-  // A height variable travels with the meshes as an attribute (the placement reads it).
   if (transform && transform->vertical().kind == VerticalPlacement::Kind::kHeightVariable &&
       std::find(scene.attributes.begin(), scene.attributes.end(), transform->vertical().variable) ==
           scene.attributes.end()) {
     scene.attributes.push_back(transform->vertical().variable);
   }
-  const ResolvedScene resolved = resolve_scene(scene, manifest, args.scene);
+  return resolve_scene(scene, manifest, args.scene);
+}
 
-  if (args.output.ends_with(".vdb")) {
-    if (frame != OutputFrame::kAxis) {
-      throw make_error(ErrorCode::kInvalidArgument,
-                       "--frame {}: only .vtp output is transformed; a .vdb grid stays in index "
-                       "space with its axes in the grid metadata",
-                       args.frame);
-    }
-    const auto grids = vdb::write_subvolume_vdb(*store, resolved, args.level, args.output);
-    nlohmann::json j = nlohmann::json::array();
-    for (const auto& g : grids) {
-      j.push_back({{"subvolume_id", g.subvolume_id}, {"active_voxels", g.active_voxels},
-                   {"nodes_skipped", g.nodes_skipped}, {"bricks_read", g.bricks_read}});
-      if (!args.json) {
-        spdlog::info("sub-volume {}: {} active voxels ({} nodes skipped, {} bricks read)",
-                     g.subvolume_id, g.active_voxels, g.nodes_skipped, g.bricks_read);
-      }
-    }
-    if (args.json) {
-      const auto time = geo::time_step_json(store->manifest().time, resolved.time);
-      std::cout << nlohmann::json{{"output", args.output}, {"time", time}, {"grids", j}}.dump(2)
-                << "\n";
-    }
-    return 0;
+// .vdb output: one fog volume per sub-volume, in index space. \error kInvalidArgument
+// for any frame but the axis frame.
+int write_vdb_output(const ExtractArgs& args, const Store& store, const ResolvedScene& resolved,
+                     OutputFrame frame) {
+  if (frame != OutputFrame::kAxis) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "--frame {}: only .vtp output is transformed; a .vdb grid stays in index "
+                     "space with its axes in the grid metadata",
+                     args.frame);
   }
-  LevelExtractionOptions options;
-  options.step = resolved.time;
-  options.level = args.level;
-  options.threads = args.threads;
-  options.merge_face_squares = !transform || transform->affine();
+  const auto grids = vdb::write_subvolume_vdb(store, resolved, args.level, args.output);
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& g : grids) {
+    j.push_back({{"subvolume_id", g.subvolume_id}, {"active_voxels", g.active_voxels},
+                 {"nodes_skipped", g.nodes_skipped}, {"bricks_read", g.bricks_read}});
+    if (!args.json) {
+      spdlog::info("sub-volume {}: {} active voxels ({} nodes skipped, {} bricks read)",
+                   g.subvolume_id, g.active_voxels, g.nodes_skipped, g.bricks_read);
+    }
+  }
+  if (args.json) {
+    const auto time = geo::time_step_json(store.manifest().time, resolved.time);
+    std::cout << nlohmann::json{{"output", args.output}, {"time", time}, {"grids", j}}.dump(2)
+              << "\n";
+  }
+  return 0;
+}
+
+// Every node of the level, with a progress bar over the nodes.
+LevelExtraction extract_with_progress(const Store& store, const ResolvedScene& resolved,
+                                      LevelExtractionOptions options) {
   std::unique_ptr<cli::ProgressBar> bar;
   std::mutex bar_mutex;
   options.progress = [&](std::uint64_t done, std::uint64_t total) {
@@ -96,9 +107,15 @@ int run_extract(const ExtractArgs& args) {
     (void)done;
     bar->advance();
   };
-  LevelExtraction result = extract_level(*store, resolved, options);
+  LevelExtraction result = extract_level(store, resolved, options);
   if (bar) bar->finish();
+  return result;
+}
 
+// The meshes, moved into the output frame, as one .vtp file that names its frame.
+VtpSummary write_vtp_output(const ExtractArgs& args, const format::Manifest& manifest,
+                            OutputFrame frame, const std::optional<FrameTransform>& transform,
+                            LevelExtraction& result) {
   std::vector<NodeMeshRef> meshes;
   for (NodeExtraction& n : result.nodes) {
     for (SubVolumeResult& r : n.results) {
@@ -116,15 +133,20 @@ int run_extract(const ExtractArgs& args) {
         "grid_mapping", fmt::format("{} ({}): {}", manifest.grid_mapping->variable,
                                     manifest.grid_mapping->name, manifest.grid_mapping->proj));
   }
-  const VtpSummary written = write_vtp(args.output, meshes, vtp);
+  return write_vtp(args.output, meshes, vtp);
+}
 
-  const LevelExtractionTotals& t = result.totals;
+// The --json report: what was extracted, what it cost, and what the file holds.
+nlohmann::json extract_report(const ExtractArgs& args, const format::Manifest& manifest,
+                              const LevelExtractionOptions& options, OutputFrame frame,
+                              const std::optional<FrameTransform>& transform,
+                              const LevelExtractionTotals& t, const VtpSummary& written) {
   nlohmann::json j;
   j["store"] = args.store;
   j["scene"] = args.scene;
   j["output"] = args.output;
   j["time_step"] = options.step;
-  j["time"] = geo::time_step_json(store->manifest().time, options.step);
+  j["time"] = geo::time_step_json(manifest.time, options.step);
   j["frame"] = std::string(output_frame_name(frame));
   if (transform) j["vertical_placement"] = transform->vertical().description;
   j["level"] = options.level;
@@ -146,8 +168,28 @@ int run_extract(const ExtractArgs& args) {
   j["file_points"] = written.points;
   j["dropped_boundary_triangles"] = written.dropped_triangles;
   j["file_bytes"] = written.bytes;
+  return j;
+}
+
+int run_extract(const ExtractArgs& args) {
+  const auto store = Store::open(args.store);
+  const format::Manifest& manifest = store->manifest();
+  const OutputFrame frame = parse_output_frame(args.frame);
+  const std::optional<FrameTransform> transform = output_transform(args, manifest, frame);
+  const ResolvedScene resolved = scene_to_extract(args, manifest, transform);
+  if (args.output.ends_with(".vdb")) return write_vdb_output(args, *store, resolved, frame);
+
+  LevelExtractionOptions options;
+  options.step = resolved.time;
+  options.level = args.level;
+  options.threads = args.threads;
+  options.merge_face_squares = !transform || transform->affine();
+  LevelExtraction result = extract_with_progress(*store, resolved, options);
+  const VtpSummary written = write_vtp_output(args, manifest, frame, transform, result);
+  const LevelExtractionTotals& t = result.totals;
   if (args.json) {
-    std::cout << j.dump(2) << "\n";
+    std::cout << extract_report(args, manifest, options, frame, transform, t, written).dump(2)
+              << "\n";
   } else {
     spdlog::info(
         "extracted level {} of step {}: {} nodes x {} sub-volumes: {} meshes, {} empty, {} "

@@ -97,10 +97,9 @@ std::string sun_choice(const ViewerArgs& args, const ViewerSession& session) {
   return "fixed, the built-in light from the south-southeast, 54 degrees up (--sun fixed)";
 }
 
-}  // namespace
-
-ViewerSession open_session(const ViewerArgs& args) {
-  ViewerSession session;
+// The server's client: an in-process server for a local store (kept in the session), or
+// a connection to --connect with --dataset opened. Names the dataset in the session.
+std::unique_ptr<client::ServerClient> open_client(const ViewerArgs& args, ViewerSession& session) {
   std::unique_ptr<client::ServerClient> client;
   if (!args.store.empty()) {
     view::LocalServerOptions options;
@@ -118,6 +117,68 @@ ViewerSession open_session(const ViewerArgs& args) {
     client->open_dataset(args.dataset);
     session.dataset_name = args.connect + "/" + args.dataset;
   }
+  return client;
+}
+
+// The true sun needs a place on the Earth: refused when asked for, else the fixed light
+// with a warning.
+void check_true_sun_placeable(const ViewerArgs& args, const lod::WorldFrame& frame) {
+  if (frame.on_earth() || args.sun != "time") return;
+  if (args.sun_given || args.sun_time_asked) {
+    throw make_error(ErrorCode::kUnsupported, "{}: the true sun cannot be placed: {}",
+                     args.sun_given ? "--sun time" : "the scene's sun {\"mode\": \"time\"}",
+                     frame.no_earth_reason());
+  }
+  spdlog::warn("the true sun cannot be placed ({}): lit by the fixed light",
+               frame.no_earth_reason());
+}
+
+// --tracks: the flight tracks, which need real dates and a place on the Earth.
+std::shared_ptr<const geo::FlightTracks> open_tracks(const ViewerArgs& args,
+                                                     const format::Manifest& manifest,
+                                                     const lod::WorldFrame& frame) {
+  if (!view::step_julian_day(manifest, 0)) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "--tracks {}: the store's time axis '{}' (units '{}', calendar '{}') has "
+                     "no real date to place the tracks in time",
+                     args.tracks_file, manifest.time.name, manifest.time.units,
+                     manifest.time.calendar);
+  }
+  if (!frame.on_earth()) {
+    throw make_error(ErrorCode::kUnsupported, "--tracks {}: flight tracks cannot be placed: {}",
+                     args.tracks_file, frame.no_earth_reason());
+  }
+  auto tracks = std::make_shared<const geo::FlightTracks>(geo::load_flight_tracks(args.tracks_file));
+  spdlog::info("{}: {} flight tracks, {} position reports", args.tracks_file,
+               tracks->tracks.size(), tracks->reports);
+  return tracks;
+}
+
+// --terrain: the DEM's tiles (loaded on their own thread), with the drape image of
+// --terrain-image.
+std::unique_ptr<view::TerrainTiles> open_terrain(const ViewerArgs& args,
+                                                 const lod::WorldFrame& frame) {
+  if (!frame.on_earth()) {
+    throw make_error(ErrorCode::kUnsupported, "--terrain {}: terrain cannot be placed: {}",
+                     args.terrain_file, frame.no_earth_reason());
+  }
+  std::shared_ptr<const geo::DemSource> dem = geo::open_dem(args.terrain_file, args.terrain_var);
+  std::shared_ptr<const geo::DrapeImage> drape;
+  if (!args.terrain_image.empty()) {
+    drape = std::make_shared<const geo::DrapeImage>(args.terrain_image);
+    spdlog::info("terrain drape image {}", drape->describe());
+  }
+  view::TerrainOptions options;
+  options.error_pixels = args.terrain_error;
+  options.cache_bytes = static_cast<std::size_t>(args.terrain_cache_mib * 1048576.0);
+  return std::make_unique<view::TerrainTiles>(std::move(dem), frame, options, std::move(drape));
+}
+
+}  // namespace
+
+ViewerSession open_session(const ViewerArgs& args) {
+  ViewerSession session;
+  std::unique_ptr<client::ServerClient> client = open_client(args, session);
   const format::Manifest manifest = client->manifest();
   session.scene = args.scene_file.empty() ? view::default_scene(manifest)
                                           : load_scene_file(args.scene_file);
@@ -142,17 +203,7 @@ ViewerSession open_session(const ViewerArgs& args) {
   const lod::WorldFrame& frame = session.link->placer().frame();
   spdlog::info("world frame: {}", frame.describe_horizontal());
   spdlog::info("vertical placement: {}", session.vertical_placement);
-  if (!frame.on_earth() && args.sun == "time") {
-    // The true sun needs a place on the Earth: refused when asked for, else the fixed
-    // light with a warning.
-    if (args.sun_given || args.sun_time_asked) {
-      throw make_error(ErrorCode::kUnsupported, "{}: the true sun cannot be placed: {}",
-                       args.sun_given ? "--sun time" : "the scene's sun {\"mode\": \"time\"}",
-                       frame.no_earth_reason());
-    }
-    spdlog::warn("the true sun cannot be placed ({}): lit by the fixed light",
-                 frame.no_earth_reason());
-  }
+  check_true_sun_placeable(args, frame);
   std::string exaggeration_rule;
   std::tie(session.exaggeration, exaggeration_rule) =
       starting_exaggeration(args, session.link->placer().frame());
@@ -161,40 +212,8 @@ ViewerSession open_session(const ViewerArgs& args) {
                           .exaggeration = exaggeration_rule,
                           .sun = sun_choice(args, session)});
   open_advection(args, session);
-  if (!args.tracks_file.empty()) {
-    if (!view::step_julian_day(manifest, 0)) {
-      throw make_error(ErrorCode::kUnsupported,
-                       "--tracks {}: the store's time axis '{}' (units '{}', calendar '{}') has "
-                       "no real date to place the tracks in time",
-                       args.tracks_file, manifest.time.name, manifest.time.units,
-                       manifest.time.calendar);
-    }
-    if (!frame.on_earth()) {
-      throw make_error(ErrorCode::kUnsupported, "--tracks {}: flight tracks cannot be placed: {}",
-                       args.tracks_file, frame.no_earth_reason());
-    }
-    session.tracks = std::make_shared<const geo::FlightTracks>(
-        geo::load_flight_tracks(args.tracks_file));
-    spdlog::info("{}: {} flight tracks, {} position reports", args.tracks_file,
-                 session.tracks->tracks.size(), session.tracks->reports);
-  }
-  if (!args.terrain_file.empty()) {
-    if (!frame.on_earth()) {
-      throw make_error(ErrorCode::kUnsupported, "--terrain {}: terrain cannot be placed: {}",
-                       args.terrain_file, frame.no_earth_reason());
-    }
-    std::shared_ptr<const geo::DemSource> dem = geo::open_dem(args.terrain_file, args.terrain_var);
-    std::shared_ptr<const geo::DrapeImage> drape;
-    if (!args.terrain_image.empty()) {
-      drape = std::make_shared<const geo::DrapeImage>(args.terrain_image);
-      spdlog::info("terrain drape image {}", drape->describe());
-    }
-    view::TerrainOptions options;
-    options.error_pixels = args.terrain_error;
-    options.cache_bytes = static_cast<std::size_t>(args.terrain_cache_mib * 1048576.0);
-    session.terrain =
-        std::make_unique<view::TerrainTiles>(std::move(dem), frame, options, std::move(drape));
-  }
+  if (!args.tracks_file.empty()) session.tracks = open_tracks(args, manifest, frame);
+  if (!args.terrain_file.empty()) session.terrain = open_terrain(args, frame);
   spdlog::info("{}: {} x {} x {} grid, {} variables, {} time steps, {} octree nodes",
                session.dataset_name, manifest.x.size(), manifest.y.size(), manifest.z.size(),
                manifest.variables.size(), manifest.time.values.size(),

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Meshes moved with the wind on the GPU (issue 6, "Viewer"): the keyframes of a
+// Meshes moved with the wind on the GPU: the keyframes of a
 // view::DisplacementMap as 3D textures (RGB32F, linear filtering), and per draw the two
 // keyframes around the mesh's time with the weight between them. The geometry vertex
 // shader adds the displacement (trilinear in space, linear between the keyframes) to

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Slices in the opaque pass (issue 8, "Slices"; formats/scene.md "Slices"): every node's
+// Slices in the opaque pass (formats/scene.md "Slices"): every node's
 // slice triangles (render/gpu_meshes.h, view::NodeGeometry::slice_*) as opaque,
 // depth-writing, two-sided geometry coloured by the slice's colour map over its range
 // (NaN values, i.e. missing data, in a neutral grey) and lit lightly by the sun, so the

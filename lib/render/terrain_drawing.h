@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Terrain in the opaque pass (issue 8, "Terrain"): the tiles a view::TerrainTiles
+// Terrain in the opaque pass: the tiles a view::TerrainTiles
 // selected for the frame, drawn with depth writes so that the A-buffer's sub-volumes
 // composite in front of and behind it correctly. Lambert plus ambient shading by the
 // sun, with normals from the height field's gradients at the current vertical

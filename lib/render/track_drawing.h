@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Flight tracks in the opaque pass (issue 8, "Trajectories"): the windowed track lines
+// Flight tracks in the opaque pass: the windowed track lines
 // (view/track_window.h) as depth-writing lines and the aircraft as points, so the
 // A-buffer's sub-volumes composite in front of and behind them correctly.
 #pragma once

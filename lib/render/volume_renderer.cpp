@@ -227,6 +227,70 @@ void VolumeRenderer::ensure_pool(std::size_t fragments) {
   capacity_ = wanted;
 }
 
+struct VolumeRenderer::FrameSetup {
+  lod::Mat4 view_matrix{}, projection{}, view_projection{};
+  // The sub-volume id of each slot; unused slots hold -1, an id no sub-volume has (ids
+  // are 1..65535).
+  std::array<GLint, 32> slot_ids{};
+  std::array<float, 3 * view::kSubVolumePaletteSize> palette{};
+  // The meshes nearest first, with their distance from the eye.
+  std::vector<std::pair<double, const GpuMesh*>> order;
+  // The displacement of each step that moves (a handful of steps at most).
+  std::unordered_map<std::uint32_t, MotionBinding> motions;
+};
+
+namespace {
+
+std::array<GLint, 32> slot_id_uniform(const std::vector<std::uint32_t>& slot_ids) {
+  std::array<GLint, 32> ids;
+  ids.fill(-1);
+  for (std::size_t i = 0; i < slot_ids.size(); ++i) ids[i] = static_cast<GLint>(slot_ids[i]);
+  return ids;
+}
+
+std::array<float, 3 * view::kSubVolumePaletteSize> subvolume_palette_uniform() {
+  std::array<float, 3 * view::kSubVolumePaletteSize> palette{};
+  for (std::size_t i = 0; i < view::kSubVolumePaletteSize; ++i) {
+    const auto c = view::subvolume_palette_color(i);
+    for (int k = 0; k < 3; ++k) palette[3 * i + k] = c[k];
+  }
+  return palette;
+}
+
+// The meshes ordered by the distance of their centres (at the frame's exaggeration) from
+// the eye, nearest first.
+std::vector<std::pair<double, const GpuMesh*>> meshes_nearest_first(const GpuMeshes& meshes,
+                                                                    const FrameInputs& inputs) {
+  std::vector<std::pair<double, const GpuMesh*>> order;
+  order.reserve(meshes.meshes().size());
+  for (const auto& [node, mesh] : meshes.meshes()) {
+    const lod::Vec3 c{mesh.center[0], mesh.center[1], mesh.center[2] * inputs.vertical_exaggeration};
+    order.emplace_back(lod::length(lod::sub(c, inputs.camera.eye)), &mesh);
+  }
+  std::sort(order.begin(), order.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  return order;
+}
+
+// The geometry program's motion uniforms and textures: `motion`'s displacement map, or
+// none (null).
+void bind_motion(GLuint g, const MotionBinding* motion) {
+  glProgramUniform1i(g, location(g, "u_moving"), motion ? 1 : 0);
+  if (!motion) return;
+  const auto& map = *motion->map;
+  set_float(g, "u_motion_weight", motion->weight);
+  set_vec3(g, "u_motion_lo", map.box.lo);
+  lod::Vec3 size{};
+  for (int a = 0; a < 3; ++a) size[a] = std::max(map.box.hi[a] - map.box.lo[a], 1e-9);
+  set_vec3(g, "u_motion_size", size);
+  set_vec3(g, "u_motion_lattice",
+           lod::Vec3{double(map.lattice[0]), double(map.lattice[1]), double(map.lattice[2])});
+  glBindTextureUnit(2, motion->from);
+  glBindTextureUnit(3, motion->to);
+}
+
+}  // namespace
+
 FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer, int width,
                                   int height) {
   FrameStats stats;
@@ -235,12 +299,50 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
   if (!pool_ || capacity_ == 0) {
     ensure_pool(static_cast<std::size_t>(width) * height * kInitialFragmentsPerPixel);
   }
-  const lod::Mat4 view = lod::view_matrix(inputs.camera);
-  const lod::Mat4 projection = lod::projection_matrix(inputs.camera);
-  const lod::Mat4 view_projection = lod::multiply(projection, view);
+  FrameSetup frame;
+  frame.view_matrix = lod::view_matrix(inputs.camera);
+  frame.projection = lod::projection_matrix(inputs.camera);
+  frame.view_projection = lod::multiply(frame.projection, frame.view_matrix);
   glViewport(0, 0, width, height);
 
   // 1. Opaque pass: the background, the terrain, the slices, the flight tracks.
+  draw_opaque_pass(inputs, frame, height, stats);
+
+  // 2. Geometry pass(es) into the per-pixel lists.
+  frame.slot_ids = slot_id_uniform(slot_ids_);
+  frame.palette = subvolume_palette_uniform();
+  frame.order = meshes_nearest_first(meshes_, inputs);
+  motion_textures_.sync(inputs.motions);
+  for (const auto& m : inputs.motions) {
+    if (m.map) frame.motions[m.map->step] = motion_textures_.binding(m.map->step);
+  }
+  const float depth_limit = fill_fragment_lists(inputs, frame, stats);
+
+  // 3. Sort each pixel's list (no colour output), 4. resolve into the target.
+  glBeginQuery(GL_TIME_ELAPSED, timers_[2].get());
+  sort_fragment_lists();
+  resolve_fragment_lists(inputs, frame, framebuffer, depth_limit);
+  glEndQuery(GL_TIME_ELAPSED);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+
+  if (!inputs.outline_boxes.empty()) draw_outlines(inputs, frame.view_projection);
+
+  GLuint resolved[4] = {0, 0, 0, 0};
+  glGetNamedBufferSubData(resolve_stats_.get(), 0, sizeof(resolved), resolved);
+  stats.fragment_capacity = capacity_;
+  stats.covered_pixels = resolved[0];
+  stats.truncated_pixels = resolved[1];
+  stats.max_fragments_per_pixel = resolved[2];
+  stats.opaque_ms = elapsed_ms(timers_[0]);
+  stats.geometry_ms = elapsed_ms(timers_[1]);
+  stats.resolve_ms = elapsed_ms(timers_[2]);
+  glBindVertexArray(0);
+  glUseProgram(0);
+  return stats;
+}
+
+void VolumeRenderer::draw_opaque_pass(const FrameInputs& inputs, const FrameSetup& frame,
+                                      int height, FrameStats& stats) {
   glBeginQuery(GL_TIME_ELAPSED, timers_[0].get());
   glBindFramebuffer(GL_FRAMEBUFFER, opaque_framebuffer_.get());
   glDisable(GL_BLEND);
@@ -260,123 +362,31 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
   glBindVertexArray(empty_vertex_array_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   if (inputs.terrain) {
-    const auto drawn = terrain_drawing_.draw(*inputs.terrain, view_projection,
+    const auto drawn = terrain_drawing_.draw(*inputs.terrain, frame.view_projection,
                                              inputs.vertical_exaggeration, inputs.sun_direction);
     stats.terrain_tiles = drawn.tiles;
     stats.terrain_triangles = drawn.triangles;
   }
   if (!inputs.slice_styles.empty()) {
-    slice_drawing_.draw(meshes_, view_projection, inputs.vertical_exaggeration,
+    slice_drawing_.draw(meshes_, frame.view_projection, inputs.vertical_exaggeration,
                         inputs.slice_styles, inputs.sun_direction);
   }
   if (inputs.tracks) {
-    track_drawing_.draw(*inputs.tracks, view_projection, inputs.vertical_exaggeration,
+    track_drawing_.draw(*inputs.tracks, frame.view_projection, inputs.vertical_exaggeration,
                         inputs.track_color);
   }
   glEndQuery(GL_TIME_ELAPSED);
+}
 
-  // 2. Geometry pass into the per-pixel lists: nearest node first; every fragment is
-  // also counted in a depth histogram. When the pool overflows, it grows (up to the
-  // bound) and the pass runs again; at the bound, the pass runs again with a depth
-  // limit below which everything fits, so the fragments dropped are exactly the
-  // farthest (to the histogram's resolution).
-  // Unused slots hold -1, an id no sub-volume has (ids are 1..65535).
-  std::array<GLint, 32> ids;
-  ids.fill(-1);
-  for (std::size_t i = 0; i < slot_ids_.size(); ++i) ids[i] = static_cast<GLint>(slot_ids_[i]);
-  std::array<float, 3 * view::kSubVolumePaletteSize> palette{};
-  for (std::size_t i = 0; i < view::kSubVolumePaletteSize; ++i) {
-    const auto c = view::subvolume_palette_color(i);
-    for (int k = 0; k < 3; ++k) palette[3 * i + k] = c[k];
-  }
-  std::vector<std::pair<double, const GpuMesh*>> order;
-  order.reserve(meshes_.meshes().size());
-  for (const auto& [node, mesh] : meshes_.meshes()) {
-    const lod::Vec3 c{mesh.center[0], mesh.center[1], mesh.center[2] * inputs.vertical_exaggeration};
-    order.emplace_back(lod::length(lod::sub(c, inputs.camera.eye)), &mesh);
-  }
-  std::sort(order.begin(), order.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
-  const GLuint g = geometry_program_.get();
-  // The displacement of each step that moves (a handful of steps at most).
-  motion_textures_.sync(inputs.motions);
-  std::unordered_map<std::uint32_t, MotionBinding> motions;
-  for (const auto& m : inputs.motions) {
-    if (m.map) motions[m.map->step] = motion_textures_.binding(m.map->step);
-  }
-  const auto geometry_pass = [&](float depth_limit) {
-    const GLuint end_of_list = kEndOfList;
-    glClearTexImage(heads_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &end_of_list);
-    const GLuint zero = 0;
-    glNamedBufferSubData(counter_.get(), 0, sizeof(GLuint), &zero);
-    glClearNamedBufferData(histogram_.get(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                    GL_BUFFER_UPDATE_BARRIER_BIT);
-    glBindFramebuffer(GL_FRAMEBUFFER, opaque_framebuffer_.get());
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glDepthFunc(GL_LESS);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glUseProgram(g);
-    set_mat4(g, "u_view_projection", view_projection);
-    set_mat4(g, "u_view", view);
-    set_float(g, "u_vertical_exaggeration", inputs.vertical_exaggeration);
-    set_vec3(g, "u_eye", inputs.camera.eye);
-    set_vec3(g, "u_sun", lod::normalize(inputs.sun_direction));
-    set_float(g, "u_time", inputs.time_seconds);
-    set_float(g, "u_near", inputs.camera.near_km);
-    set_float(g, "u_far", inputs.camera.far_km);
-    set_float(g, "u_depth_limit", depth_limit);
-    glProgramUniform1i(g, location(g, "u_mirrored"), inputs.mirrored ? 1 : 0);
-    glProgramUniform1ui(g, location(g, "u_capacity"), static_cast<GLuint>(capacity_));
-    glProgramUniform1iv(g, location(g, "u_slot_ids"), 32, ids.data());
-    glProgramUniform3fv(g, location(g, "u_subvolume_colors"), 32, palette.data());
-    glBindImageTexture(0, heads_.get(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, counter_.get());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, pool_.get());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, histogram_.get());
-    stats.nodes_drawn = 0;
-    stats.nodes_moved = 0;
-    stats.triangles_drawn = 0;
-    const MotionBinding* bound = nullptr;
-    for (const auto& [distance, mesh] : order) {
-      const MotionBinding* motion = nullptr;
-      if (!inputs.motions.empty()) {
-        const auto it = motions.find(mesh->source->step);
-        if (it != motions.end() && it->second.map != nullptr) motion = &it->second;
-      }
-      if (motion != bound || (!motion && stats.nodes_drawn == 0)) {
-        glProgramUniform1i(g, location(g, "u_moving"), motion ? 1 : 0);
-        if (motion) {
-          const auto& map = *motion->map;
-          set_float(g, "u_motion_weight", motion->weight);
-          set_vec3(g, "u_motion_lo", map.box.lo);
-          lod::Vec3 size{};
-          for (int a = 0; a < 3; ++a) size[a] = std::max(map.box.hi[a] - map.box.lo[a], 1e-9);
-          set_vec3(g, "u_motion_size", size);
-          set_vec3(g, "u_motion_lattice",
-                   lod::Vec3{double(map.lattice[0]), double(map.lattice[1]), double(map.lattice[2])});
-          glBindTextureUnit(2, motion->from);
-          glBindTextureUnit(3, motion->to);
-        }
-        bound = motion;
-      }
-      if (motion) ++stats.nodes_moved;
-      glBindVertexArray(mesh->vertex_array.get());
-      glDrawElements(GL_TRIANGLES, mesh->index_count, GL_UNSIGNED_INT, nullptr);
-      ++stats.nodes_drawn;
-      stats.triangles_drawn += static_cast<std::size_t>(mesh->index_count) / 3;
-    }
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
-                    GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    GLuint generated = 0;
-    glGetNamedBufferSubData(counter_.get(), 0, sizeof(GLuint), &generated);
-    return static_cast<std::uint64_t>(generated);
-  };
+// Nearest node first; every fragment is also counted in a depth histogram. When the pool
+// overflows, it grows (up to the bound) and the pass runs again; at the bound, the pass
+// runs again with a depth limit below which everything fits, so the fragments dropped
+// are exactly the farthest (to the histogram's resolution).
+float VolumeRenderer::fill_fragment_lists(const FrameInputs& inputs, const FrameSetup& frame,
+                                          FrameStats& stats) {
   glBeginQuery(GL_TIME_ELAPSED, timers_[1].get());
   float depth_limit = std::numeric_limits<float>::max();
-  std::uint64_t generated = geometry_pass(depth_limit);
+  std::uint64_t generated = draw_geometry_pass(inputs, frame, depth_limit, stats);
   stats.fragments = generated;
   if (generated > capacity_) {
     ensure_pool(static_cast<std::size_t>(generated) + generated / 8);
@@ -390,14 +400,77 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
       depth_limit = static_cast<float>(depth_bin_edge(inputs.camera, bin));
     }
     ++stats.geometry_passes;
-    generated = geometry_pass(depth_limit);
+    generated = draw_geometry_pass(inputs, frame, depth_limit, stats);
   }
   glEndQuery(GL_TIME_ELAPSED);
   stats.depth_limit_km = depth_limit;
   stats.dropped_fragments = stats.fragments - std::min<std::uint64_t>(generated, capacity_);
+  return depth_limit;
+}
 
-  // 3. Sort each pixel's list (no colour output), 4. resolve into the target.
-  glBeginQuery(GL_TIME_ELAPSED, timers_[2].get());
+std::uint64_t VolumeRenderer::draw_geometry_pass(const FrameInputs& inputs,
+                                                 const FrameSetup& frame, float depth_limit,
+                                                 FrameStats& stats) {
+  const GLuint end_of_list = kEndOfList;
+  glClearTexImage(heads_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &end_of_list);
+  const GLuint zero = 0;
+  glNamedBufferSubData(counter_.get(), 0, sizeof(GLuint), &zero);
+  glClearNamedBufferData(histogram_.get(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                  GL_BUFFER_UPDATE_BARRIER_BIT);
+  glBindFramebuffer(GL_FRAMEBUFFER, opaque_framebuffer_.get());
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glDepthFunc(GL_LESS);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  const GLuint g = geometry_program_.get();
+  glUseProgram(g);
+  set_mat4(g, "u_view_projection", frame.view_projection);
+  set_mat4(g, "u_view", frame.view_matrix);
+  set_float(g, "u_vertical_exaggeration", inputs.vertical_exaggeration);
+  set_vec3(g, "u_eye", inputs.camera.eye);
+  set_vec3(g, "u_sun", lod::normalize(inputs.sun_direction));
+  set_float(g, "u_time", inputs.time_seconds);
+  set_float(g, "u_near", inputs.camera.near_km);
+  set_float(g, "u_far", inputs.camera.far_km);
+  set_float(g, "u_depth_limit", depth_limit);
+  glProgramUniform1i(g, location(g, "u_mirrored"), inputs.mirrored ? 1 : 0);
+  glProgramUniform1ui(g, location(g, "u_capacity"), static_cast<GLuint>(capacity_));
+  glProgramUniform1iv(g, location(g, "u_slot_ids"), 32, frame.slot_ids.data());
+  glProgramUniform3fv(g, location(g, "u_subvolume_colors"), 32, frame.palette.data());
+  glBindImageTexture(0, heads_.get(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+  glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, 0, counter_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, pool_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, histogram_.get());
+  stats.nodes_drawn = 0;
+  stats.nodes_moved = 0;
+  stats.triangles_drawn = 0;
+  const MotionBinding* bound = nullptr;
+  for (const auto& [distance, mesh] : frame.order) {
+    const MotionBinding* motion = nullptr;
+    if (!inputs.motions.empty()) {
+      const auto it = frame.motions.find(mesh->source->step);
+      if (it != frame.motions.end() && it->second.map != nullptr) motion = &it->second;
+    }
+    if (motion != bound || (!motion && stats.nodes_drawn == 0)) {
+      bind_motion(g, motion);
+      bound = motion;
+    }
+    if (motion) ++stats.nodes_moved;
+    glBindVertexArray(mesh->vertex_array.get());
+    glDrawElements(GL_TRIANGLES, mesh->index_count, GL_UNSIGNED_INT, nullptr);
+    ++stats.nodes_drawn;
+    stats.triangles_drawn += static_cast<std::size_t>(mesh->index_count) / 3;
+  }
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                  GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  GLuint generated = 0;
+  glGetNamedBufferSubData(counter_.get(), 0, sizeof(GLuint), &generated);
+  return static_cast<std::uint64_t>(generated);
+}
+
+void VolumeRenderer::sort_fragment_lists() {
   const GLuint zeros[4] = {0, 0, 0, 0};
   glNamedBufferSubData(resolve_stats_.get(), 0, sizeof(zeros), zeros);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -413,42 +486,29 @@ FrameStats VolumeRenderer::render(const FrameInputs& inputs, GLuint framebuffer,
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void VolumeRenderer::resolve_fragment_lists(const FrameInputs& inputs, const FrameSetup& frame,
+                                            GLuint framebuffer, float depth_limit) {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   const GLuint r = resolve_program_.get();
   glUseProgram(r);
-  set_mat4(r, "u_inverse_projection", inverse(projection));
-  set_mat4(r, "u_inverse_view", inverse(view));
+  set_mat4(r, "u_inverse_projection", inverse(frame.projection));
+  set_mat4(r, "u_inverse_view", inverse(frame.view_matrix));
   set_float(r, "u_near", inputs.camera.near_km);
   set_float(r, "u_far", inputs.camera.far_km);
   set_float(r, "u_vertical_exaggeration", inputs.vertical_exaggeration);
   set_float(r, "u_seam_relative", settings_.seam_relative);
   set_float(r, "u_depth_limit", depth_limit);
   set_float(r, "u_time", inputs.time_seconds);
-  glProgramUniform1iv(r, location(r, "u_slot_ids"), 32, ids.data());
-  glProgramUniform3fv(r, location(r, "u_subvolume_colors"), 32, palette.data());
+  glProgramUniform1iv(r, location(r, "u_slot_ids"), 32, frame.slot_ids.data());
+  glProgramUniform3fv(r, location(r, "u_subvolume_colors"), 32, frame.palette.data());
   glBindImageTexture(0, heads_.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   glBindImageTexture(1, listed_.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   glBindTextureUnit(0, opaque_color_.get());
   glBindTextureUnit(1, opaque_depth_.get());
   glBindVertexArray(empty_vertex_array_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  glEndQuery(GL_TIME_ELAPSED);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-
-  if (!inputs.outline_boxes.empty()) draw_outlines(inputs, view_projection);
-
-  GLuint resolved[4] = {0, 0, 0, 0};
-  glGetNamedBufferSubData(resolve_stats_.get(), 0, sizeof(resolved), resolved);
-  stats.fragment_capacity = capacity_;
-  stats.covered_pixels = resolved[0];
-  stats.truncated_pixels = resolved[1];
-  stats.max_fragments_per_pixel = resolved[2];
-  stats.opaque_ms = elapsed_ms(timers_[0]);
-  stats.geometry_ms = elapsed_ms(timers_[1]);
-  stats.resolve_ms = elapsed_ms(timers_[2]);
-  glBindVertexArray(0);
-  glUseProgram(0);
-  return stats;
 }
 
 void VolumeRenderer::draw_outlines(const FrameInputs& inputs, const lod::Mat4& view_projection) {

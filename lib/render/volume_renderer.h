@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The pseudo-volumetric renderer of strielad-view (the paper's A-buffer, issue 5):
+// The pseudo-volumetric renderer of strielad-view (the paper's A-buffer):
 // 1. opaque pass: the background, terrain and flight tracks into a colour and a depth
 //    texture;
 // 2. geometry pass: every node's closed meshes, nearest node first, depth-tested
@@ -138,6 +138,22 @@ class VolumeRenderer {
   void ensure_targets(int width, int height);
   void ensure_pool(std::size_t fragments);
   void draw_outlines(const FrameInputs& inputs, const lod::Mat4& view_projection);
+
+  // The passes of render(), in order (this file's header comment); FrameSetup holds
+  // what they share for one frame (matrices, slot ids, palette, meshes in draw order).
+  struct FrameSetup;
+  void draw_opaque_pass(const FrameInputs& inputs, const FrameSetup& frame, int height,
+                        FrameStats& stats);
+  // Every geometry pass the frame needs (a second one when the fragment pool overflowed);
+  // returns the depth limit beyond which fragments were dropped (max: none).
+  float fill_fragment_lists(const FrameInputs& inputs, const FrameSetup& frame,
+                            FrameStats& stats);
+  // One geometry pass; returns the number of fragments it generated.
+  std::uint64_t draw_geometry_pass(const FrameInputs& inputs, const FrameSetup& frame,
+                                   float depth_limit, FrameStats& stats);
+  void sort_fragment_lists();
+  void resolve_fragment_lists(const FrameInputs& inputs, const FrameSetup& frame,
+                              GLuint framebuffer, float depth_limit);
 
   RenderSettings settings_;
   std::string user_source_;

@@ -211,9 +211,10 @@ void main() {
 )";
 }
 
-std::string resolve_fragment_source(const std::string& prelude) {
-  return std::string(kVersion) + fmt::format("#define K {}\n", kMaxLayersPerPixel) +
-         kFragmentRecord + R"(
+namespace {
+
+// The resolve pass's inputs: the sorted lists, the opaque scene and the frame's uniforms.
+constexpr const char* kResolveBindings = R"(
 layout(binding = 0, r32ui) uniform readonly uimage2D u_heads;
 layout(binding = 1, r32ui) uniform readonly uimage2D u_listed;
 layout(std430, binding = 1) readonly buffer FragmentPool { Fragment fragments[]; };
@@ -228,7 +229,11 @@ uniform float u_seam_relative;
 uniform float u_depth_limit;
 uniform float u_time;
 out vec4 o_color;
-)" + prelude + R"(
+)";
+
+// The resolve shader's main() begins: the background where the pixel has no list, else
+// the scale from eye depth to true distance along the pixel's ray.
+constexpr const char* kResolveRayScale = R"(
 float linear_depth(float d) {
   float z = d * 2.0 - 1.0;
   return 2.0 * u_near * u_far / (u_far + u_near - z * (u_far - u_near));
@@ -251,7 +256,10 @@ void main() {
   vec3 ray_world = mat3(u_inverse_view) * ray_eye;
   float to_true_km = length(vec3(ray_world.xy, ray_world.z / u_vertical_exaggeration)) /
                      max(-ray_eye.z, 1e-6);
+)";
 
+// main() goes on: the walk along the sorted list that turns fragments into segments.
+constexpr const char* kResolveSegmentWalk = R"(
   // One walk front to back (the sort pass relinked the list in depth order). A
   // segment of a sub-volume slot opens at an entry and gets the next place in the
   // segment list, so the list is in order of where segments begin; it closes at the
@@ -324,7 +332,11 @@ void main() {
       near_end[s] = d;
     }  // else: a second exit at a node face
   }
-  // What is still open ends behind the last kept fragment (list truncated) or at the
+)";
+
+// main() ends: the open segments closed, every segment's opacity from the user's
+// alpha(), composited front to back over the background.
+constexpr const char* kResolveCompositing = R"(  // What is still open ends behind the last kept fragment (list truncated) or at the
   // opaque scene (its exit is hidden behind it, or beyond the far plane).
   float end = listed > uint(K) ? last : linear_depth(texelFetch(u_opaque_depth, px, 0).r);
   end = min(end, u_depth_limit);
@@ -354,6 +366,13 @@ void main() {
   o_color = vec4(rgb + (1.0 - a) * background.rgb, 1.0);
 }
 )";
+
+}  // namespace
+
+std::string resolve_fragment_source(const std::string& prelude) {
+  return std::string(kVersion) + fmt::format("#define K {}\n", kMaxLayersPerPixel) +
+         kFragmentRecord + kResolveBindings + prelude + kResolveRayScale + kResolveSegmentWalk +
+         kResolveCompositing;
 }
 
 std::string background_fragment_source() {

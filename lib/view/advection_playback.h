@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The clock of smooth playback with wind advection (issue 6, "Viewer"): the current
+// The clock of smooth playback with wind advection: the current
 // step's meshes are drawn `seconds` after their step, moved by the step's displacement
 // map; playing advances the seconds at the chosen steps per second of model time; at
 // the step's end the meshes wait there until the current step has fully arrived, and

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // How far the air moves between two output steps, as a map the renderer can apply to
-// every mesh vertex for free (issue 6, "Viewer: advect the current meshes smoothly").
+// every mesh vertex for free, so that the viewer advects the current meshes smoothly.
 //
 // A regular lattice spans the domain's world box (km, exaggeration 1). From each lattice
 // point a trajectory runs through the wind of a WindStep (lib/advect, RK4 60 s by

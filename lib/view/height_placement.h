@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// How the viewer places its meshes' heights (issue 27, item 4). The world frame's
+// How the viewer places its meshes' heights. The world frame's
 // vertical map (lod/world_frame.h) places a height axis as it is and a pressure axis by
 // the ICAO standard atmosphere; a pressure-level store that also holds geopotential or
 // geopotential height (zg, gh, z, phi ...: choose_vertical_placement in

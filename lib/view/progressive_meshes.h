@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Which mesh the viewer shows for each node of its level-of-detail cut while results
-// stream in (issue 5, "progressive updates"):
+// stream in (progressive updates):
 // - a node that enters the cut shows nothing until its result arrives: no stale mesh,
 //   not even one it had before it left the cut (meshes of nodes that leave are dropped);
 // - on a change of sub-volumes or time step (begin_generation) every node keeps showing

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The sun the viewer lights with (issue 8, "Sun"; issue 27 for wide domains): the true
+// The sun the viewer lights with, also for domains wide in longitude: the true
 // direction towards the sun (geo/solar_position.h) at the simulation time, in the
 // viewer's world frame (x east, y north, z up: the local east-north-up frame, which the
 // world frame's map takes as the same everywhere). One direction lights the whole

@@ -8,6 +8,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <utility>
 
 #include "core/error.h"
 #include "lod/frustum.h"
@@ -128,34 +130,19 @@ lod::WorldBox exaggerated(lod::WorldBox box, double e) {
   return box;
 }
 
-}  // namespace
+// The DEM's samples inside the store's axis box (each sample's true lon/lat through the
+// frame's inverse map), found on a lattice of at most 512 x 512 samples: their column and
+// row range, and the lattice step (the caller widens the range by one step).
+struct DemOverlap {
+  std::size_t c0 = 0, c1 = 0, r0 = 0, r1 = 0;
+  std::size_t step = 1;
+};
 
-TerrainTiles::TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod::WorldFrame& frame,
-                           TerrainOptions options, std::shared_ptr<const geo::DrapeImage> drape)
-    : dem_(std::move(dem)), drape_(std::move(drape)), frame_(frame), options_(options) {
-  if (!frame.on_earth()) {
-    throw make_error(ErrorCode::kUnsupported, "terrain {}: cannot be placed: {}",
-                     dem_->describe(), frame.no_earth_reason());
-  }
-  if (!(options_.error_pixels > 0)) {
-    throw make_error(ErrorCode::kInvalidArgument, "terrain error {} pixels: must be > 0",
-                     options_.error_pixels);
-  }
-  const auto& d = frame.domain();
+// \error kInvalidInput when no lattice sample falls inside the store's axis box.
+DemOverlap dem_overlap(const geo::DemSource& dem, const lod::WorldFrame& frame,
+                       const lod::GeographicBounds& bounds) {
   const auto axes = frame.axis_ranges();
-  mapped_ = frame.horizontal() == lod::HorizontalMap::kMapped;
-  // Clip coordinates: world x/y on a geographic frame (the domain is its world box), the
-  // store's own axis x/y on a mapped one (the domain is their box, a curved shape in the
-  // world).
-  clip_ = d;
-  if (mapped_) clip_ = {{axes[0], axes[2], 0}, {axes[1], axes[3], 0}};
-  const auto bounds = frame.geographic_bounds();
-  const double lon_min = bounds.lon_lo, lon_max = bounds.lon_hi;
-  const double lat_min = bounds.lat_lo, lat_max = bounds.lat_hi;
-  // The DEM's samples inside the store's axis box (each sample's true lon/lat through the
-  // frame's inverse map), found on a lattice of at most 512 x 512 samples (then widened
-  // by one lattice step).
-  const std::size_t w = dem_->width(), h = dem_->height();
+  const std::size_t w = dem.width(), h = dem.height();
   const std::size_t step = std::max<std::size_t>(1, (std::max(w, h) + 511) / 512);
   std::vector<double> cs, rs;
   for (std::size_t r = 0; r < h; r += step) {
@@ -165,7 +152,7 @@ TerrainTiles::TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod:
     }
   }
   std::vector<geo::LonLat> ll(cs.size());
-  dem_->georeference(cs, rs, ll);
+  dem.georeference(cs, rs, ll);
   std::size_t c0 = w, c1 = 0, r0 = h, r1 = 0;
   double dem_lon_min = INFINITY, dem_lon_max = -INFINITY, dem_lat_min = INFINITY, dem_lat_max = -INFINITY;
   const double o = frame.lon0();
@@ -188,36 +175,160 @@ TerrainTiles::TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod:
     throw make_error(ErrorCode::kInvalidInput,
                      "{}: the DEM (lon {:.2f} to {:.2f}, lat {:.2f} to {:.2f}) does not overlap "
                      "the store (lon {:.2f} to {:.2f}, lat {:.2f} to {:.2f})",
-                     dem_->describe(), dem_lon_min, dem_lon_max, dem_lat_min, dem_lat_max, lon_min,
-                     lon_max, lat_min, lat_max);
+                     dem.describe(), dem_lon_min, dem_lon_max, dem_lat_min, dem_lat_max,
+                     bounds.lon_lo, bounds.lon_hi, bounds.lat_lo, bounds.lat_hi);
   }
-  col0_ = c0 >= step ? c0 - step : 0;
-  row0_ = r0 >= step ? r0 - step : 0;
-  col1_ = std::min(w - 1, c1 + step);
-  row1_ = std::min(h - 1, r1 + step);
-  if (const auto global = global_columns(*dem_); global.per_turn > 0) {
-    // Columns that go round: the quadtree's columns count on past the DEM's last one
-    // (column c is the DEM's c mod per_turn), so that the extent runs continuously from
-    // the store's western edge to its eastern one, wherever the DEM's own columns start,
-    // and never comes within 1.5 columns of the turn around the store's centre, where
-    // placed longitudes jump by 360 degrees.
-    const double a = std::fabs(global.step);
-    const double margin = double(step) * a;
-    const double west = std::max(lon_min - margin, o - 180 + 1.5 * a);
-    const double east = std::min(lon_max + margin, o + 180 - 1.5 * a);
-    const double lon0 = near_longitude(global.lon0, o);
-    const double ca = (west - lon0) / global.step, cb = (east - lon0) / global.step;
-    auto first = static_cast<long long>(std::floor(std::min(ca, cb)));
-    auto last = static_cast<long long>(std::ceil(std::max(ca, cb)));
-    const auto turn = static_cast<long long>(global.per_turn);
-    if (first < 0) {
-      const long long shift = (-first + turn - 1) / turn * turn;
-      first += shift;
-      last += shift;
+  return {c0, c1, r0, r1, step};
+}
+
+// The column extent of a DEM whose columns go round: the quadtree's columns count on
+// past the DEM's last one (column c is the DEM's c mod per_turn), so that the extent runs
+// continuously from the store's western edge to its eastern one (widened by `margin`
+// degrees), wherever the DEM's own columns start, and never comes within 1.5 columns of
+// the turn around the frame's central longitude `o`, where placed longitudes jump by 360
+// degrees. Returns the first and last column.
+std::pair<std::size_t, std::size_t> round_the_globe_columns(const GlobalColumns& global,
+                                                            const lod::GeographicBounds& bounds,
+                                                            double o, double margin) {
+  const double a = std::fabs(global.step);
+  const double west = std::max(bounds.lon_lo - margin, o - 180 + 1.5 * a);
+  const double east = std::min(bounds.lon_hi + margin, o + 180 - 1.5 * a);
+  const double lon0 = near_longitude(global.lon0, o);
+  const double ca = (west - lon0) / global.step, cb = (east - lon0) / global.step;
+  auto first = static_cast<long long>(std::floor(std::min(ca, cb)));
+  auto last = static_cast<long long>(std::ceil(std::max(ca, cb)));
+  const auto turn = static_cast<long long>(global.per_turn);
+  if (first < 0) {
+    const long long shift = (-first + turn - 1) / turn * turn;
+    first += shift;
+    last += shift;
+  }
+  return {static_cast<std::size_t>(first), static_cast<std::size_t>(last)};
+}
+
+// A tile's sample indices (columns or rows) with one more `stride` before the first and
+// after the last, where [first, last] holds them (else the end sample is repeated).
+std::vector<std::size_t> with_ring(const std::vector<std::size_t>& samples, std::size_t stride,
+                                   std::size_t first, std::size_t last) {
+  std::vector<std::size_t> out{samples.front() >= first + stride ? samples.front() - stride
+                                                                 : samples.front()};
+  out.insert(out.end(), samples.begin(), samples.end());
+  out.push_back(std::min(samples.back() + stride, last));
+  return out;
+}
+
+// The terrain's gradient (dz/dx, dz/dy) at lattice point i by central differences in the
+// world frame: the plane through the neighbours in both directions (one-sided where the
+// ring around the tile was clamped). `wc`: the lattice's row length.
+std::array<double, 2> surface_gradient(const std::vector<lod::Vec3>& p, std::size_t i,
+                                       std::size_t wc) {
+  const auto& pl = p[i - 1];
+  const auto& pr = p[i + 1];
+  const auto& pd = p[i - wc];
+  const auto& pu = p[i + wc];
+  const lod::Vec3 a = lod::sub(pr, pl), b = lod::sub(pu, pd);
+  const lod::Vec3 n = lod::cross(a, b);
+  double gx = 0, gy = 0;
+  if (std::fabs(n[2]) > 1e-12) {
+    gx = -n[0] / n[2];
+    gy = -n[1] / n[2];
+  }
+  return {gx, gy};
+}
+
+// Two triangles per cell of the tile's nc x nr vertices.
+void add_surface_triangles(TerrainTileMesh& mesh, std::size_t nc, std::size_t nr) {
+  const auto index = [nc](std::size_t c, std::size_t r) { return std::uint32_t(r * nc + c); };
+  for (std::size_t r = 0; r + 1 < nr; ++r) {
+    for (std::size_t c = 0; c + 1 < nc; ++c) {
+      const auto a = index(c, r), b = index(c + 1, r), cc = index(c + 1, r + 1), d = index(c, r + 1);
+      mesh.indices.insert(mesh.indices.end(), {a, b, cc, a, cc, d});
     }
+  }
+}
+
+// A skirt under one edge of the tile (its vertices in order): each edge vertex copied
+// down to the lowest a neighbouring tile's edge can be there, less 50 m: a coarser
+// neighbour's edge interpolates every 2nd, 4th ... 64th vertex of this edge (the tiles'
+// sample lattices nest), so the crack against it ends at the lowest of those
+// interpolations; a finer neighbour's edge runs between this edge's vertices, taken as no
+// lower than the lowest of the vertex and its two neighbours. Hanging them no deeper
+// keeps them out of sight under the terrain where it ends (a store's edge seen from the
+// side).
+void add_skirt(TerrainTileMesh& mesh, const std::vector<std::uint32_t>& edge) {
+  const auto first = std::uint32_t(mesh.vertices.size() / kTerrainVertexFloats);
+  const std::size_t n = edge.size();
+  const auto height = [&](std::size_t i) {
+    return mesh.vertices[std::size_t(edge[i]) * kTerrainVertexFloats + 2];
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    float lowest = std::min({height(i), height(i > 0 ? i - 1 : i), height(i + 1 < n ? i + 1 : i)});
+    for (std::size_t step = 2; step < 2 * n; step *= 2) {
+      const std::size_t a = std::min(i / step * step, n - 1), b = std::min(a + step, n - 1);
+      if (a == b) continue;
+      const float t = float(i - a) / float(b - a);
+      lowest = std::min(lowest, height(a) + t * (height(b) - height(a)));
+    }
+    const auto* src = &mesh.vertices[std::size_t(edge[i]) * kTerrainVertexFloats];
+    std::vector<float> copy(src, src + kTerrainVertexFloats);
+    copy[2] = lowest - 0.05f;
+    mesh.vertices.insert(mesh.vertices.end(), copy.begin(), copy.end());
+  }
+  for (std::uint32_t k = 0; k + 1 < n; ++k) {
+    mesh.indices.insert(mesh.indices.end(),
+                        {edge[k], edge[k + 1], first + k + 1, edge[k], first + k + 1, first + k});
+  }
+}
+
+// The vertex indices along each edge of the tile's nc x nr vertices: bottom, top, left,
+// right.
+std::array<std::vector<std::uint32_t>, 4> tile_edges(std::size_t nc, std::size_t nr) {
+  const auto index = [nc](std::size_t c, std::size_t r) { return std::uint32_t(r * nc + c); };
+  std::vector<std::uint32_t> bottom, top, left, right;
+  for (std::size_t c = 0; c < nc; ++c) {
+    bottom.push_back(index(c, 0));
+    top.push_back(index(c, nr - 1));
+  }
+  for (std::size_t r = 0; r < nr; ++r) {
+    left.push_back(index(0, r));
+    right.push_back(index(nc - 1, r));
+  }
+  return {bottom, top, left, right};
+}
+
+}  // namespace
+
+TerrainTiles::TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod::WorldFrame& frame,
+                           TerrainOptions options, std::shared_ptr<const geo::DrapeImage> drape)
+    : dem_(std::move(dem)), drape_(std::move(drape)), frame_(frame), options_(options) {
+  if (!frame.on_earth()) {
+    throw make_error(ErrorCode::kUnsupported, "terrain {}: cannot be placed: {}",
+                     dem_->describe(), frame.no_earth_reason());
+  }
+  if (!(options_.error_pixels > 0)) {
+    throw make_error(ErrorCode::kInvalidArgument, "terrain error {} pixels: must be > 0",
+                     options_.error_pixels);
+  }
+  const auto& d = frame.domain();
+  const auto axes = frame.axis_ranges();
+  mapped_ = frame.horizontal() == lod::HorizontalMap::kMapped;
+  // Clip coordinates: world x/y on a geographic frame (the domain is its world box), the
+  // store's own axis x/y on a mapped one (the domain is their box, a curved shape in the
+  // world).
+  clip_ = d;
+  if (mapped_) clip_ = {{axes[0], axes[2], 0}, {axes[1], axes[3], 0}};
+  const auto bounds = frame.geographic_bounds();
+  const std::size_t w = dem_->width(), h = dem_->height();
+  const auto overlap = dem_overlap(*dem_, frame, bounds);
+  const std::size_t step = overlap.step;
+  col0_ = overlap.c0 >= step ? overlap.c0 - step : 0;
+  row0_ = overlap.r0 >= step ? overlap.r0 - step : 0;
+  col1_ = std::min(w - 1, overlap.c1 + step);
+  row1_ = std::min(h - 1, overlap.r1 + step);
+  if (const auto global = global_columns(*dem_); global.per_turn > 0) {
+    const double margin = double(step) * std::fabs(global.step);
     wrap_columns_ = global.per_turn;
-    col0_ = static_cast<std::size_t>(first);
-    col1_ = static_cast<std::size_t>(last);
+    std::tie(col0_, col1_) = round_the_globe_columns(global, bounds, frame.lon0(), margin);
   }
   const std::size_t cells = std::max(col1_ - col0_, row1_ - row0_);
   while ((std::size_t{kTerrainTileCells} << finest_level_) < cells) ++finest_level_;
@@ -301,13 +412,8 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
   // Columns that go round stay within the extent (beyond it longitudes may jump).
   const std::size_t first_col = wrap_columns_ ? col0_ : 0;
   const std::size_t last_col = wrap_columns_ ? col1_ : dem_->width() - 1;
-  std::vector<std::size_t> cols{s.cols.front() >= first_col + st ? s.cols.front() - st
-                                                                  : s.cols.front()};
-  cols.insert(cols.end(), s.cols.begin(), s.cols.end());
-  cols.push_back(std::min(s.cols.back() + st, last_col));
-  std::vector<std::size_t> rows{s.rows.front() >= st ? s.rows.front() - st : s.rows.front()};
-  rows.insert(rows.end(), s.rows.begin(), s.rows.end());
-  rows.push_back(std::min(s.rows.back() + st, dem_->height() - 1));
+  const auto cols = with_ring(s.cols, st, first_col, last_col);
+  const auto rows = with_ring(s.rows, st, 0, dem_->height() - 1);
   const std::size_t wc = cols.size(), wr = rows.size();
   const auto heights = read_grid(*dem_, dem_columns(cols), rows);
   std::vector<double> cd(wc * wr), rd(wc * wr);
@@ -341,19 +447,7 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
   for (std::size_t r = 0; r < nr; ++r) {
     for (std::size_t c = 0; c < nc; ++c) {
       const std::size_t i = (r + 1) * wc + (c + 1);
-      // Gradient by central differences in the world frame (the plane through the
-      // neighbours in both directions; one-sided where the ring was clamped).
-      const auto& pl = p[i - 1];
-      const auto& pr = p[i + 1];
-      const auto& pd = p[i - wc];
-      const auto& pu = p[i + wc];
-      const lod::Vec3 a = lod::sub(pr, pl), b = lod::sub(pu, pd);
-      const lod::Vec3 n = lod::cross(a, b);
-      double gx = 0, gy = 0;
-      if (std::fabs(n[2]) > 1e-12) {
-        gx = -n[0] / n[2];
-        gy = -n[1] / n[2];
-      }
+      const auto [gx, gy] = surface_gradient(p, i, wc);
       const bool water = is_water(heights[i]);
       const float x = float(p[i][0]), y = float(p[i][1]), z = float(p[i][2]);
       const auto clip = clip_coordinates(ll[i], p[i]);
@@ -367,61 +461,16 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
     }
   }
   mesh->box = box;
-  const auto index = [nc](std::size_t c, std::size_t r) { return std::uint32_t(r * nc + c); };
-  for (std::size_t r = 0; r + 1 < nr; ++r) {
-    for (std::size_t c = 0; c + 1 < nc; ++c) {
-      const auto a = index(c, r), b = index(c + 1, r), cc = index(c + 1, r + 1), d = index(c, r + 1);
-      mesh->indices.insert(mesh->indices.end(), {a, b, cc, a, cc, d});
-    }
-  }
+  add_surface_triangles(*mesh, nc, nr);
   mesh->surface_triangles = mesh->indices.size() / 3;
-  // Skirts: each edge vertex copied down to the lowest a neighbouring tile's edge can
-  // be there, less 50 m: a coarser neighbour's edge interpolates every 2nd, 4th ... 64th
-  // vertex of this edge (the tiles' sample lattices nest), so the crack against it ends
-  // at the lowest of those interpolations; a finer neighbour's edge runs between this
-  // edge's vertices, taken as no lower than the lowest of the vertex and its two
-  // neighbours. Hanging them no deeper keeps them out of sight under the terrain where it
-  // ends (a store's edge seen from the side).
-  const auto skirt = [&](std::vector<std::uint32_t> edge) {
-    const auto first = std::uint32_t(mesh->vertices.size() / kTerrainVertexFloats);
-    const std::size_t n = edge.size();
-    const auto height = [&](std::size_t i) {
-      return mesh->vertices[std::size_t(edge[i]) * kTerrainVertexFloats + 2];
-    };
-    for (std::size_t i = 0; i < n; ++i) {
-      float lowest = std::min({height(i), height(i > 0 ? i - 1 : i), height(i + 1 < n ? i + 1 : i)});
-      for (std::size_t step = 2; step < 2 * n; step *= 2) {
-        const std::size_t a = std::min(i / step * step, n - 1), b = std::min(a + step, n - 1);
-        if (a == b) continue;
-        const float t = float(i - a) / float(b - a);
-        lowest = std::min(lowest, height(a) + t * (height(b) - height(a)));
-      }
-      const auto* src = &mesh->vertices[std::size_t(edge[i]) * kTerrainVertexFloats];
-      std::vector<float> copy(src, src + kTerrainVertexFloats);
-      copy[2] = lowest - 0.05f;
-      mesh->vertices.insert(mesh->vertices.end(), copy.begin(), copy.end());
-    }
-    for (std::uint32_t k = 0; k + 1 < n; ++k) {
-      mesh->indices.insert(mesh->indices.end(),
-                           {edge[k], edge[k + 1], first + k + 1, edge[k], first + k + 1, first + k});
-    }
-  };
-  std::vector<std::uint32_t> bottom, top, left, right;
-  for (std::size_t c = 0; c < nc; ++c) {
-    bottom.push_back(index(c, 0));
-    top.push_back(index(c, nr - 1));
-  }
-  for (std::size_t r = 0; r < nr; ++r) {
-    left.push_back(index(0, r));
-    right.push_back(index(nc - 1, r));
-  }
+  const auto [bottom, top, left, right] = tile_edges(nc, nr);
   // Only edges inside the extent can meet a tile of another level; the extent's own
   // edges get no skirt (a curtain there would show where the DEM ends at the store's
   // edge, as at the poles of a global DEM).
-  if (s.rows.front() != row0_) skirt(bottom);
-  if (s.rows.back() != row1_) skirt(top);
-  if (s.cols.front() != col0_) skirt(left);
-  if (s.cols.back() != col1_) skirt(right);
+  if (s.rows.front() != row0_) add_skirt(*mesh, bottom);
+  if (s.rows.back() != row1_) add_skirt(*mesh, top);
+  if (s.cols.front() != col0_) add_skirt(*mesh, left);
+  if (s.cols.back() != col1_) add_skirt(*mesh, right);
   mesh->load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return mesh;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The terrain's level-of-detail height field (issue 8, "Terrain"): a quadtree of tiles
+// The terrain's level-of-detail height field: a quadtree of tiles
 // over the part of a DEM (scenery/dem_source.h) that overlaps the store's domain (the DEM
 // samples whose true longitude/latitude falls inside the store's axis box, through the
 // grid mapping on a mapped grid), each tile kTerrainTileCells x kTerrainTileCells cells

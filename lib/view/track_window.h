@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// What the viewer draws of flight tracks at a moment (issue 8, "Trajectories"): for
+// What the viewer draws of flight tracks at a moment: for
 // each track, the part flown during the last `window` seconds before `now` as line
 // segments, cut at both ends by linear interpolation between reports, and the
 // aircraft's position at `now` when the track spans it. A track that ended before the

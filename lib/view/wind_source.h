@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The wind a viewer advects its meshes with (issue 6, "Viewer"): the store's wind
+// The wind a viewer advects its meshes with: the store's wind
 // components at two consecutive time steps, read from one octree level and assembled
 // into an advect::WindField in the units lib/advect integrates in.
 //
