@@ -140,8 +140,11 @@ std::pair<std::string, format::CodecSpec> parse_codec_for(std::string_view text,
   return {std::move(variable), std::move(c)};
 }
 
-format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOptions& options,
-                            std::vector<PredictorTrial>* trials) {
+namespace {
+
+// The codec options checked before anything is read: valid codecs, and --codec-for naming
+// converted variables only.
+void check_codec_options(const ingest::InputCatalog& catalog, const ConvertOptions& options) {
   validate_convert_codec(options.codec, "");
   for (const auto& [name, codec] : options.codec_for) {
     validate_convert_codec(codec, fmt::format("--codec-for {}: ", name));
@@ -158,6 +161,11 @@ format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOp
                        name, names);
     }
   }
+}
+
+// The plan's grid, time, variables and sources, taken from the scanned inputs.
+format::Manifest manifest_from_catalog(const ingest::InputCatalog& catalog,
+                                       const ConvertOptions& options) {
   format::Manifest m;
   m.tool_version = kToolVersion;
   m.x = catalog.x;
@@ -176,17 +184,12 @@ format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOp
   for (const auto& f : catalog.files) {
     m.sources.push_back(format::SourceRecord{f.path, f.size, f.header_checksum});
   }
-  const OctreeLayout layout(m.dims(), m.brick);  // validates dims and brick
-  // Sizes before any data is read (the predictor trial below reads bricks).
-  for (const auto& v : catalog.variables) {
-    check_brick_fits_chunk(layout, v.store_type, v.name);
-    check_conversion_memory(layout, v.store_type, source_type_size(v.source_type),
-                            options.threads, options.memory_limit, v.name);
-  }
+  return m;
+}
 
-  // Each variable's codec, "auto" resolved from sample bricks of step 0. One variable at
-  // a time: measured, running them in parallel made it 4x slower (HDF5 under the netCDF
-  // lock, the same file opened several times).
+// Each variable's codec as the options ask for it (--codec-for, else --codec; --fpzip).
+std::vector<format::CodecSpec> requested_codecs(const ingest::InputCatalog& catalog,
+                                                const ConvertOptions& options) {
   std::vector<format::CodecSpec> codecs;
   for (std::size_t v = 0; v < catalog.variables.size(); ++v) {
     const auto own = options.codec_for.find(catalog.variables[v].name);
@@ -205,6 +208,15 @@ format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOp
                        "--fpzip names variable '{}', which is not converted", name);
     }
   }
+  return codecs;
+}
+
+// Predictor "auto" resolved from sample bricks of step 0. One variable at a time:
+// measured, running them in parallel made it 4x slower (HDF5 under the netCDF lock, the
+// same file opened several times).
+void resolve_auto_predictors(const ingest::InputCatalog& catalog, const ConvertOptions& options,
+                             const OctreeLayout& layout, std::vector<format::CodecSpec>& codecs,
+                             std::vector<PredictorTrial>* trials) {
   std::vector<std::optional<PredictorTrial>> auto_trials(codecs.size());
   const auto started = std::chrono::steady_clock::now();
   for (std::size_t v = 0; v < codecs.size(); ++v) {
@@ -227,16 +239,39 @@ format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOp
                  std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
                      .count());
   }
-  // Store-wide codec: the predictor most variables with the common Blosc settings use.
-  m.codec = options.codec;
-  if (m.codec.predictor == kPredictorAuto) {
+}
+
+// Store-wide codec: the predictor most variables with the common Blosc settings use.
+format::CodecSpec store_wide_codec(const format::CodecSpec& requested,
+                                   const std::vector<format::CodecSpec>& codecs) {
+  format::CodecSpec codec = requested;
+  if (codec.predictor == kPredictorAuto) {
     std::size_t lorenzo3 = 0, none = 0;
     for (const auto& c : codecs) {
-      if (!same_blosc(c, m.codec)) continue;
+      if (!same_blosc(c, codec)) continue;
       (c.predictor == format::kPredictorLorenzo3 ? lorenzo3 : none) += 1;
     }
-    m.codec.predictor = lorenzo3 > none ? format::kPredictorLorenzo3 : format::kPredictorNone;
+    codec.predictor = lorenzo3 > none ? format::kPredictorLorenzo3 : format::kPredictorNone;
   }
+  return codec;
+}
+
+}  // namespace
+
+format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOptions& options,
+                            std::vector<PredictorTrial>* trials) {
+  check_codec_options(catalog, options);
+  format::Manifest m = manifest_from_catalog(catalog, options);
+  const OctreeLayout layout(m.dims(), m.brick);  // validates dims and brick
+  // Sizes before any data is read (the predictor trial reads bricks).
+  for (const auto& v : catalog.variables) {
+    check_brick_fits_chunk(layout, v.store_type, v.name);
+    check_conversion_memory(layout, v.store_type, source_type_size(v.source_type),
+                            options.threads, options.memory_limit, v.name);
+  }
+  std::vector<format::CodecSpec> codecs = requested_codecs(catalog, options);
+  resolve_auto_predictors(catalog, options, layout, codecs, trials);
+  m.codec = store_wide_codec(options.codec, codecs);
   for (std::size_t v = 0; v < codecs.size(); ++v) {
     if (!(codecs[v] == m.codec)) m.variables[v].codec = codecs[v];
   }
@@ -245,28 +280,11 @@ format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOp
   return m;
 }
 
-ConvertResult convert(const ConvertOptions& options) {
-  const auto started = std::chrono::steady_clock::now();
-  std::optional<tbb::global_control> limit;
-  if (options.threads > 0) {
-    limit.emplace(tbb::global_control::max_allowed_parallelism,
-                  static_cast<std::size_t>(options.threads));
-  }
-  const ingest::InputCatalog catalog = ingest::scan_inputs(options.inputs, options.scan);
-  std::vector<PredictorTrial> trials;
-  format::Manifest plan = plan_store(catalog, options, &trials);
-  const OctreeLayout layout(plan.dims(), plan.brick);
-  const auto steps = static_cast<std::uint32_t>(plan.time.values.size());
-  const std::uint32_t first = options.only_first.value_or(0);
-  const std::uint32_t last = options.only_last.value_or(steps - 1);
-  if (first > last || last >= steps) {
-    throw make_error(ErrorCode::kInvalidArgument, "steps {}:{} are outside the store's 0:{}", first,
-                     last, steps - 1);
-  }
+namespace {
 
-  std::filesystem::create_directories(options.store / "steps");
-  const auto manifest_path = options.store / "MANIFEST";
-  ConvertResult result;
+// Each variable's codec for the result, with the trial that chose its predictor.
+void report_codecs(const format::Manifest& plan, const std::vector<PredictorTrial>& trials,
+                   ConvertResult& result) {
   for (std::size_t v = 0; v < plan.variables.size(); ++v) {
     const format::CodecSpec& c = plan.codec_of(v);
     json entry{{"name", c.name}, {"level", c.level}, {"shuffle", c.shuffle},
@@ -276,31 +294,35 @@ ConvertResult convert(const ConvertOptions& options) {
     }
     result.codecs[plan.variables[v].name] = std::move(entry);
   }
-  if (std::filesystem::exists(manifest_path)) {
-    const format::Manifest existing =
-        format::decode_manifest(read_file_bytes(manifest_path), manifest_path.string());
-    if (existing.store_id != plan.store_id) {
-      throw make_error(ErrorCode::kAlreadyExists,
-                       "{}: the store was started from different inputs or options (its {}); "
-                       "convert into a new directory or delete it",
-                       options.store.string(), plan_difference(existing, plan));
-    }
-    if (existing.complete) {
-      spdlog::info("{} is already complete; nothing to do", options.store.string());
-      result.steps_skipped = last - first + 1;
-      result.finalized = true;
-      result.summary = existing.summary;
-      return result;
-    }
-  } else {
-    write_file_atomically(manifest_path, format::encode_manifest(plan));
-  }
-  remove_stale_temporaries(options.store, first, last);
+}
 
-  const auto store = Store::open(options.store, StoreOpenOptions{.allow_incomplete = true});
+// The store's MANIFEST written from the plan, or the one there checked to hold the same
+// plan: returned when that store is already complete.
+std::optional<format::Manifest> start_or_match_manifest(const std::filesystem::path& store_dir,
+                                                        const format::Manifest& plan) {
+  const auto manifest_path = store_dir / "MANIFEST";
+  if (!std::filesystem::exists(manifest_path)) {
+    write_file_atomically(manifest_path, format::encode_manifest(plan));
+    return std::nullopt;
+  }
+  format::Manifest existing =
+      format::decode_manifest(read_file_bytes(manifest_path), manifest_path.string());
+  if (existing.store_id != plan.store_id) {
+    throw make_error(ErrorCode::kAlreadyExists,
+                     "{}: the store was started from different inputs or options (its {}); "
+                     "convert into a new directory or delete it",
+                     store_dir.string(), plan_difference(existing, plan));
+  }
+  if (existing.complete) return existing;
+  return std::nullopt;
+}
+
+// Steps first..last that are not yet complete in the store; the others counted as skipped.
+std::vector<std::uint32_t> steps_to_convert(const Store& store, std::uint32_t first,
+                                            std::uint32_t last, ConvertResult& result) {
   std::vector<std::uint32_t> todo;
   for (std::uint32_t s = first; s <= last; ++s) {
-    if (step_is_complete(*store, s)) {
+    if (step_is_complete(store, s)) {
       ++result.steps_skipped;
     } else {
       todo.push_back(s);
@@ -310,6 +332,12 @@ ConvertResult convert(const ConvertOptions& options) {
     spdlog::info("resuming: {} of {} steps already converted", result.steps_skipped,
                  last - first + 1);
   }
+  return todo;
+}
+
+void convert_steps(const ingest::InputCatalog& catalog, const format::Manifest& plan,
+                   const OctreeLayout& layout, const ConvertOptions& options,
+                   const std::vector<std::uint32_t>& todo, ConvertResult& result) {
   std::uint64_t bytes_per_step = 0;
   for (const auto& v : plan.variables) {
     bytes_per_step += plan.dims().count() * source_type_size(v.source_type);
@@ -337,6 +365,44 @@ ConvertResult convert(const ConvertOptions& options) {
     result.data += c.data;
   }
   result.direct_input_bytes = reader.direct_bytes();
+}
+
+}  // namespace
+
+ConvertResult convert(const ConvertOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  std::optional<tbb::global_control> limit;
+  if (options.threads > 0) {
+    limit.emplace(tbb::global_control::max_allowed_parallelism,
+                  static_cast<std::size_t>(options.threads));
+  }
+  const ingest::InputCatalog catalog = ingest::scan_inputs(options.inputs, options.scan);
+  std::vector<PredictorTrial> trials;
+  format::Manifest plan = plan_store(catalog, options, &trials);
+  const OctreeLayout layout(plan.dims(), plan.brick);
+  const auto steps = static_cast<std::uint32_t>(plan.time.values.size());
+  const std::uint32_t first = options.only_first.value_or(0);
+  const std::uint32_t last = options.only_last.value_or(steps - 1);
+  if (first > last || last >= steps) {
+    throw make_error(ErrorCode::kInvalidArgument, "steps {}:{} are outside the store's 0:{}", first,
+                     last, steps - 1);
+  }
+
+  std::filesystem::create_directories(options.store / "steps");
+  ConvertResult result;
+  report_codecs(plan, trials, result);
+  if (auto existing = start_or_match_manifest(options.store, plan)) {
+    spdlog::info("{} is already complete; nothing to do", options.store.string());
+    result.steps_skipped = last - first + 1;
+    result.finalized = true;
+    result.summary = existing->summary;
+    return result;
+  }
+  remove_stale_temporaries(options.store, first, last);
+
+  const auto store = Store::open(options.store, StoreOpenOptions{.allow_incomplete = true});
+  const std::vector<std::uint32_t> todo = steps_to_convert(*store, first, last, result);
+  convert_steps(catalog, plan, layout, options, todo, result);
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 

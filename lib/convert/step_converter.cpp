@@ -123,136 +123,180 @@ std::pair<std::size_t, std::size_t> coarse_planes_for(std::size_t f0, std::size_
   return {(f0 + 1) / 2, last ? coarse_n : f1 / 2 + 1};
 }
 
+// One variable of one step: level 0 read slab by slab and encoded while the next level
+// is downsampled from it; the coarser levels then encoded from dense grids.
 template <typename T>
-void convert_variable(Context& ctx, std::uint32_t v) {
-  const OctreeLayout& layout = ctx.layout;
-  const LevelShape& l0 = layout.level(0);
-  const std::size_t nx = l0.samples[0], ny = l0.samples[1], nz = l0.samples[2];
-  const std::size_t plane = nx * ny;
-  const std::size_t B = layout.brick();
-  const format::CodecSpec& codec = ctx.manifest.codec_of(v);
-  const bool has_coarse = layout.level_count() > 1;
-  const std::size_t src_size = source_type_size(ctx.manifest.variables[v].source_type);
-
-  std::vector<T> coarse;
-  std::array<std::size_t, 3> coarse_dims{};
-  std::array<bool, 3> halved{};
-  if (has_coarse) {
-    coarse_dims = layout.level(1).samples;
-    coarse.resize(coarse_dims[0] * coarse_dims[1] * coarse_dims[2]);
-    halved = halved_between(layout, 0);
+class VariableConversion {
+ public:
+  VariableConversion(Context& ctx, std::uint32_t v)
+      : ctx_(ctx),
+        v_(v),
+        layout_(ctx.layout),
+        l0_(layout_.level(0)),
+        nx_(l0_.samples[0]),
+        ny_(l0_.samples[1]),
+        nz_(l0_.samples[2]),
+        plane_(nx_ * ny_),
+        brick_(layout_.brick()),
+        codec_(ctx.manifest.codec_of(v)),
+        has_coarse_(layout_.level_count() > 1),
+        src_size_(source_type_size(ctx.manifest.variables[v].source_type)),
+        stats_(l0_.node_count()) {
+    if (has_coarse_) {
+      coarse_dims_ = layout_.level(1).samples;
+      coarse_.resize(coarse_dims_[0] * coarse_dims_[1] * coarse_dims_[2]);
+      halved_ = halved_between(layout_, 0);
+    }
   }
-  std::vector<NodeStats> stats(l0.node_count());
 
+  void run() {
+    convert_finest_level();
+    // Coarser levels: dense grids, statistics merged from the children.
+    for (std::size_t l = 1; l < layout_.level_count(); ++l) convert_coarse_level(l);
+  }
+
+ private:
   // Level 0: read slabs in order (netCDF is serial), encode in parallel, append in order.
-  std::uint32_t next_layer = 0;
-  std::shared_ptr<T[]> previous;
-  std::size_t prev_begin = 0, prev_end = 0;
-  const std::size_t tokens = std::max(2, tbb::this_task_arena::max_concurrency());
-  tbb::parallel_pipeline(
-      tokens,
-      tbb::make_filter<void, std::shared_ptr<Slab<T>>>(
-          tbb::filter_mode::serial_in_order,
-          [&](tbb::flow_control& fc) -> std::shared_ptr<Slab<T>> {
-            if (next_layer == l0.nodes[2]) {
-              fc.stop();
-              return nullptr;
-            }
-            auto s = std::make_shared<Slab<T>>();
-            s->layer = next_layer++;
-            const std::size_t z_lo = std::size_t{s->layer} * B;
-            const std::size_t z_hi = std::min(z_lo + B, nz - 1);
-            s->z_begin = z_lo > 0 ? z_lo - 1 : 0;
-            s->z_end = std::min(nz - 1, z_hi + 1) + 1;
-            // Every slab asks for the largest size (B + 3 planes), so a buffer fits any layer.
-            s->planes = ctx.buffers.acquire<T>(std::min(B + 3, nz) * plane);
-            std::size_t read_from = s->z_begin;
-            if (previous && prev_begin <= s->z_begin && prev_end > s->z_begin) {
-              const std::size_t keep = std::min(prev_end, s->z_end) - s->z_begin;
-              std::memcpy(s->planes.get(), previous.get() + (s->z_begin - prev_begin) * plane,
-                          keep * plane * sizeof(T));
-              read_from = s->z_begin + keep;
-            }
-            if (read_from < s->z_end) {
-              std::span<T> out(s->planes.get() + (read_from - s->z_begin) * plane,
-                               (s->z_end - read_from) * plane);
-              ctx.reader.read(v, ctx.step, read_from, s->z_end, out);
-              const std::uint64_t bytes = out.size() * src_size;
-              ctx.counts.input_bytes += bytes;
-              if (ctx.progress) ctx.progress(bytes);
-            }
-            previous = s->planes;
-            prev_begin = s->z_begin;
-            prev_end = s->z_end;
-            return s;
-          }) &
-          tbb::make_filter<std::shared_ptr<Slab<T>>, std::shared_ptr<Slab<T>>>(
-              tbb::filter_mode::parallel,
-              [&](std::shared_ptr<Slab<T>> s) {
-                const PlaneBlock<T> block{s->planes.get(), {nx, ny, s->z_end - s->z_begin},
-                                          s->z_begin, nz};
-                const std::size_t per_layer = l0.nodes[0] * l0.nodes[1];
-                s->bricks.resize(per_layer);
-                tbb::parallel_for(std::size_t{0}, per_layer, [&](std::size_t i) {
-                  const NodeKey key{0,
-                                    {static_cast<std::uint32_t>(i % l0.nodes[0]),
-                                     static_cast<std::uint32_t>(i / l0.nodes[0]), s->layer}};
-                  const IndexBox owned = layout.owned_fine_box(key);
-                  s->bricks[i] = encode_brick(block, layout.level_box(key), &owned, {}, codec);
-                });
-                if (has_coarse) {
-                  const IndexBox owned = layout.owned_fine_box(NodeKey{0, {0, 0, s->layer}});
-                  const bool last = s->layer + 1 == l0.nodes[2];
-                  const auto [c0, c1] =
-                      coarse_planes_for(owned.lo[2], owned.hi[2], halved[2], last, coarse_dims[2]);
-                  downsample_planes(block, halved, coarse, coarse_dims, c0, c1);
-                }
-                return s;
-              }) &
-          tbb::make_filter<std::shared_ptr<Slab<T>>, void>(
-              tbb::filter_mode::serial_in_order, [&](std::shared_ptr<Slab<T>> s) {
-                const std::size_t per_layer = l0.nodes[0] * l0.nodes[1];
-                for (std::size_t i = 0; i < per_layer; ++i) {
-                  const NodeId id = static_cast<NodeId>(l0.first_node + s->layer * per_layer + i);
-                  const format::IndexEntry& e = s->bricks[i].entry;
-                  stats[id - l0.first_node] = NodeStats{e.min, e.max, e.valid_count};
-                  count_kind(ctx.counts, e);
-                  ctx.counts.chunk_bytes += s->bricks[i].chunk.size();
-                  ctx.writer.add_brick(v, id, std::move(s->bricks[i]));
-                }
-              }));
+  void convert_finest_level() {
+    const std::size_t tokens = std::max(2, tbb::this_task_arena::max_concurrency());
+    tbb::parallel_pipeline(
+        tokens,
+        tbb::make_filter<void, std::shared_ptr<Slab<T>>>(
+            tbb::filter_mode::serial_in_order,
+            [&](tbb::flow_control& fc) -> std::shared_ptr<Slab<T>> {
+              if (next_layer_ == l0_.nodes[2]) {
+                fc.stop();
+                return nullptr;
+              }
+              return read_slab(next_layer_++);
+            }) &
+            tbb::make_filter<std::shared_ptr<Slab<T>>, std::shared_ptr<Slab<T>>>(
+                tbb::filter_mode::parallel,
+                [&](std::shared_ptr<Slab<T>> s) {
+                  encode_slab(*s);
+                  return s;
+                }) &
+            tbb::make_filter<std::shared_ptr<Slab<T>>, void>(
+                tbb::filter_mode::serial_in_order,
+                [&](std::shared_ptr<Slab<T>> s) { append_slab(*s); }));
+  }
 
-  // Coarser levels: dense grids, statistics merged from the children.
-  for (std::size_t l = 1; l < layout.level_count(); ++l) {
-    const LevelShape& shape = layout.level(l);
-    const LevelShape& below = layout.level(l - 1);
+  // The planes of one layer of level-0 bricks, with one plane either side: those the
+  // previous slab already holds are copied, the rest read.
+  std::shared_ptr<Slab<T>> read_slab(std::uint32_t layer) {
+    auto s = std::make_shared<Slab<T>>();
+    s->layer = layer;
+    const std::size_t z_lo = std::size_t{s->layer} * brick_;
+    const std::size_t z_hi = std::min(z_lo + brick_, nz_ - 1);
+    s->z_begin = z_lo > 0 ? z_lo - 1 : 0;
+    s->z_end = std::min(nz_ - 1, z_hi + 1) + 1;
+    // Every slab asks for the largest size (B + 3 planes), so a buffer fits any layer.
+    s->planes = ctx_.buffers.acquire<T>(std::min(brick_ + 3, nz_) * plane_);
+    std::size_t read_from = s->z_begin;
+    if (previous_ && prev_begin_ <= s->z_begin && prev_end_ > s->z_begin) {
+      const std::size_t keep = std::min(prev_end_, s->z_end) - s->z_begin;
+      std::memcpy(s->planes.get(), previous_.get() + (s->z_begin - prev_begin_) * plane_,
+                  keep * plane_ * sizeof(T));
+      read_from = s->z_begin + keep;
+    }
+    if (read_from < s->z_end) {
+      std::span<T> out(s->planes.get() + (read_from - s->z_begin) * plane_,
+                       (s->z_end - read_from) * plane_);
+      ctx_.reader.read(v_, ctx_.step, read_from, s->z_end, out);
+      const std::uint64_t bytes = out.size() * src_size_;
+      ctx_.counts.input_bytes += bytes;
+      if (ctx_.progress) ctx_.progress(bytes);
+    }
+    previous_ = s->planes;
+    prev_begin_ = s->z_begin;
+    prev_end_ = s->z_end;
+    return s;
+  }
+
+  // The slab's bricks encoded in parallel, and its share of level 1 downsampled.
+  void encode_slab(Slab<T>& s) {
+    const PlaneBlock<T> block{s.planes.get(), {nx_, ny_, s.z_end - s.z_begin}, s.z_begin, nz_};
+    const std::size_t per_layer = l0_.nodes[0] * l0_.nodes[1];
+    s.bricks.resize(per_layer);
+    tbb::parallel_for(std::size_t{0}, per_layer, [&](std::size_t i) {
+      const NodeKey key{0,
+                        {static_cast<std::uint32_t>(i % l0_.nodes[0]),
+                         static_cast<std::uint32_t>(i / l0_.nodes[0]), s.layer}};
+      const IndexBox owned = layout_.owned_fine_box(key);
+      s.bricks[i] = encode_brick(block, layout_.level_box(key), &owned, {}, codec_);
+    });
+    if (has_coarse_) {
+      const IndexBox owned = layout_.owned_fine_box(NodeKey{0, {0, 0, s.layer}});
+      const bool last = s.layer + 1 == l0_.nodes[2];
+      const auto [c0, c1] =
+          coarse_planes_for(owned.lo[2], owned.hi[2], halved_[2], last, coarse_dims_[2]);
+      downsample_planes(block, halved_, coarse_, coarse_dims_, c0, c1);
+    }
+  }
+
+  // The slab's bricks appended to the step, in node order.
+  void append_slab(Slab<T>& s) {
+    const std::size_t per_layer = l0_.nodes[0] * l0_.nodes[1];
+    for (std::size_t i = 0; i < per_layer; ++i) {
+      const NodeId id = static_cast<NodeId>(l0_.first_node + s.layer * per_layer + i);
+      const format::IndexEntry& e = s.bricks[i].entry;
+      stats_[id - l0_.first_node] = NodeStats{e.min, e.max, e.valid_count};
+      count_kind(ctx_.counts, e);
+      ctx_.counts.chunk_bytes += s.bricks[i].chunk.size();
+      ctx_.writer.add_brick(v_, id, std::move(s.bricks[i]));
+    }
+  }
+
+  // Level l encoded from the dense grid `coarse_`, which is then downsampled to level l + 1.
+  void convert_coarse_level(std::size_t l) {
+    const LevelShape& shape = layout_.level(l);
+    const LevelShape& below = layout_.level(l - 1);
     std::vector<NodeStats> level_stats(shape.node_count());
     for (std::size_t i = 0; i < shape.node_count(); ++i) {
-      for (NodeId child : layout.children(static_cast<NodeId>(shape.first_node + i))) {
-        level_stats[i].merge(stats[child - below.first_node]);
+      for (NodeId child : layout_.children(static_cast<NodeId>(shape.first_node + i))) {
+        level_stats[i].merge(stats_[child - below.first_node]);
       }
     }
-    const PlaneBlock<T> block{coarse.data(), coarse_dims, 0, coarse_dims[2]};
+    const PlaneBlock<T> block{coarse_.data(), coarse_dims_, 0, coarse_dims_[2]};
     std::vector<EncodedBrick> bricks(shape.node_count());
     tbb::parallel_for(std::size_t{0}, shape.node_count(), [&](std::size_t i) {
-      const NodeKey key = layout.key(static_cast<NodeId>(shape.first_node + i));
-      bricks[i] = encode_brick(block, layout.level_box(key), nullptr, level_stats[i], codec);
+      const NodeKey key = layout_.key(static_cast<NodeId>(shape.first_node + i));
+      bricks[i] = encode_brick(block, layout_.level_box(key), nullptr, level_stats[i], codec_);
     });
     for (std::size_t i = 0; i < bricks.size(); ++i) {
-      count_kind(ctx.counts, bricks[i].entry);
-      ctx.counts.chunk_bytes += bricks[i].chunk.size();
-      ctx.writer.add_brick(v, static_cast<NodeId>(shape.first_node + i), std::move(bricks[i]));
+      count_kind(ctx_.counts, bricks[i].entry);
+      ctx_.counts.chunk_bytes += bricks[i].chunk.size();
+      ctx_.writer.add_brick(v_, static_cast<NodeId>(shape.first_node + i), std::move(bricks[i]));
     }
-    if (l + 1 < layout.level_count()) {
-      const auto next_dims = layout.level(l + 1).samples;
+    if (l + 1 < layout_.level_count()) {
+      const auto next_dims = layout_.level(l + 1).samples;
       std::vector<T> next(next_dims[0] * next_dims[1] * next_dims[2]);
-      downsample_planes(block, halved_between(layout, l), next, next_dims, 0, next_dims[2]);
-      coarse = std::move(next);
-      coarse_dims = next_dims;
+      downsample_planes(block, halved_between(layout_, l), next, next_dims, 0, next_dims[2]);
+      coarse_ = std::move(next);
+      coarse_dims_ = next_dims;
     }
-    stats = std::move(level_stats);
+    stats_ = std::move(level_stats);
   }
-}
+
+  Context& ctx_;
+  const std::uint32_t v_;
+  const OctreeLayout& layout_;
+  const LevelShape& l0_;
+  const std::size_t nx_, ny_, nz_, plane_;
+  const std::size_t brick_;
+  const format::CodecSpec& codec_;
+  const bool has_coarse_;
+  const std::size_t src_size_;
+
+  std::vector<T> coarse_;  // the level below the one being encoded, dense
+  std::array<std::size_t, 3> coarse_dims_{};
+  std::array<bool, 3> halved_{};
+  std::vector<NodeStats> stats_;  // of the level just encoded
+
+  std::uint32_t next_layer_ = 0;
+  std::shared_ptr<T[]> previous_;  // the last slab's planes [prev_begin_, prev_end_)
+  std::size_t prev_begin_ = 0, prev_end_ = 0;
+};
 
 }  // namespace
 
@@ -278,9 +322,9 @@ StepCounts convert_step(const format::Manifest& manifest, const OctreeLayout& la
   Context ctx{buffers, manifest, layout, reader, step, writer, counts, progress};
   for (std::uint32_t v = 0; v < header.variable_count; ++v) {
     if (manifest.variables[v].dtype == DType::kFloat32) {
-      convert_variable<float>(ctx, v);
+      VariableConversion<float>(ctx, v).run();
     } else {
-      convert_variable<double>(ctx, v);
+      VariableConversion<double>(ctx, v).run();
     }
   }
   writer.commit();

@@ -95,56 +95,62 @@ MeshSelection select(const Mesh& m, bool drop_node_boundary_faces) {
   return s;
 }
 
-vtkSmartPointer<vtkPolyData> build_polydata(std::span<const NodeMeshRef> meshes,
-                                   const std::vector<MeshSelection>& selections,
-                                   const VtpOptions& options) {
-  std::uint64_t n_points = 0, n_triangles = 0;
-  std::vector<std::string> attribute_names;
-  for (std::size_t i = 0; i < meshes.size(); ++i) {
-    n_points += selections[i].vertices.size();
-    n_triangles += selections[i].triangles.size();
-    for (const auto& name : meshes[i].mesh->attribute_names) {
-      if (std::find(attribute_names.begin(), attribute_names.end(), name) == attribute_names.end())
-        attribute_names.push_back(name);
+// The attribute names of all meshes, each once, in the order they first appear.
+std::vector<std::string> all_attribute_names(std::span<const NodeMeshRef> meshes) {
+  std::vector<std::string> names;
+  for (const NodeMeshRef& ref : meshes) {
+    for (const auto& name : ref.mesh->attribute_names) {
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
     }
   }
+  return names;
+}
 
+// The output's arrays, sized for every selected vertex and triangle; attributes a mesh
+// lacks stay NaN.
+struct PolyArrays {
   vtkNew<vtkPoints> points;
-  if (options.float32_points) {
-    points->SetDataTypeToFloat();
-  } else {
-    points->SetDataTypeToDouble();
-  }
-  points->SetNumberOfPoints(vtkIdType(n_points));
   vtkNew<vtkFloatArray> normals;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(vtkIdType(n_points));
-  std::vector<vtkSmartPointer<vtkFloatArray>> attributes;
-  for (const auto& name : attribute_names) {
-    auto array = vtkSmartPointer<vtkFloatArray>::New();
-    array->SetName(name.c_str());
-    array->SetNumberOfTuples(vtkIdType(n_points));
-    array->FillValue(std::numeric_limits<float>::quiet_NaN());
-    attributes.push_back(array);
-  }
+  std::vector<std::string> attribute_names;
+  std::vector<vtkSmartPointer<vtkFloatArray>> attributes;  // one per name
   vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfTuples(vtkIdType(n_triangles + 1));
-  connectivity->SetNumberOfTuples(vtkIdType(3 * n_triangles));
   vtkNew<vtkUnsignedIntArray> subvolume_ids, node_ids;
-  subvolume_ids->SetName("subvolume_id");
-  subvolume_ids->SetNumberOfTuples(vtkIdType(n_triangles));
-  node_ids->SetName("node_id");
-  node_ids->SetNumberOfTuples(vtkIdType(n_triangles));
   vtkNew<vtkUnsignedCharArray> face_kinds;
-  face_kinds->SetName("face_kind");
-  face_kinds->SetNumberOfTuples(vtkIdType(n_triangles));
+  vtkIdType point_base = 0, cell = 0;  // filled so far
 
-  vtkIdType point_base = 0, cell = 0;
-  offsets->SetValue(0, 0);
-  for (std::size_t i = 0; i < meshes.size(); ++i) {
-    const Mesh& m = *meshes[i].mesh;
-    const MeshSelection& s = selections[i];
+  PolyArrays(std::uint64_t n_points, std::uint64_t n_triangles, std::vector<std::string> names,
+             bool float32_points)
+      : attribute_names(std::move(names)) {
+    if (float32_points) {
+      points->SetDataTypeToFloat();
+    } else {
+      points->SetDataTypeToDouble();
+    }
+    points->SetNumberOfPoints(vtkIdType(n_points));
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    normals->SetNumberOfTuples(vtkIdType(n_points));
+    for (const auto& name : attribute_names) {
+      auto array = vtkSmartPointer<vtkFloatArray>::New();
+      array->SetName(name.c_str());
+      array->SetNumberOfTuples(vtkIdType(n_points));
+      array->FillValue(std::numeric_limits<float>::quiet_NaN());
+      attributes.push_back(array);
+    }
+    offsets->SetNumberOfTuples(vtkIdType(n_triangles + 1));
+    connectivity->SetNumberOfTuples(vtkIdType(3 * n_triangles));
+    subvolume_ids->SetName("subvolume_id");
+    subvolume_ids->SetNumberOfTuples(vtkIdType(n_triangles));
+    node_ids->SetName("node_id");
+    node_ids->SetNumberOfTuples(vtkIdType(n_triangles));
+    face_kinds->SetName("face_kind");
+    face_kinds->SetNumberOfTuples(vtkIdType(n_triangles));
+    offsets->SetValue(0, 0);
+  }
+
+  // The selected part of one node's mesh, after those appended before.
+  void append(const NodeMeshRef& ref, const MeshSelection& s) {
+    const Mesh& m = *ref.mesh;
     for (std::size_t v = 0; v < s.vertices.size(); ++v) {
       const auto& p = m.positions[s.vertices[v]];
       const auto& n = m.normals[s.vertices[v]];
@@ -165,24 +171,36 @@ vtkSmartPointer<vtkPolyData> build_polydata(std::span<const NodeMeshRef> meshes,
       }
       offsets->SetValue(cell + 1, 3 * (cell + 1));
       subvolume_ids->SetValue(cell, m.subvolume_id);
-      node_ids->SetValue(cell, meshes[i].node_id);
+      node_ids->SetValue(cell, ref.node_id);
       face_kinds->SetValue(cell, m.face_kinds.empty() ? std::uint8_t(FaceKind::kLimit)
                                                       : std::uint8_t(m.face_kinds[t]));
       ++cell;
     }
     point_base += vtkIdType(s.vertices.size());
   }
+};
+
+vtkSmartPointer<vtkPolyData> build_polydata(std::span<const NodeMeshRef> meshes,
+                                   const std::vector<MeshSelection>& selections,
+                                   const VtpOptions& options) {
+  std::uint64_t n_points = 0, n_triangles = 0;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    n_points += selections[i].vertices.size();
+    n_triangles += selections[i].triangles.size();
+  }
+  PolyArrays arrays(n_points, n_triangles, all_attribute_names(meshes), options.float32_points);
+  for (std::size_t i = 0; i < meshes.size(); ++i) arrays.append(meshes[i], selections[i]);
 
   vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
+  polys->SetData(arrays.offsets, arrays.connectivity);
   auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
+  poly->SetPoints(arrays.points);
   poly->SetPolys(polys);
-  poly->GetCellData()->AddArray(subvolume_ids);
-  poly->GetCellData()->AddArray(node_ids);
-  if (options.face_kind_array) poly->GetCellData()->AddArray(face_kinds);
-  poly->GetPointData()->SetNormals(normals);
-  for (const auto& array : attributes) poly->GetPointData()->AddArray(array);
+  poly->GetCellData()->AddArray(arrays.subvolume_ids);
+  poly->GetCellData()->AddArray(arrays.node_ids);
+  if (options.face_kind_array) poly->GetCellData()->AddArray(arrays.face_kinds);
+  poly->GetPointData()->SetNormals(arrays.normals);
+  for (const auto& array : arrays.attributes) poly->GetPointData()->AddArray(array);
   for (const auto& [name, text] : options.field_data) {
     vtkNew<vtkStringArray> value;
     value->SetName(name.c_str());

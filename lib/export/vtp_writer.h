@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Batch export of extraction meshes as one VTK XML PolyData file (.vtp) that ParaView
-// opens (issue 3, "Batch use"). VTK types stay inside vtp_writer.cpp.
+// opens, for batch use without the viewer. VTK types stay inside vtp_writer.cpp.
 //
 // File content (VTK XML, appended raw binary, zlib-compressed blocks, UInt64 headers):
 //   Points      Float64 x 3 (Float32 on request), the meshes' positions in dataset axis

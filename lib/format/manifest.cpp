@@ -193,7 +193,10 @@ std::uint32_t version_for_plan(const Manifest& m) {
 
 std::string step_file_name(std::uint32_t step) { return fmt::format("steps/step-{:06d}.bricks", step); }
 
-json manifest_plan_json(const Manifest& m) {
+namespace {
+
+// The format version a plan names must be able to hold what the plan holds, and need it.
+void check_plan_version(const Manifest& m) {
   const std::uint32_t version = m.format_version;
   if (version == 0 || version > kManifestFormatVersion) {
     throw make_error(ErrorCode::kInvalidArgument, "cannot write manifest format version {}",
@@ -221,42 +224,39 @@ json manifest_plan_json(const Manifest& m) {
                      version, version < kManifestVersionGeoreference ? "cannot hold" : "needs",
                      kManifestVersionGeoreference);
   }
-  json vars = json::array();
-  for (const StoreVariable& v : m.variables) {
-    json jv{{"name", v.name},
-            {"units", v.units},
-            {"long_name", v.long_name},
-            {"standard_name", v.standard_name},
-            {"dtype", std::string(dtype_name(v.dtype))},
-            {"source_type", v.source_type}};
-    // JSON has no NaN or Inf (nlohmann writes null, which no reader accepts). A
-    // non-finite fill, missing value or bound is left out: it says nothing about the
-    // stored samples (formats/store.md, "Manifest"). Packing attributes must be finite.
-    auto put = [&](const char* key, const std::optional<double>& value) {
-      if (value && std::isfinite(*value)) jv[key] = *value;
-    };
-    auto put_finite = [&](const char* key, const std::optional<double>& value) {
-      if (value && !std::isfinite(*value)) {
-        throw make_error(ErrorCode::kInvalidArgument, "variable '{}': {} {} is not finite", v.name,
-                         key, *value);
-      }
-      put(key, value);
-    };
-    put("fill_value", v.fill_value);
-    put("missing_value", v.missing_value);
-    put("valid_min", v.valid_min);
-    put("valid_max", v.valid_max);
-    put_finite("scale_factor", v.scale_factor);
-    put_finite("add_offset", v.add_offset);
-    if (v.codec) jv["codec"] = codec_json(*v.codec, version);
-    vars.push_back(std::move(jv));
-  }
-  json sources = json::array();
-  for (const SourceRecord& s : m.sources) {
-    sources.push_back(
-        json{{"path", s.path}, {"size", s.size}, {"header_checksum", hex64(s.header_checksum)}});
-  }
-  const OctreeLayout layout(m.dims(), m.brick);
+}
+
+json variable_json(const StoreVariable& v, std::uint32_t version) {
+  json jv{{"name", v.name},
+          {"units", v.units},
+          {"long_name", v.long_name},
+          {"standard_name", v.standard_name},
+          {"dtype", std::string(dtype_name(v.dtype))},
+          {"source_type", v.source_type}};
+  // JSON has no NaN or Inf (nlohmann writes null, which no reader accepts). A
+  // non-finite fill, missing value or bound is left out: it says nothing about the
+  // stored samples (formats/store.md, "Manifest"). Packing attributes must be finite.
+  auto put = [&](const char* key, const std::optional<double>& value) {
+    if (value && std::isfinite(*value)) jv[key] = *value;
+  };
+  auto put_finite = [&](const char* key, const std::optional<double>& value) {
+    if (value && !std::isfinite(*value)) {
+      throw make_error(ErrorCode::kInvalidArgument, "variable '{}': {} {} is not finite", v.name,
+                       key, *value);
+    }
+    put(key, value);
+  };
+  put("fill_value", v.fill_value);
+  put("missing_value", v.missing_value);
+  put("valid_min", v.valid_min);
+  put("valid_max", v.valid_max);
+  put_finite("scale_factor", v.scale_factor);
+  put_finite("add_offset", v.add_offset);
+  if (v.codec) jv["codec"] = codec_json(*v.codec, version);
+  return jv;
+}
+
+json grid_json(const Manifest& m) {
   json grid{{"x", axis_json(m.x)}, {"y", axis_json(m.y)}, {"z", axis_json(m.z)}};
   if (m.grid_mapping) {
     grid["mapping"] = json{{"variable", m.grid_mapping->variable},
@@ -264,10 +264,26 @@ json manifest_plan_json(const Manifest& m) {
                            {"attributes", m.grid_mapping->attributes},
                            {"proj", m.grid_mapping->proj}};
   }
+  return grid;
+}
+
+}  // namespace
+
+json manifest_plan_json(const Manifest& m) {
+  check_plan_version(m);
+  const std::uint32_t version = m.format_version;
+  json vars = json::array();
+  for (const StoreVariable& v : m.variables) vars.push_back(variable_json(v, version));
+  json sources = json::array();
+  for (const SourceRecord& s : m.sources) {
+    sources.push_back(
+        json{{"path", s.path}, {"size", s.size}, {"header_checksum", hex64(s.header_checksum)}});
+  }
+  const OctreeLayout layout(m.dims(), m.brick);
   return json{
       {"format", "strielad-store"},
       {"format_version", version},
-      {"grid", std::move(grid)},
+      {"grid", grid_json(m)},
       {"time", json{{"name", m.time.name},
                     {"units", m.time.units},
                     {"calendar", m.time.calendar},
@@ -306,6 +322,129 @@ json manifest_to_json(const Manifest& m) {
   return j;
 }
 
+namespace {
+
+GridMapping grid_mapping_from_json(const json& j, std::uint32_t version, std::string_view what) {
+  const std::string where = fmt::format("{}: grid.mapping", what);
+  if (version < kManifestVersionGeoreference) {
+    throw make_error(ErrorCode::kCorrupt, "{}: needs format version {} (this is {})", where,
+                     kManifestVersionGeoreference, version);
+  }
+  GridMapping gm;
+  gm.variable = get<std::string>(j, "variable", where);
+  gm.name = get<std::string>(j, "grid_mapping_name", where);
+  gm.attributes = get<json>(j, "attributes", where);
+  if (!gm.attributes.is_object()) {
+    throw make_error(ErrorCode::kCorrupt, "{}: key 'attributes' is not an object", where);
+  }
+  gm.proj = get<std::string>(j, "proj", where);
+  return gm;
+}
+
+// The axes and grid mapping, which must agree: projection axes in pairs, and with a PROJ
+// string only.
+void read_grid(const json& grid, std::uint32_t version, std::string_view what, Manifest& m) {
+  m.x = axis_from_json(get<json>(grid, "x", what), fmt::format("{}: grid.x", what), version);
+  m.y = axis_from_json(get<json>(grid, "y", what), fmt::format("{}: grid.y", what), version);
+  m.z = axis_from_json(get<json>(grid, "z", what), fmt::format("{}: grid.z", what), version);
+  if (m.y.periodic || m.z.periodic) {
+    throw make_error(ErrorCode::kCorrupt, "{}: only the x axis can be periodic", what);
+  }
+  if (const auto it = grid.find("mapping"); it != grid.end()) {
+    m.grid_mapping = grid_mapping_from_json(*it, version, what);
+  }
+  if ((m.x.kind == AxisKind::kProjectionX) != (m.y.kind == AxisKind::kProjectionY) ||
+      (m.grid_mapping && !m.grid_mapping->proj.empty() && m.x.kind != AxisKind::kProjectionX)) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: axes x '{}' ({}) and y '{}' ({}) do not match the grid mapping", what,
+                     m.x.name, axis_kind_name(m.x.kind), m.y.name, axis_kind_name(m.y.kind));
+  }
+}
+
+TimeAxis time_from_json(const json& time, std::string_view what) {
+  TimeAxis t;
+  t.name = get<std::string>(time, "name", what);
+  t.units = get<std::string>(time, "units", what);
+  t.calendar = get<std::string>(time, "calendar", what);
+  t.values = get<std::vector<double>>(time, "values", what);
+  if (t.values.empty()) throw make_error(ErrorCode::kCorrupt, "{}: no time steps", what);
+  return t;
+}
+
+StoreVariable variable_from_json(const json& jv, std::uint32_t version, std::string_view what) {
+  StoreVariable v;
+  v.name = get<std::string>(jv, "name", what);
+  v.units = get<std::string>(jv, "units", what);
+  v.long_name = get<std::string>(jv, "long_name", what);
+  v.standard_name = get<std::string>(jv, "standard_name", what);
+  v.dtype = dtype_from_name(get<std::string>(jv, "dtype", what));
+  v.source_type = get<std::string>(jv, "source_type", what);
+  v.fill_value = get_optional(jv, "fill_value", what);
+  v.missing_value = get_optional(jv, "missing_value", what);
+  v.valid_min = get_optional(jv, "valid_min", what);
+  v.valid_max = get_optional(jv, "valid_max", what);
+  v.scale_factor = get_optional(jv, "scale_factor", what);
+  v.add_offset = get_optional(jv, "add_offset", what);
+  if (const auto it = jv.find("codec"); it != jv.end()) {
+    const std::string where = fmt::format("{}: variable '{}'", what, v.name);
+    if (version < kManifestVersionPredictors) {
+      throw make_error(ErrorCode::kCorrupt, "{}: key 'codec' needs format version {} (this is {})",
+                       where, kManifestVersionPredictors, version);
+    }
+    v.codec = codec_from_json(*it, version, where);
+  }
+  return v;
+}
+
+// A writer picks the lowest version that holds the content: a higher one is corrupt.
+void check_version_needed(const Manifest& m, std::uint32_t version, std::string_view what) {
+  if (version >= kManifestVersionGeoreference && !needs_georeference_version(m)) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: format version {} but the grid has no grid mapping, projection axis or "
+                     "periodic longitude (a writer uses version {} or below then)",
+                     what, version, kManifestVersionFpzip);
+  }
+  if (version == kManifestVersionFpzip && version_for_codecs(m) < kManifestVersionFpzip) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: format version {} but no codec has 'fpzip' (a writer uses version {} then)",
+                     what, version, kManifestVersionPredictors);
+  }
+}
+
+// The recorded level table must match the one computed from grid and brick.
+void check_level_table(const json& octree, const Manifest& m, std::string_view what) {
+  try {
+    const OctreeLayout layout(m.dims(), m.brick);
+    if (get<json>(octree, "levels", what) != levels_json(layout) ||
+        get<std::uint64_t>(octree, "node_count", what) != layout.node_count()) {
+      throw make_error(ErrorCode::kCorrupt,
+                       "{}: octree level table differs from the one computed for grid {}x{}x{} "
+                       "and brick {}",
+                       what, m.x.size(), m.y.size(), m.z.size(), m.brick);
+    }
+  } catch (const Error& e) {
+    if (e.code() == ErrorCode::kCorrupt) throw;
+    throw make_error(ErrorCode::kCorrupt, "{}: {}", what, e.what());
+  }
+}
+
+// A complete store's step files (one per time step) and summary.
+void read_completion(const json& j, std::string_view what, Manifest& m) {
+  for (const json& js : get<json>(j, "steps", what)) {
+    m.steps.push_back(StepRecord{
+        get<std::uint32_t>(js, "step", what), get<std::string>(js, "file", what),
+        get<std::uint64_t>(js, "size", what),
+        parse_hex64(get<std::string>(js, "footer_checksum", what), "footer_checksum", what)});
+  }
+  if (m.steps.size() != m.time.values.size()) {
+    throw make_error(ErrorCode::kCorrupt, "{}: complete store lists {} step files for {} steps",
+                     what, m.steps.size(), m.time.values.size());
+  }
+  m.summary = get<json>(j, "summary", what);
+}
+
+}  // namespace
+
 Manifest manifest_from_json(const json& j, std::string_view what) {
   if (!j.is_object()) throw make_error(ErrorCode::kCorrupt, "{}: payload is not a JSON object", what);
   if (get<std::string>(j, "format", what) != "strielad-store") {
@@ -322,113 +461,24 @@ Manifest manifest_from_json(const json& j, std::string_view what) {
     throw make_error(ErrorCode::kCorrupt, "{}: unknown state '{}'", what, state);
   }
   m.complete = state == "complete";
-  const json& grid = get<json>(j, "grid", what);
-  m.x = axis_from_json(get<json>(grid, "x", what), fmt::format("{}: grid.x", what), version);
-  m.y = axis_from_json(get<json>(grid, "y", what), fmt::format("{}: grid.y", what), version);
-  m.z = axis_from_json(get<json>(grid, "z", what), fmt::format("{}: grid.z", what), version);
-  if (m.y.periodic || m.z.periodic) {
-    throw make_error(ErrorCode::kCorrupt, "{}: only the x axis can be periodic", what);
-  }
-  if (const auto it = grid.find("mapping"); it != grid.end()) {
-    const std::string where = fmt::format("{}: grid.mapping", what);
-    if (version < kManifestVersionGeoreference) {
-      throw make_error(ErrorCode::kCorrupt, "{}: needs format version {} (this is {})", where,
-                       kManifestVersionGeoreference, version);
-    }
-    GridMapping gm;
-    gm.variable = get<std::string>(*it, "variable", where);
-    gm.name = get<std::string>(*it, "grid_mapping_name", where);
-    gm.attributes = get<json>(*it, "attributes", where);
-    if (!gm.attributes.is_object()) {
-      throw make_error(ErrorCode::kCorrupt, "{}: key 'attributes' is not an object", where);
-    }
-    gm.proj = get<std::string>(*it, "proj", where);
-    m.grid_mapping = std::move(gm);
-  }
-  if ((m.x.kind == AxisKind::kProjectionX) != (m.y.kind == AxisKind::kProjectionY) ||
-      (m.grid_mapping && !m.grid_mapping->proj.empty() && m.x.kind != AxisKind::kProjectionX)) {
-    throw make_error(ErrorCode::kCorrupt,
-                     "{}: axes x '{}' ({}) and y '{}' ({}) do not match the grid mapping", what,
-                     m.x.name, axis_kind_name(m.x.kind), m.y.name, axis_kind_name(m.y.kind));
-  }
-  const json& time = get<json>(j, "time", what);
-  m.time.name = get<std::string>(time, "name", what);
-  m.time.units = get<std::string>(time, "units", what);
-  m.time.calendar = get<std::string>(time, "calendar", what);
-  m.time.values = get<std::vector<double>>(time, "values", what);
-  if (m.time.values.empty()) throw make_error(ErrorCode::kCorrupt, "{}: no time steps", what);
+  read_grid(get<json>(j, "grid", what), version, what, m);
+  m.time = time_from_json(get<json>(j, "time", what), what);
   for (const json& jv : get<json>(j, "variables", what)) {
-    StoreVariable v;
-    v.name = get<std::string>(jv, "name", what);
-    v.units = get<std::string>(jv, "units", what);
-    v.long_name = get<std::string>(jv, "long_name", what);
-    v.standard_name = get<std::string>(jv, "standard_name", what);
-    v.dtype = dtype_from_name(get<std::string>(jv, "dtype", what));
-    v.source_type = get<std::string>(jv, "source_type", what);
-    v.fill_value = get_optional(jv, "fill_value", what);
-    v.missing_value = get_optional(jv, "missing_value", what);
-    v.valid_min = get_optional(jv, "valid_min", what);
-    v.valid_max = get_optional(jv, "valid_max", what);
-    v.scale_factor = get_optional(jv, "scale_factor", what);
-    v.add_offset = get_optional(jv, "add_offset", what);
-    if (const auto it = jv.find("codec"); it != jv.end()) {
-      const std::string where = fmt::format("{}: variable '{}'", what, v.name);
-      if (version < kManifestVersionPredictors) {
-        throw make_error(ErrorCode::kCorrupt, "{}: key 'codec' needs format version {} (this is {})",
-                         where, kManifestVersionPredictors, version);
-      }
-      v.codec = codec_from_json(*it, version, where);
-    }
-    m.variables.push_back(std::move(v));
+    m.variables.push_back(variable_from_json(jv, version, what));
   }
   if (m.variables.empty()) throw make_error(ErrorCode::kCorrupt, "{}: no variables", what);
   const json& octree = get<json>(j, "octree", what);
   m.brick = get<std::uint32_t>(octree, "brick", what);
   m.codec = codec_from_json(get<json>(j, "codec", what), version, what);
   m.nan_as_fill = get<bool>(j, "nan_as_fill", what);
-  if (version >= kManifestVersionGeoreference && !needs_georeference_version(m)) {
-    throw make_error(ErrorCode::kCorrupt,
-                     "{}: format version {} but the grid has no grid mapping, projection axis or "
-                     "periodic longitude (a writer uses version {} or below then)",
-                     what, version, kManifestVersionFpzip);
-  }
-  if (version == kManifestVersionFpzip && version_for_codecs(m) < kManifestVersionFpzip) {
-    throw make_error(ErrorCode::kCorrupt,
-                     "{}: format version {} but no codec has 'fpzip' (a writer uses version {} then)",
-                     what, version, kManifestVersionPredictors);
-  }
+  check_version_needed(m, version, what);
   for (const json& js : get<json>(j, "sources", what)) {
     m.sources.push_back(SourceRecord{
         get<std::string>(js, "path", what), get<std::uint64_t>(js, "size", what),
         parse_hex64(get<std::string>(js, "header_checksum", what), "header_checksum", what)});
   }
-  // The recorded level table must match the one computed from grid and brick.
-  try {
-    const OctreeLayout layout(m.dims(), m.brick);
-    if (get<json>(octree, "levels", what) != levels_json(layout) ||
-        get<std::uint64_t>(octree, "node_count", what) != layout.node_count()) {
-      throw make_error(ErrorCode::kCorrupt,
-                       "{}: octree level table differs from the one computed for grid {}x{}x{} "
-                       "and brick {}",
-                       what, m.x.size(), m.y.size(), m.z.size(), m.brick);
-    }
-  } catch (const Error& e) {
-    if (e.code() == ErrorCode::kCorrupt) throw;
-    throw make_error(ErrorCode::kCorrupt, "{}: {}", what, e.what());
-  }
-  if (m.complete) {
-    for (const json& js : get<json>(j, "steps", what)) {
-      m.steps.push_back(StepRecord{
-          get<std::uint32_t>(js, "step", what), get<std::string>(js, "file", what),
-          get<std::uint64_t>(js, "size", what),
-          parse_hex64(get<std::string>(js, "footer_checksum", what), "footer_checksum", what)});
-    }
-    if (m.steps.size() != m.time.values.size()) {
-      throw make_error(ErrorCode::kCorrupt, "{}: complete store lists {} step files for {} steps",
-                       what, m.steps.size(), m.time.values.size());
-    }
-    m.summary = get<json>(j, "summary", what);
-  }
+  check_level_table(octree, m, what);
+  if (m.complete) read_completion(j, what, m);
   if (compute_store_id(m) != m.store_id) {
     throw make_error(ErrorCode::kCorrupt,
                      "{}: store_id {:016x} does not match the manifest's content ({:016x})", what,

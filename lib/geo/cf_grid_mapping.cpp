@@ -194,49 +194,52 @@ std::string_view supported_grid_mappings() {
   return list;
 }
 
-std::string cf_grid_mapping_proj(const GridMapping& mapping, const Axis& x, const Axis& y,
-                                 std::string_view what) {
-  const std::string name = lower(mapping.name);
-  if (std::find(kSupported.begin(), kSupported.end(), name) == kSupported.end()) {
-    throw make_error(ErrorCode::kUnsupported,
-                     "{}: grid mapping '{}' has grid_mapping_name '{}', which this version cannot "
-                     "place (it places: {})",
-                     what, mapping.variable, mapping.name, supported_grid_mappings());
+namespace {
+
+Error axis_units_error(const Axis& a, std::string_view needs, const GridMapping& mapping,
+                       std::string_view what) {
+  return make_error(ErrorCode::kUnsupported,
+                    "{}: axis '{}' has units '{}', but grid mapping '{}' ({}) needs {}", what,
+                    a.name, a.units, mapping.variable, mapping.name, needs);
+}
+
+void check_degree_axes(const Axis& x, const Axis& y, const GridMapping& mapping,
+                       std::string_view what) {
+  for (const Axis* a : {&x, &y}) {
+    if (!is_degree_units(a->units)) throw axis_units_error(*a, "degrees", mapping, what);
   }
-  const Parameters p(mapping, what);
-  auto units_error = [&](const Axis& a, std::string_view needs) {
-    return make_error(ErrorCode::kUnsupported,
-                      "{}: axis '{}' has units '{}', but grid mapping '{}' ({}) needs {}", what,
-                      a.name, a.units, mapping.variable, mapping.name, needs);
-  };
-  if (name == "latitude_longitude") {
-    for (const Axis* a : {&x, &y}) {
-      if (!is_degree_units(a->units)) throw units_error(*a, "degrees");
-    }
-    p.figure();  // validates the attributes; the axes are used as they are
-    return "";
-  }
-  if (name == "rotated_latitude_longitude") {
-    for (const Axis* a : {&x, &y}) {
-      if (!is_degree_units(a->units)) throw units_error(*a, "degrees");
-    }
-    const double pole_lat = p.required_latitude("grid_north_pole_latitude");
-    const double pole_lon = p.required("grid_north_pole_longitude");
-    const double grid_lon = p.optional("north_pole_grid_longitude").value_or(0.0);
-    return fmt::format(
-        "+proj=pipeline +step +proj=unitconvert +xy_in=deg +xy_out=rad "
-        "+step +inv +proj=ob_tran +o_proj=longlat +o_lat_p={} +o_lon_p={} +lon_0={} "
-        "+step +proj=unitconvert +xy_in=rad +xy_out=deg",
-        num(pole_lat), num(grid_lon), num(180.0 + pole_lon));
-  }
+}
+
+// Metres per unit of projection axes x and y, which must have the same length unit.
+double projection_axis_metres(const Axis& x, const Axis& y, const GridMapping& mapping,
+                              std::string_view what) {
   const auto mx = metres_per_length_unit(x.units), my = metres_per_length_unit(y.units);
-  if (!mx) throw units_error(x, "a length (m or km)");
-  if (!my) throw units_error(y, "a length (m or km)");
+  if (!mx) throw axis_units_error(x, "a length (m or km)", mapping, what);
+  if (!my) throw axis_units_error(y, "a length (m or km)", mapping, what);
   if (*mx != *my) {
     throw make_error(ErrorCode::kUnsupported,
                      "{}: axes '{}' ({}) and '{}' ({}) of grid mapping '{}' have different units",
                      what, x.name, x.units, y.name, y.units, mapping.variable);
   }
+  return *mx;
+}
+
+// Rotated-pole longitude and latitude to geographic degrees.
+std::string rotated_pole_pipeline(const Parameters& p) {
+  const double pole_lat = p.required_latitude("grid_north_pole_latitude");
+  const double pole_lon = p.required("grid_north_pole_longitude");
+  const double grid_lon = p.optional("north_pole_grid_longitude").value_or(0.0);
+  return fmt::format(
+      "+proj=pipeline +step +proj=unitconvert +xy_in=deg +xy_out=rad "
+      "+step +inv +proj=ob_tran +o_proj=longlat +o_lat_p={} +o_lon_p={} +lon_0={} "
+      "+step +proj=unitconvert +xy_in=rad +xy_out=deg",
+      num(pole_lat), num(grid_lon), num(180.0 + pole_lon));
+}
+
+// The PROJ projection of a supported projected grid mapping `name`, without false origin
+// and figure of the Earth.
+std::string projection_definition(const std::string& name, const Parameters& p,
+                                  const GridMapping& mapping, std::string_view what) {
   std::string projection;
   auto origin_latitude = [&] {
     return fmt::format(" +lat_0={}", num(p.required_latitude("latitude_of_projection_origin")));
@@ -290,8 +293,34 @@ std::string cf_grid_mapping_proj(const GridMapping& mapping, const Axis& x, cons
     projection = "+proj=sinu" +
                  fmt::format(" +lon_0={}", num(p.required("longitude_of_central_meridian")));
   }
+  return projection;
+}
+
+}  // namespace
+
+std::string cf_grid_mapping_proj(const GridMapping& mapping, const Axis& x, const Axis& y,
+                                 std::string_view what) {
+  const std::string name = lower(mapping.name);
+  if (std::find(kSupported.begin(), kSupported.end(), name) == kSupported.end()) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "{}: grid mapping '{}' has grid_mapping_name '{}', which this version cannot "
+                     "place (it places: {})",
+                     what, mapping.variable, mapping.name, supported_grid_mappings());
+  }
+  const Parameters p(mapping, what);
+  if (name == "latitude_longitude") {
+    check_degree_axes(x, y, mapping, what);
+    p.figure();  // validates the attributes; the axes are used as they are
+    return "";
+  }
+  if (name == "rotated_latitude_longitude") {
+    check_degree_axes(x, y, mapping, what);
+    return rotated_pole_pipeline(p);
+  }
+  const double metres = projection_axis_metres(x, y, mapping, what);
+  const std::string projection = projection_definition(name, p, mapping, what);
   std::string pipeline = "+proj=pipeline";
-  if (*mx != 1.0) pipeline += " +step +proj=unitconvert +xy_in=km +xy_out=m";
+  if (metres != 1.0) pipeline += " +step +proj=unitconvert +xy_in=km +xy_out=m";
   pipeline += " +step +inv " + projection + p.false_origin() + p.figure();
   pipeline += " +step +proj=unitconvert +xy_in=rad +xy_out=deg";
   return pipeline;

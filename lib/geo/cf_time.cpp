@@ -76,25 +76,18 @@ std::optional<double> cf_unit_seconds(std::string_view unit) {
   return std::nullopt;
 }
 
-CfTimeReference parse_cf_time_reference(const std::string& units, const std::string& calendar) {
-  const auto bad = [&](const std::string& what) {
-    return make_error(ErrorCode::kInvalidInput,
-                      "time units '{}': {} (CF time units are '<unit> since YYYY-MM-DD[ "
-                      "hh:mm:ss][ zone]')",
-                      units, what);
-  };
-  const CfCalendar cal = parse_cf_calendar(calendar);
-  if (cal == CfCalendar::kNone) {
-    throw make_error(ErrorCode::kUnsupported,
-                     "calendar 'none': the time axis has no calendar, so its values have no dates");
-  }
+namespace {
+
+Error malformed_units(const std::string& units, const std::string& what) {
+  return make_error(ErrorCode::kInvalidInput,
+                    "time units '{}': {} (CF time units are '<unit> since YYYY-MM-DD[ "
+                    "hh:mm:ss][ zone]')",
+                    units, what);
+}
+
+// Seconds per unit of `units`, whose unit ends where " since " begins (at `since`).
+double unit_seconds(const std::string& units, std::size_t since) {
   const std::string_view s(units);
-  if (s.find_first_not_of(' ') == std::string_view::npos) {
-    throw make_error(ErrorCode::kInvalidInput,
-                     "the time axis has no units, so its values have no dates");
-  }
-  const auto since = lower(units).find(" since ");
-  if (since == std::string::npos) throw bad("no reference date");
   const std::size_t unit_start = s.find_first_not_of(' ');
   const std::string_view unit = s.substr(unit_start, since - unit_start);
   if (is_month_or_year_unit(unit)) {
@@ -104,49 +97,64 @@ CfTimeReference parse_cf_time_reference(const std::string& units, const std::str
                      units);
   }
   const auto seconds = cf_unit_seconds(unit);
-  if (!seconds) throw bad(fmt::format("unknown unit '{}'", unit));
-  std::size_t pos = since + 7;
-  while (pos < s.size() && s[pos] == ' ') ++pos;
+  if (!seconds) throw malformed_units(units, fmt::format("unknown unit '{}'", unit));
+  return *seconds;
+}
 
+// The reference date YYYY-MM-DD at `pos`, which must exist in calendar `cal`.
+CfDate read_reference_date(const std::string& units, std::size_t& pos, CfCalendar cal) {
+  const std::string_view s(units);
   double year = 0, month = 0, day = 0;
   const bool negative_year = expect_char(s, pos, '-');
   if (!read_number(s, pos, year) || !expect_char(s, pos, '-') || !read_number(s, pos, month) ||
       !expect_char(s, pos, '-') || !read_number(s, pos, day)) {
-    throw bad("malformed date");
+    throw malformed_units(units, "malformed date");
   }
   if (month < 1 || month > 12 || day < 1 || day > 31 || year > 100000) {
-    throw bad("date out of range");
+    throw malformed_units(units, "date out of range");
   }
   // The standard and julian calendars count years historically: no year 0, -1 is 1 BC.
   const bool historical_years = cal == CfCalendar::kStandard || cal == CfCalendar::kJulian;
   if (historical_years && year == 0) {
-    throw bad(fmt::format("year 0 does not exist in the {} calendar (1 BC is year -1)",
-                          cf_calendar_name(cal)));
+    throw malformed_units(units,
+                          fmt::format("year 0 does not exist in the {} calendar (1 BC is year -1)",
+                                      cf_calendar_name(cal)));
   }
   const CfDate date{static_cast<std::int64_t>(negative_year ? (historical_years ? 1 - year : -year)
                                                             : year),
                     static_cast<unsigned>(month), static_cast<unsigned>(day)};
   if (!cf_date_exists(cal, date)) {
-    throw bad(fmt::format("no such date in the {} calendar", cf_calendar_name(cal)));
+    throw malformed_units(units, fmt::format("no such date in the {} calendar", cf_calendar_name(cal)));
   }
+  return date;
+}
 
+// The optional time of day hh[:mm[:ss]] at `pos`, in seconds.
+double read_time_of_day(const std::string& units, std::size_t& pos) {
+  const std::string_view s(units);
   double hour = 0, minute = 0, second = 0;
   if (pos < s.size() && (s[pos] == ' ' || s[pos] == 'T' || s[pos] == 't')) {
     std::size_t p = pos + 1;
     while (p < s.size() && s[p] == ' ') ++p;
     if (p < s.size() && std::isdigit(static_cast<unsigned char>(s[p]))) {
       pos = p;
-      if (!read_number(s, pos, hour)) throw bad("malformed time");
+      if (!read_number(s, pos, hour)) throw malformed_units(units, "malformed time");
       if (expect_char(s, pos, ':')) {
-        if (!read_number(s, pos, minute)) throw bad("malformed time");
+        if (!read_number(s, pos, minute)) throw malformed_units(units, "malformed time");
         if (expect_char(s, pos, ':') && !read_number(s, pos, second, true)) {
-          throw bad("malformed time");
+          throw malformed_units(units, "malformed time");
         }
       }
-      if (hour > 24 || minute > 59 || second >= 61) throw bad("time out of range");
+      if (hour > 24 || minute > 59 || second >= 61) throw malformed_units(units, "time out of range");
     }
   }
-  // Zone: Z, UTC/GMT, or +hh[:mm] / -hhmm; the offset is local minus UTC.
+  return hour * 3600 + minute * 60 + second;
+}
+
+// The optional zone at `pos`, which ends the units: Z, UTC/GMT, or +hh[:mm] / -hhmm.
+// Returns the offset, local minus UTC, in seconds.
+double read_zone_offset(const std::string& units, std::size_t& pos) {
+  const std::string_view s(units);
   double offset_seconds = 0;
   while (pos < s.size() && s[pos] == ' ') ++pos;
   if (pos < s.size()) {
@@ -158,21 +166,44 @@ CfTimeReference parse_cf_time_reference(const std::string& units, const std::str
       ++pos;
       const std::size_t digits_start = pos;
       double hh = 0, mm = 0;
-      if (!read_number(s, pos, hh)) throw bad("malformed zone");
+      if (!read_number(s, pos, hh)) throw malformed_units(units, "malformed zone");
       if (pos - digits_start == 4) {  // hhmm
         mm = std::fmod(hh, 100);
         hh = std::floor(hh / 100);
       } else if (expect_char(s, pos, ':') && !read_number(s, pos, mm)) {
-        throw bad("malformed zone");
+        throw malformed_units(units, "malformed zone");
       }
-      if (hh > 14 || mm > 59) throw bad("zone out of range");
+      if (hh > 14 || mm > 59) throw malformed_units(units, "zone out of range");
       offset_seconds = sign * (hh * 3600 + mm * 60);
     }
     while (pos < s.size() && s[pos] == ' ') ++pos;
-    if (pos != s.size()) throw bad("unexpected text after the date");
+    if (pos != s.size()) throw malformed_units(units, "unexpected text after the date");
   }
-  return CfTimeReference{cal, *seconds, cf_day_number(cal, date),
-                         hour * 3600 + minute * 60 + second - offset_seconds};
+  return offset_seconds;
+}
+
+}  // namespace
+
+CfTimeReference parse_cf_time_reference(const std::string& units, const std::string& calendar) {
+  const CfCalendar cal = parse_cf_calendar(calendar);
+  if (cal == CfCalendar::kNone) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "calendar 'none': the time axis has no calendar, so its values have no dates");
+  }
+  const std::string_view s(units);
+  if (s.find_first_not_of(' ') == std::string_view::npos) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "the time axis has no units, so its values have no dates");
+  }
+  const auto since = lower(units).find(" since ");
+  if (since == std::string::npos) throw malformed_units(units, "no reference date");
+  const double seconds = unit_seconds(units, since);
+  std::size_t pos = since + 7;
+  while (pos < s.size() && s[pos] == ' ') ++pos;
+  const CfDate date = read_reference_date(units, pos, cal);
+  const double time_of_day = read_time_of_day(units, pos);
+  const double offset_seconds = read_zone_offset(units, pos);
+  return CfTimeReference{cal, seconds, cf_day_number(cal, date), time_of_day - offset_seconds};
 }
 
 std::string cf_date_text(const CfTimeReference& reference, double value) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Where the sun is (issue 8, "Sun"): the low-precision solar coordinates of J. Meeus,
+// Where the sun is, for the viewer's lighting: the low-precision solar coordinates of J. Meeus,
 // "Astronomical Algorithms", 2nd ed. (1998), chapter 25 (the algorithm of NOAA's solar
 // calculator), with the Greenwich mean sidereal time of chapter 12 (eq. 12.4).
 //

@@ -100,6 +100,84 @@ bool has_classic_magic(std::span<const std::byte> bytes) {
          (version == 1 || version == 2 || version == 5);
 }
 
+// The dimension list: each dimension's length (0 for the record dimension).
+std::vector<std::uint64_t> read_dimensions(Cursor& c) {
+  std::vector<std::uint64_t> dims;
+  const std::uint64_t tag = c.u32();
+  const std::uint64_t count = c.non_neg();
+  if (tag == 0 && count == 0) return dims;
+  if (tag != 0x0A) throw Invalid{};
+  for (std::uint64_t i = 0; i < count; ++i) {
+    c.skip_name();
+    dims.push_back(c.non_neg());
+  }
+  return dims;
+}
+
+struct Var {
+  std::uint64_t begin = 0, len = 0;  // len: one record for record variables
+  bool record = false;
+};
+
+// The variable list: where each variable's data begins and how long it is.
+std::vector<Var> read_variables(Cursor& c, const std::vector<std::uint64_t>& dims, int version) {
+  std::vector<Var> vars;
+  const std::uint64_t tag = c.u32();
+  const std::uint64_t count = c.non_neg();
+  if (tag == 0 && count == 0) return vars;
+  if (tag != 0x0B) throw Invalid{};
+  for (std::uint64_t i = 0; i < count; ++i) {
+    c.skip_name();
+    const std::uint64_t ndims = c.non_neg();
+    Var v;
+    std::uint64_t product = 1;
+    for (std::uint64_t d = 0; d < ndims; ++d) {
+      const std::uint64_t dimid = c.non_neg();
+      if (dimid >= dims.size()) throw Invalid{};
+      if (dims[dimid] == 0) {
+        if (d != 0) throw Invalid{};
+        v.record = true;
+      } else {
+        product = mul(product, dims[dimid]);
+      }
+    }
+    skip_attributes(c, version);
+    const std::uint64_t type = c.u32();
+    c.non_neg();  // vsize: recomputed below (it saturates for huge variables)
+    v.begin = c.offset();
+    v.len = mul(product, external_type_size(type, version));
+    vars.push_back(v);
+  }
+  return vars;
+}
+
+// The end of the last variable's data: the bytes a complete file holds.
+std::uint64_t data_end(const std::vector<Var>& vars, std::uint64_t numrecs, bool streaming) {
+  std::uint64_t recsize = 0;
+  std::size_t nrec = 0;
+  for (const Var& v : vars) {
+    if (!v.record) continue;
+    recsize = add(recsize, pad4(v.len));
+    ++nrec;
+  }
+  if (nrec == 1) {
+    for (const Var& v : vars) {
+      if (v.record) recsize = v.len;  // a lone record variable is not padded
+    }
+  }
+  std::uint64_t required = 0;
+  for (const Var& v : vars) {
+    std::uint64_t end = v.begin;
+    if (!v.record) {
+      end = add(end, v.len);
+    } else if (!streaming && numrecs > 0) {
+      end = add(add(end, mul(numrecs - 1, recsize)), v.len);
+    }
+    required = std::max(required, end);
+  }
+  return required;
+}
+
 Parse parse(std::span<const std::byte> bytes, std::uint64_t& required) {
   if (bytes.size() < 4) return Parse::kNeedMore;
   if (bytes[0] != std::byte{'C'} || bytes[1] != std::byte{'D'} || bytes[2] != std::byte{'F'}) {
@@ -111,76 +189,10 @@ Parse parse(std::span<const std::byte> bytes, std::uint64_t& required) {
     Cursor c(bytes.subspan(4), version);
     const std::uint64_t numrecs = c.non_neg();
     const bool streaming = version == 5 ? numrecs == kMax : numrecs == 0xFFFFFFFFu;
-
-    std::vector<std::uint64_t> dims;
-    {
-      const std::uint64_t tag = c.u32();
-      const std::uint64_t count = c.non_neg();
-      if (!(tag == 0 && count == 0)) {
-        if (tag != 0x0A) throw Invalid{};
-        for (std::uint64_t i = 0; i < count; ++i) {
-          c.skip_name();
-          dims.push_back(c.non_neg());
-        }
-      }
-    }
+    const std::vector<std::uint64_t> dims = read_dimensions(c);
     skip_attributes(c, version);
-
-    struct Var {
-      std::uint64_t begin = 0, len = 0;  // len: one record for record variables
-      bool record = false;
-    };
-    std::vector<Var> vars;
-    const std::uint64_t tag = c.u32();
-    const std::uint64_t count = c.non_neg();
-    if (!(tag == 0 && count == 0)) {
-      if (tag != 0x0B) throw Invalid{};
-      for (std::uint64_t i = 0; i < count; ++i) {
-        c.skip_name();
-        const std::uint64_t ndims = c.non_neg();
-        Var v;
-        std::uint64_t product = 1;
-        for (std::uint64_t d = 0; d < ndims; ++d) {
-          const std::uint64_t dimid = c.non_neg();
-          if (dimid >= dims.size()) throw Invalid{};
-          if (dims[dimid] == 0) {
-            if (d != 0) throw Invalid{};
-            v.record = true;
-          } else {
-            product = mul(product, dims[dimid]);
-          }
-        }
-        skip_attributes(c, version);
-        const std::uint64_t type = c.u32();
-        c.non_neg();  // vsize: recomputed below (it saturates for huge variables)
-        v.begin = c.offset();
-        v.len = mul(product, external_type_size(type, version));
-        vars.push_back(v);
-      }
-    }
-
-    std::uint64_t recsize = 0;
-    std::size_t nrec = 0;
-    for (const Var& v : vars) {
-      if (!v.record) continue;
-      recsize = add(recsize, pad4(v.len));
-      ++nrec;
-    }
-    if (nrec == 1) {
-      for (const Var& v : vars) {
-        if (v.record) recsize = v.len;  // a lone record variable is not padded
-      }
-    }
-    required = 0;
-    for (const Var& v : vars) {
-      std::uint64_t end = v.begin;
-      if (!v.record) {
-        end = add(end, v.len);
-      } else if (!streaming && numrecs > 0) {
-        end = add(add(end, mul(numrecs - 1, recsize)), v.len);
-      }
-      required = std::max(required, end);
-    }
+    const std::vector<Var> vars = read_variables(c, dims, version);
+    required = data_end(vars, numrecs, streaming);
     return Parse::kOk;
   } catch (const NeedMore&) {
     return Parse::kNeedMore;

@@ -115,6 +115,32 @@ struct LonLatVariable {
   std::vector<int> dimids;
 };
 
+constexpr std::string_view k3dOnly =
+    "only 3D variables (vertical, lat, lon), optionally with a leading time dimension, are "
+    "supported";
+
+// The lon/lat variables that could place a variable: those its `coordinates` attribute
+// names (else every one in scope), and the names it gives that the file does not hold.
+struct LonLatCandidates {
+  std::vector<LonLatVariable> variables;
+  std::vector<std::string> absent;
+};
+
+// A data variable with its dimensions and each dimension's coordinate variable, if any.
+struct VariableDimensions {
+  int grpid = 0;
+  int varid = 0;
+  std::string name;
+  std::vector<int> dimids;
+  std::vector<std::optional<VariableRef>> coords;
+};
+
+// Why a variable is not converted, and which class that puts it in.
+struct Rejection {
+  VariableClass klass;
+  Error error;
+};
+
 class FileScanner {
  public:
   FileScanner(std::string display, int ncid) : file_(std::move(display)), ncid_(ncid) {
@@ -144,9 +170,19 @@ class FileScanner {
  private:
   ScannedVariable scan_variable(int grpid, int varid, const std::string& prefix);
   const Coordinate& coordinate(const VariableRef& ref, bool unlimited);
-  std::optional<Error> detect_unstructured(int grpid, int varid, const std::string& name,
-                                           const std::vector<int>& dimids,
-                                           const std::vector<std::optional<VariableRef>>& coords);
+  std::optional<Error> detect_unstructured(const VariableDimensions& var);
+  LonLatCandidates lonlat_candidates(int grpid, int varid);
+  std::optional<Error> unstructured_grid_error(const VariableDimensions& var,
+                                               const std::vector<LonLatVariable>& candidates);
+  std::optional<Error> absent_curvilinear_coordinates_error(const VariableDimensions& var,
+                                                            const std::vector<std::string>& absent);
+  std::optional<Error> curvilinear_grid_error(const VariableDimensions& var,
+                                              const std::vector<LonLatVariable>& candidates);
+  std::vector<DimensionRole> dimension_roles(const VariableDimensions& var);
+  std::optional<Rejection> check_dimension_roles(const ScannedVariable& sv,
+                                                 const std::vector<DimensionRole>& roles);
+  Axis coordinate_axis(const VariableRef& ref, AxisKind kind);
+  void read_axes(ScannedVariable& sv, const VariableDimensions& var);
   const std::vector<LonLatVariable>& lonlat_variables(int grpid);
   std::optional<VariableRef> paired_coordinate(int grpid, int dimid);
   std::optional<LonLatVariable> lonlat_variable(int grpid, const std::string& name);
@@ -250,78 +286,85 @@ std::optional<VariableRef> FileScanner::paired_coordinate(int grpid, int dimid) 
   return paired_.emplace(key, pair).first->second;
 }
 
-std::optional<Error> FileScanner::detect_unstructured(
-    int grpid, int varid, const std::string& name, const std::vector<int>& dimids,
-    const std::vector<std::optional<VariableRef>>& coords) {
-  auto index_of = [&](int dimid) -> std::optional<std::size_t> {
-    for (std::size_t i = 0; i < dimids.size(); ++i) {
-      if (dimids[i] == dimid) return i;
-    }
-    return std::nullopt;
-  };
-  // A dimension is horizontally unresolved when it has no coordinate variable, or one
-  // that is not a longitude or latitude (projection x/y in metres, for instance).
-  auto unresolved = [&](std::size_t i) {
-    if (!coords[i]) return true;
-    const auto attrs = read_coordinate_attributes(coords[i]->grpid, coords[i]->varid);
-    const std::string sn = lower(attrs.standard_name);
-    const std::string axis = lower(attrs.axis);
-    return !(looks_like_longitude(attrs) || looks_like_latitude(attrs) ||
-             sn == "grid_longitude" || sn == "grid_latitude" ||
-             sn == "projection_x_coordinate" || sn == "projection_y_coordinate" || axis == "x" ||
-             axis == "y");
-  };
+// A dimension is horizontally unresolved when it has no coordinate variable, or one
+// that is not a longitude or latitude (projection x/y in metres, for instance).
+bool horizontally_unresolved(const std::optional<VariableRef>& coord) {
+  if (!coord) return true;
+  const auto attrs = read_coordinate_attributes(coord->grpid, coord->varid);
+  const std::string sn = lower(attrs.standard_name);
+  const std::string axis = lower(attrs.axis);
+  return !(looks_like_longitude(attrs) || looks_like_latitude(attrs) || sn == "grid_longitude" ||
+           sn == "grid_latitude" || sn == "projection_x_coordinate" ||
+           sn == "projection_y_coordinate" || axis == "x" || axis == "y");
+}
 
-  std::vector<LonLatVariable> candidates;
-  std::vector<std::string> absent;  // named by `coordinates` but not in the file
+std::optional<std::size_t> index_of(const std::vector<int>& dimids, int dimid) {
+  for (std::size_t i = 0; i < dimids.size(); ++i) {
+    if (dimids[i] == dimid) return i;
+  }
+  return std::nullopt;
+}
+
+LonLatCandidates FileScanner::lonlat_candidates(int grpid, int varid) {
+  LonLatCandidates out;
   for (const auto& word : split_words(text_attribute_or_empty(grpid, varid, "coordinates"))) {
     if (auto v = lonlat_variable(grpid, word)) {
-      candidates.push_back(*v);
+      out.variables.push_back(*v);
     } else if (!variable_in_scope(grpid, word)) {
-      absent.push_back(word);
+      out.absent.push_back(word);
     }
   }
-  if (candidates.empty()) {
+  if (out.variables.empty()) {
     for (std::optional<int> g = grpid; g; g = parent_group(*g)) {
-      for (const auto& v : lonlat_variables(*g)) candidates.push_back(v);
+      for (const auto& v : lonlat_variables(*g)) out.variables.push_back(v);
     }
   }
+  return out;
+}
 
-  // Unstructured: 1D lon/lat variables over a dimension without coordinate variable.
-  for (std::size_t i = 0; i < dimids.size(); ++i) {
-    if (coords[i]) continue;
+// Unstructured: 1D lon/lat variables over a dimension without coordinate variable.
+std::optional<Error> FileScanner::unstructured_grid_error(
+    const VariableDimensions& var, const std::vector<LonLatVariable>& candidates) {
+  for (std::size_t i = 0; i < var.dimids.size(); ++i) {
+    if (var.coords[i]) continue;
     std::vector<std::string> names;
     for (const auto& c : candidates) {
-      if (c.dimids.size() == 1 && c.dimids[0] == dimids[i]) names.push_back(c.name);
+      if (c.dimids.size() == 1 && c.dimids[0] == var.dimids[i]) names.push_back(c.name);
     }
-    const std::string dim = dimension_name(grpid, dimids[i]);
+    const std::string dim = dimension_name(var.grpid, var.dimids[i]);
     // Several 1-D coordinates over a dimension of a rectangular grid (their values
     // monotonic, as cell centres of an unstructured grid never are): which one is the
     // dimension's coordinate is not for the scanner to guess.
     if (names.size() > 1 && std::all_of(names.begin(), names.end(), [&](const std::string& n) {
-          return monotonic_in_scope(grpid, n);
+          return monotonic_in_scope(var.grpid, n);
         })) {
       return make_error(ErrorCode::kInvalidInput,
                         "{}: variable '{}' dimension '{}' has no coordinate variable, and {} 1-D "
                         "variables over it could be one ({}); rename the one that is (e.g. "
                         "ncrename -v {},{})",
-                        file_, name, dim, names.size(), join(names, ", "), names.front(), dim);
+                        file_, var.name, dim, names.size(), join(names, ", "), names.front(), dim);
     }
     if (!names.empty() || is_unstructured_dimension_name(dim)) {
       const std::string coordinates =
           names.empty() ? std::string() : ", coordinates " + join(names, " ");
       return make_error(ErrorCode::kUnsupported,
                         "{}: variable '{}' is on an unstructured grid (dimension '{}'{}); {}",
-                        file_, name, dim, coordinates, kRemapAdvice);
+                        file_, var.name, dim, coordinates, kRemapAdvice);
     }
   }
-  // Horizontal dimensions without coordinate variables whose positions the `coordinates`
-  // attribute promises in variables the file does not hold (NCL's GRIB conversions name
-  // 2-D gridlat_N/gridlon_N that may have been left out): a curvilinear grid without its
-  // coordinates.
+  return std::nullopt;
+}
+
+// Horizontal dimensions without coordinate variables whose positions the `coordinates`
+// attribute promises in variables the file does not hold (NCL's GRIB conversions name
+// 2-D gridlat_N/gridlon_N that may have been left out): a curvilinear grid without its
+// coordinates.
+std::optional<Error> FileScanner::absent_curvilinear_coordinates_error(
+    const VariableDimensions& var, const std::vector<std::string>& absent) {
   std::vector<std::string> bare;
-  for (std::size_t i = 0; i < dimids.size(); ++i) {
-    if (!coords[i]) bare.push_back(fmt::format("'{}'", dimension_name(grpid, dimids[i])));
+  for (std::size_t i = 0; i < var.dimids.size(); ++i) {
+    if (var.coords[i]) continue;
+    bare.push_back(fmt::format("'{}'", dimension_name(var.grpid, var.dimids[i])));
   }
   const bool names_lonlat = std::any_of(absent.begin(), absent.end(), [](const std::string& w) {
     const std::string l = lower(w);
@@ -332,23 +375,28 @@ std::optional<Error> FileScanner::detect_unstructured(
                       "{}: variable '{}' is on a curvilinear grid: dimensions {} have no "
                       "coordinate variables, and its coordinates attribute names {}, which the "
                       "file does not contain; {}",
-                      file_, name, join(bare, ", "), join(absent, " "), kCurvilinearAdvice);
+                      file_, var.name, join(bare, ", "), join(absent, " "), kCurvilinearAdvice);
   }
-  // Curvilinear: 2D lon/lat variables over dimensions of this variable that are not
-  // themselves longitude and latitude.
+  return std::nullopt;
+}
+
+// Curvilinear: 2D lon/lat variables over dimensions of this variable that are not
+// themselves longitude and latitude.
+std::optional<Error> FileScanner::curvilinear_grid_error(
+    const VariableDimensions& var, const std::vector<LonLatVariable>& candidates) {
   for (const auto& c : candidates) {
     if (c.dimids.size() < 2) continue;
     bool all_ours = true, any_unresolved = false;
     std::vector<std::string> dim_names;
     for (int d : c.dimids) {
-      const auto i = index_of(d);
+      const auto i = index_of(var.dimids, d);
       if (!i) {
         all_ours = false;
         break;
       }
-      any_unresolved = any_unresolved || unresolved(*i);
-      dim_names.push_back(fmt::format("'{}'", dimension_name(grpid, d)));  // not "'" + s:
-                                                                           // GCC 12 -O3 PR 105651
+      any_unresolved = any_unresolved || horizontally_unresolved(var.coords[*i]);
+      // Not "'" + s: GCC 12 -O3 warns falsely (PR 105651).
+      dim_names.push_back(fmt::format("'{}'", dimension_name(var.grpid, d)));
     }
     if (!all_ours || !any_unresolved) continue;
     std::vector<std::string> names;
@@ -358,9 +406,134 @@ std::optional<Error> FileScanner::detect_unstructured(
     return make_error(ErrorCode::kUnsupported,
                       "{}: variable '{}' is on a curvilinear grid (dimensions {}, 2D coordinates "
                       "{}); {}",
-                      file_, name, join(dim_names, ", "), join(names, " "), kCurvilinearAdvice);
+                      file_, var.name, join(dim_names, ", "), join(names, " "), kCurvilinearAdvice);
   }
   return std::nullopt;
+}
+
+std::optional<Error> FileScanner::detect_unstructured(const VariableDimensions& var) {
+  const LonLatCandidates candidates = lonlat_candidates(var.grpid, var.varid);
+  if (auto e = unstructured_grid_error(var, candidates.variables)) return e;
+  if (auto e = absent_curvilinear_coordinates_error(var, candidates.absent)) return e;
+  return curvilinear_grid_error(var, candidates.variables);
+}
+
+// Roles from metadata, then the COARDS position for what metadata leaves open.
+std::vector<DimensionRole> FileScanner::dimension_roles(const VariableDimensions& var) {
+  using R = DimensionRole;
+  std::vector<R> roles;
+  for (std::size_t i = 0; i < var.dimids.size(); ++i) {
+    roles.push_back(
+        coordinate(*var.coords[i], is_unlimited_dimension(var.grpid, var.dimids[i])).role);
+  }
+  const bool has_time_role = std::count(roles.begin(), roles.end(), R::kTime) > 0;
+  const std::vector<R> positional = var.dimids.size() == 4 ? std::vector<R>{R::kTime, R::kVertical, R::kLatitude, R::kLongitude}
+                                    : has_time_role         ? std::vector<R>{R::kTime, R::kLatitude, R::kLongitude}
+                                                            : std::vector<R>{R::kVertical, R::kLatitude, R::kLongitude};
+  for (std::size_t i = 0; i < roles.size(); ++i) {
+    if (roles[i] != R::kUnknown) continue;
+    if (std::count(roles.begin(), roles.end(), positional[i]) == 0) roles[i] = positional[i];
+  }
+  return roles;
+}
+
+// Every role known, none twice, longitude, latitude and vertical present, in
+// (time, vertical, lat, lon) order.
+std::optional<Rejection> FileScanner::check_dimension_roles(
+    const ScannedVariable& sv, const std::vector<DimensionRole>& roles) {
+  using R = DimensionRole;
+  const std::string dims_text = fmt::format("({})", join(sv.dimensions, ", "));
+  std::vector<std::string> role_names;
+  for (R r : roles) role_names.emplace_back(dimension_role_name(r));
+  const std::string roles_text = fmt::format("({})", join(role_names, ", "));
+  for (std::size_t i = 0; i < roles.size(); ++i) {
+    if (roles[i] == R::kUnknown) {
+      return Rejection{VariableClass::kInvalid,
+                       make_error(ErrorCode::kUnsupported,
+                                  "{}: variable '{}': cannot tell what dimension '{}' is: its "
+                                  "coordinate variable has no axis, standard_name, units or "
+                                  "positive attribute that identifies it",
+                                  file_, sv.name, sv.dimensions[i])};
+    }
+  }
+  for (R r : {R::kTime, R::kVertical, R::kLatitude, R::kLongitude}) {
+    if (std::count(roles.begin(), roles.end(), r) > 1) {
+      return Rejection{VariableClass::kInvalid,
+                       make_error(ErrorCode::kUnsupported,
+                                  "{}: variable '{}' has dimensions {} = {}: more than one {} "
+                                  "dimension",
+                                  file_, sv.name, dims_text, roles_text, dimension_role_name(r))};
+    }
+  }
+  for (R r : {R::kLongitude, R::kLatitude, R::kVertical}) {
+    if (std::count(roles.begin(), roles.end(), r) == 0) {
+      return Rejection{VariableClass::kNotGridded,
+                       make_error(ErrorCode::kUnsupported,
+                                  "{}: variable '{}' has no {} dimension (dimensions {} = {}); {}",
+                                  file_, sv.name, dimension_role_name(r), dims_text, roles_text,
+                                  k3dOnly)};
+    }
+  }
+  const std::vector<R> expected =
+      roles.size() == 4 ? std::vector<R>{R::kTime, R::kVertical, R::kLatitude, R::kLongitude}
+                        : std::vector<R>{R::kVertical, R::kLatitude, R::kLongitude};
+  if (roles == expected) return std::nullopt;
+  std::vector<std::string> reordered;
+  for (R want : expected) {
+    for (std::size_t i = 0; i < roles.size(); ++i) {
+      if (roles[i] == want) reordered.push_back(sv.dimensions[i]);
+    }
+  }
+  return Rejection{VariableClass::kInvalid,
+                   make_error(ErrorCode::kUnsupported,
+                              "{}: variable '{}' has dimensions {} = {}; the order must be (time, "
+                              "vertical, lat, lon) as COARDS/CF recommend — reorder it first, "
+                              "e.g. with ncpdq -a {} in.nc out.nc",
+                              file_, sv.name, dims_text, roles_text, join(reordered, ","))};
+}
+
+Axis FileScanner::coordinate_axis(const VariableRef& ref, AxisKind kind) {
+  const Coordinate& c = coordinate(ref, false);
+  Axis a;
+  a.name = c.attrs.name;
+  a.kind = kind == AxisKind::kOther ? detect_vertical_kind(c.attrs) : kind;
+  a.units = c.attrs.units;
+  a.standard_name = c.attrs.standard_name;
+  a.long_name = c.attrs.long_name;
+  a.positive = lower(c.attrs.positive);
+  a.values = c.values;
+  return a;
+}
+
+// The axes of a variable whose dimensions are (time,) vertical, lat, lon; throws Error
+// when they do not make a grid.
+void FileScanner::read_axes(ScannedVariable& sv, const VariableDimensions& var) {
+  const std::size_t first_spatial = var.dimids.size() - 3;
+  sv.z = coordinate_axis(*var.coords[first_spatial], AxisKind::kOther);
+  sv.y = coordinate_axis(*var.coords[first_spatial + 1], AxisKind::kLatitude);
+  sv.x = coordinate_axis(*var.coords[first_spatial + 2], AxisKind::kLongitude);
+  const std::string what = fmt::format("{}: variable '{}'", file_, sv.name);
+  // Longitude and latitude, or projection coordinates placed by a grid mapping; a
+  // wrapped longitude axis is made continuous, one round the Earth periodic.
+  HorizontalAxes horizontal =
+      place_horizontal_axes(sv.x, sv.y, read_grid_mapping(var.grpid, var.varid, what), what);
+  for (std::string& note : horizontal.notes) {
+    // Once per file and axis, not once per variable: named by the file alone.
+    if (note.compare(0, what.size(), what) == 0) note.replace(0, what.size(), file_);
+    if (logged_.insert(note).second) spdlog::info("{}", note);
+  }
+  sv.grid_mapping = std::move(horizontal.mapping);
+  sv.source_nx = horizontal.source_nx;
+  for (const Axis* a : {&sv.x, &sv.y, &sv.z}) check_axis_values(*a, file_);
+  if (var.dimids.size() == 4) {
+    const Coordinate& c = coordinate(*var.coords[0], false);
+    TimeCoordinate t{c.attrs.name, c.attrs.units, c.calendar, c.values};
+    Axis as_axis;
+    as_axis.name = t.name;
+    as_axis.values = t.values;
+    check_axis_values(as_axis, file_);
+    sv.time = std::move(t);
+  }
 }
 
 ScannedVariable FileScanner::scan_variable(int grpid, int varid, const std::string& prefix) {
@@ -368,21 +541,16 @@ ScannedVariable FileScanner::scan_variable(int grpid, int varid, const std::stri
   const std::string short_name = variable_name(grpid, varid);
   sv.name = prefix + short_name;
   const int type = variable_type(grpid, varid);
-  const std::vector<int> dimids = variable_dimids(grpid, varid);
-  for (int d : dimids) sv.dimensions.push_back(dimension_name(grpid, d));
-  const bool is_coordinate = dimids.size() == 1 && sv.dimensions[0] == short_name;
+  VariableDimensions var{grpid, varid, sv.name, variable_dimids(grpid, varid), {}};
+  for (int d : var.dimids) sv.dimensions.push_back(dimension_name(grpid, d));
+  const bool is_coordinate = var.dimids.size() == 1 && sv.dimensions[0] == short_name;
   sv.auxiliary = is_coordinate || auxiliary_.count(short_name) > 0;
-  const std::string dims_text = fmt::format("({})", join(sv.dimensions, ", "));
 
   auto fail = [&](VariableClass klass, Error error) {
     sv.klass = klass;
     sv.problem = std::move(error);
     return std::move(sv);
   };
-  constexpr std::string_view k3dOnly =
-      "only 3D variables (vertical, lat, lon), optionally with a leading time dimension, are "
-      "supported";
-
   if (is_coordinate) {
     return fail(VariableClass::kNotGridded,
                 make_error(ErrorCode::kUnsupported,
@@ -396,129 +564,29 @@ ScannedVariable FileScanner::scan_variable(int grpid, int varid, const std::stri
                            file_, sv.name, nc_type_name(type)));
   }
 
-  std::vector<std::optional<VariableRef>> coords;
   std::vector<std::string> missing;
-  for (std::size_t i = 0; i < dimids.size(); ++i) {
-    coords.push_back(find_coordinate_variable(grpid, dimids[i]));
-    if (!coords.back()) coords.back() = paired_coordinate(grpid, dimids[i]);
-    if (!coords.back()) missing.push_back(sv.dimensions[i]);
+  for (std::size_t i = 0; i < var.dimids.size(); ++i) {
+    var.coords.push_back(find_coordinate_variable(grpid, var.dimids[i]));
+    if (!var.coords.back()) var.coords.back() = paired_coordinate(grpid, var.dimids[i]);
+    if (!var.coords.back()) missing.push_back(sv.dimensions[i]);
   }
-  if (auto e = detect_unstructured(grpid, varid, sv.name, dimids, coords)) {
-    return fail(VariableClass::kUnstructured, std::move(*e));
-  }
+  if (auto e = detect_unstructured(var)) return fail(VariableClass::kUnstructured, std::move(*e));
   if (!missing.empty()) {
-    return fail(dimids.size() >= 3 ? VariableClass::kInvalid : VariableClass::kNotGridded,
+    return fail(var.dimids.size() >= 3 ? VariableClass::kInvalid : VariableClass::kNotGridded,
                 make_error(ErrorCode::kInvalidInput,
                            "{}: variable '{}' dimension '{}' has no coordinate variable", file_,
                            sv.name, missing.front()));
   }
-  if (dimids.size() < 3 || dimids.size() > 4) {
+  if (var.dimids.size() < 3 || var.dimids.size() > 4) {
     return fail(VariableClass::kNotGridded,
-                make_error(ErrorCode::kUnsupported, "{}: variable '{}' has dimensions {}; {}",
-                           file_, sv.name, dims_text, k3dOnly));
+                make_error(ErrorCode::kUnsupported, "{}: variable '{}' has dimensions ({}); {}",
+                           file_, sv.name, join(sv.dimensions, ", "), k3dOnly));
   }
-
-  // Roles from metadata, then the COARDS position for what metadata leaves open.
-  std::vector<DimensionRole> roles;
-  for (std::size_t i = 0; i < dimids.size(); ++i) {
-    roles.push_back(coordinate(*coords[i], is_unlimited_dimension(grpid, dimids[i])).role);
+  if (auto r = check_dimension_roles(sv, dimension_roles(var))) {
+    return fail(r->klass, std::move(r->error));
   }
-  using R = DimensionRole;
-  const bool has_time_role = std::count(roles.begin(), roles.end(), R::kTime) > 0;
-  const std::vector<R> positional = dimids.size() == 4 ? std::vector<R>{R::kTime, R::kVertical, R::kLatitude, R::kLongitude}
-                                    : has_time_role     ? std::vector<R>{R::kTime, R::kLatitude, R::kLongitude}
-                                                        : std::vector<R>{R::kVertical, R::kLatitude, R::kLongitude};
-  for (std::size_t i = 0; i < roles.size(); ++i) {
-    if (roles[i] != R::kUnknown) continue;
-    if (std::count(roles.begin(), roles.end(), positional[i]) == 0) roles[i] = positional[i];
-  }
-  std::vector<std::string> role_names;
-  for (R r : roles) role_names.emplace_back(dimension_role_name(r));
-  const std::string roles_text = fmt::format("({})", join(role_names, ", "));
-  for (std::size_t i = 0; i < roles.size(); ++i) {
-    if (roles[i] == R::kUnknown) {
-      return fail(VariableClass::kInvalid,
-                  make_error(ErrorCode::kUnsupported,
-                             "{}: variable '{}': cannot tell what dimension '{}' is: its "
-                             "coordinate variable has no axis, standard_name, units or positive "
-                             "attribute that identifies it",
-                             file_, sv.name, sv.dimensions[i]));
-    }
-  }
-  for (R r : {R::kTime, R::kVertical, R::kLatitude, R::kLongitude}) {
-    if (std::count(roles.begin(), roles.end(), r) > 1) {
-      return fail(VariableClass::kInvalid,
-                  make_error(ErrorCode::kUnsupported,
-                             "{}: variable '{}' has dimensions {} = {}: more than one {} dimension",
-                             file_, sv.name, dims_text, roles_text, dimension_role_name(r)));
-    }
-  }
-  for (R r : {R::kLongitude, R::kLatitude, R::kVertical}) {
-    if (std::count(roles.begin(), roles.end(), r) == 0) {
-      return fail(VariableClass::kNotGridded,
-                  make_error(ErrorCode::kUnsupported,
-                             "{}: variable '{}' has no {} dimension (dimensions {} = {}); {}",
-                             file_, sv.name, dimension_role_name(r), dims_text, roles_text,
-                             k3dOnly));
-    }
-  }
-  const std::vector<R> expected =
-      roles.size() == 4 ? std::vector<R>{R::kTime, R::kVertical, R::kLatitude, R::kLongitude}
-                        : std::vector<R>{R::kVertical, R::kLatitude, R::kLongitude};
-  if (roles != expected) {
-    std::vector<std::string> reordered;
-    for (R want : expected) {
-      for (std::size_t i = 0; i < roles.size(); ++i) {
-        if (roles[i] == want) reordered.push_back(sv.dimensions[i]);
-      }
-    }
-    return fail(VariableClass::kInvalid,
-                make_error(ErrorCode::kUnsupported,
-                           "{}: variable '{}' has dimensions {} = {}; the order must be (time, "
-                           "vertical, lat, lon) as COARDS/CF recommend — reorder it first, e.g. "
-                           "with ncpdq -a {} in.nc out.nc",
-                           file_, sv.name, dims_text, roles_text, join(reordered, ",")));
-  }
-
-  const std::size_t first_spatial = roles.size() - 3;
-  auto make_axis = [&](std::size_t i, AxisKind kind) {
-    const Coordinate& c = coordinate(*coords[i], false);
-    Axis a;
-    a.name = c.attrs.name;
-    a.kind = kind == AxisKind::kOther ? detect_vertical_kind(c.attrs) : kind;
-    a.units = c.attrs.units;
-    a.standard_name = c.attrs.standard_name;
-    a.long_name = c.attrs.long_name;
-    a.positive = lower(c.attrs.positive);
-    a.values = c.values;
-    return a;
-  };
   try {
-    sv.z = make_axis(first_spatial, AxisKind::kOther);
-    sv.y = make_axis(first_spatial + 1, AxisKind::kLatitude);
-    sv.x = make_axis(first_spatial + 2, AxisKind::kLongitude);
-    const std::string what = fmt::format("{}: variable '{}'", file_, sv.name);
-    // Longitude and latitude, or projection coordinates placed by a grid mapping; a
-    // wrapped longitude axis is made continuous, one round the Earth periodic.
-    HorizontalAxes horizontal =
-        place_horizontal_axes(sv.x, sv.y, read_grid_mapping(grpid, varid, what), what);
-    for (std::string& note : horizontal.notes) {
-      // Once per file and axis, not once per variable: named by the file alone.
-      if (note.compare(0, what.size(), what) == 0) note.replace(0, what.size(), file_);
-      if (logged_.insert(note).second) spdlog::info("{}", note);
-    }
-    sv.grid_mapping = std::move(horizontal.mapping);
-    sv.source_nx = horizontal.source_nx;
-    for (const Axis* a : {&sv.x, &sv.y, &sv.z}) check_axis_values(*a, file_);
-    if (roles.size() == 4) {
-      const Coordinate& c = coordinate(*coords[0], false);
-      TimeCoordinate t{c.attrs.name, c.attrs.units, c.calendar, c.values};
-      Axis as_axis;
-      as_axis.name = t.name;
-      as_axis.values = t.values;
-      check_axis_values(as_axis, file_);
-      sv.time = std::move(t);
-    }
+    read_axes(sv, var);
   } catch (const Error& e) {
     return fail(VariableClass::kInvalid, e);
   }

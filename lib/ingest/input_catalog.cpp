@@ -94,6 +94,212 @@ void check_same_attributes(const ScannedVariable& got, const std::string& got_fi
   }
 }
 
+// The scanned files with every occurrence of each selected variable.
+struct SelectedInputs {
+  std::vector<ScannedFile> files;
+  std::vector<std::string> names;
+  std::vector<std::vector<Occurrence>> occurrences;  // per name, in file order
+
+  const std::string& path(std::size_t f) const { return files[f].source.path; }
+  const Occurrence& reference() const { return occurrences[0][0]; }
+};
+
+std::vector<ScannedFile> scan_distinct_files(const std::vector<std::filesystem::path>& inputs) {
+  std::vector<ScannedFile> files;
+  std::map<std::string, std::size_t> seen_paths;
+  for (const auto& path : inputs) {
+    files.push_back(scan_file(path));
+    const std::string& p = files.back().source.path;
+    if (!seen_paths.emplace(p, files.size() - 1).second) {
+      throw make_error(ErrorCode::kInvalidArgument, "{}: input file given twice", p);
+    }
+  }
+  return files;
+}
+
+// Every occurrence of a selected variable must be usable.
+std::vector<std::vector<Occurrence>> usable_occurrences(const std::vector<ScannedFile>& files,
+                                                        const std::vector<std::string>& names) {
+  std::vector<std::vector<Occurrence>> occurrences(names.size());
+  for (std::size_t v = 0; v < names.size(); ++v) {
+    for (std::size_t f = 0; f < files.size(); ++f) {
+      const ScannedVariable* sv = files[f].find(names[v]);
+      if (sv == nullptr) continue;
+      if (sv->klass != VariableClass::kGrid3D) throw *sv->problem;
+      occurrences[v].push_back({f, sv});
+    }
+  }
+  return occurrences;
+}
+
+// One grid: each variable matches itself across files, and the first variable.
+void check_one_grid(const SelectedInputs& in) {
+  const Occurrence& reference = in.reference();
+  for (std::size_t v = 0; v < in.names.size(); ++v) {
+    const Occurrence& first = in.occurrences[v][0];
+    if (v > 0) {
+      const auto& r = *reference.variable;
+      if (auto d = grid_difference(first.variable->x, first.variable->y, first.variable->z, r.x,
+                                   r.y, r.z, fmt::format("variable '{}'", r.name))) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: variable '{}' is not on the grid of variable '{}' ({}): {}",
+                         in.path(first.file), in.names[v], r.name, in.path(reference.file), *d);
+      }
+    }
+    for (std::size_t o = 1; o < in.occurrences[v].size(); ++o) {
+      const Occurrence& occ = in.occurrences[v][o];
+      const auto& a = *occ.variable;
+      const auto& b = *first.variable;
+      if (auto d = grid_difference(a.x, a.y, a.z, b.x, b.y, b.z, in.path(first.file))) {
+        throw make_error(ErrorCode::kInvalidInput, "{}: {} (variable '{}')", in.path(occ.file), *d,
+                         in.names[v]);
+      }
+      check_same_attributes(a, in.path(occ.file), b, in.path(first.file));
+    }
+  }
+}
+
+// One placement: the same grid mapping (or none) for every variable in every file.
+void check_one_grid_mapping(const SelectedInputs& in) {
+  const Occurrence& reference = in.reference();
+  for (std::size_t v = 0; v < in.names.size(); ++v) {
+    for (const Occurrence& occ : in.occurrences[v]) {
+      const ScannedVariable& a = *occ.variable;
+      const ScannedVariable& r = *reference.variable;
+      if (a.grid_mapping == r.grid_mapping) continue;
+      auto describe = [](const ScannedVariable& x) {
+        return x.grid_mapping ? fmt::format("grid mapping '{}' ({})", x.grid_mapping->variable,
+                                            x.grid_mapping->name)
+                              : std::string("no grid mapping");
+      };
+      throw make_error(ErrorCode::kInvalidInput,
+                       "{}: variable '{}' has {} but variable '{}' in {} has {}{}",
+                       in.path(occ.file), a.name, describe(a), r.name, in.path(reference.file),
+                       describe(r),
+                       a.grid_mapping && r.grid_mapping ? " (their attributes differ)" : "");
+    }
+  }
+}
+
+// The first occurrence in file order: its time units and calendar are the reference.
+const Occurrence& time_reference(const SelectedInputs& in) {
+  for (std::size_t f = 0; f < in.files.size(); ++f) {
+    for (std::size_t v = 0; v < in.names.size(); ++v) {
+      for (const auto& occ : in.occurrences[v]) {
+        if (occ.file == f) return occ;
+      }
+    }
+  }
+  return in.reference();
+}
+
+bool same_time_units(const ScannedVariable& a, const ScannedVariable& b) {
+  return a.time.has_value() == b.time.has_value() &&
+         (!a.time || (a.time->units == b.time->units &&
+                      normalized_calendar(a.time->calendar) ==
+                          normalized_calendar(b.time->calendar)));
+}
+
+// Where each (variable, time) is: the same units and calendar everywhere, each step in
+// exactly one file.
+std::vector<std::map<double, VariableLocation>> locate_time_steps(const SelectedInputs& in,
+                                                                  const Occurrence& tref_occ) {
+  const ScannedVariable& tref = *tref_occ.variable;
+  std::vector<std::map<double, VariableLocation>> steps(in.names.size());
+  for (std::size_t v = 0; v < in.names.size(); ++v) {
+    for (const Occurrence& occ : in.occurrences[v]) {
+      const ScannedVariable& sv = *occ.variable;
+      if (!same_time_units(sv, tref)) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: variable '{}' has {} but {} has {} (variable '{}'); all inputs must "
+                         "use the same time units and calendar",
+                         in.path(occ.file), sv.name, describe_time_units(sv),
+                         in.path(tref_occ.file), describe_time_units(tref), tref.name);
+      }
+      const std::vector<double> values = sv.time ? sv.time->values : std::vector<double>{0.0};
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        auto [it, inserted] = steps[v].emplace(values[i], VariableLocation{occ.file, i});
+        if (inserted) continue;
+        if (!sv.time) {
+          throw make_error(ErrorCode::kInvalidInput,
+                           "variable '{}' has no time dimension in both {} and {}: files without "
+                           "a time dimension can hold only one step of a variable",
+                           sv.name, in.path(it->second.file), in.path(occ.file));
+        }
+        throw make_error(ErrorCode::kInvalidInput,
+                         "variable '{}' time {} is in both {} and {} (duplicate time step)",
+                         sv.name, time_text(values[i], sv.time), in.path(it->second.file),
+                         in.path(occ.file));
+      }
+    }
+  }
+  return steps;
+}
+
+// The union of all time steps, each of which every variable must have.
+std::vector<double> common_time_steps(const SelectedInputs& in,
+                                      const std::vector<std::map<double, VariableLocation>>& steps,
+                                      const std::optional<TimeCoordinate>& reference_time) {
+  std::set<double> all_times;
+  for (const auto& s : steps) {
+    for (const auto& [t, loc] : s) all_times.insert(t);
+  }
+  for (std::size_t v = 0; v < in.names.size(); ++v) {
+    if (steps[v].size() == all_times.size()) continue;
+    for (double t : all_times) {
+      if (steps[v].count(t)) continue;
+      for (std::size_t w = 0; w < in.names.size(); ++w) {
+        auto it = steps[w].find(t);
+        if (it == steps[w].end()) continue;
+        throw make_error(ErrorCode::kInvalidInput,
+                         "variable '{}' has no time step {}, which {} has for variable '{}'; "
+                         "every variable must have the same time steps",
+                         in.names[v], time_text(t, reference_time), in.path(it->second.file),
+                         in.names[w]);
+      }
+    }
+  }
+  return std::vector<double>(all_times.begin(), all_times.end());
+}
+
+struct StepRange {
+  std::size_t first = 0;
+  std::size_t last = 0;
+};
+
+StepRange requested_steps(const ScanOptions& options, std::size_t n) {
+  const std::size_t first = options.first_step.value_or(0);
+  const std::size_t last = options.last_step.value_or(n - 1);
+  auto out_of_range = [&](std::string_view which, std::size_t step) {
+    return make_error(ErrorCode::kInvalidArgument,
+                      "{} time step {} requested but the inputs have {} time step{} (0..{})",
+                      which, step, n, n == 1 ? "" : "s", n - 1);
+  };
+  if (first >= n) throw out_of_range("first", first);
+  if (last >= n) throw out_of_range("last", last);
+  if (first > last) {
+    throw make_error(ErrorCode::kInvalidArgument, "first time step {} is after last time step {}",
+                     first, last);
+  }
+  return {first, last};
+}
+
+// The grid, placement and variable descriptions, all taken from the reference variable.
+InputCatalog catalog_without_time(const SelectedInputs& in) {
+  const ScannedVariable& r = *in.reference().variable;
+  InputCatalog catalog;
+  for (const auto& f : in.files) catalog.files.push_back(f.source);
+  catalog.x = r.x;
+  catalog.y = r.y;
+  catalog.z = r.z;
+  catalog.grid_mapping = r.grid_mapping;
+  catalog.source_nx = r.source_nx;
+  for (std::size_t v = 0; v < in.names.size(); ++v) {
+    catalog.variables.push_back(in.occurrences[v][0].variable->meta);
+  }
+  return catalog;
+}
+
 }  // namespace
 
 InputCatalog InputCatalog::as_in_files() const {
@@ -122,183 +328,37 @@ InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
                          const ScanOptions& options) {
   if (inputs.empty()) throw make_error(ErrorCode::kInvalidArgument, "no input files given");
 
-  std::vector<ScannedFile> files;
-  std::map<std::string, std::size_t> seen_paths;
-  for (const auto& path : inputs) {
-    files.push_back(scan_file(path));
-    const std::string& p = files.back().source.path;
-    if (!seen_paths.emplace(p, files.size() - 1).second) {
-      throw make_error(ErrorCode::kInvalidArgument, "{}: input file given twice", p);
-    }
-  }
+  SelectedInputs in;
+  in.files = scan_distinct_files(inputs);
+  in.names = select_variables(in.files, options.variables);
+  in.occurrences = usable_occurrences(in.files, in.names);
+  check_one_grid(in);
+  check_one_grid_mapping(in);
+  InputCatalog catalog = catalog_without_time(in);
 
-  const std::vector<std::string> names = select_variables(files, options.variables);
-
-  // Every occurrence of a selected variable must be usable.
-  std::vector<std::vector<Occurrence>> occurrences(names.size());
-  for (std::size_t v = 0; v < names.size(); ++v) {
-    for (std::size_t f = 0; f < files.size(); ++f) {
-      const ScannedVariable* sv = files[f].find(names[v]);
-      if (sv == nullptr) continue;
-      if (sv->klass != VariableClass::kGrid3D) throw *sv->problem;
-      occurrences[v].push_back({f, sv});
-    }
-  }
-
-  auto file_name = [&](std::size_t f) -> const std::string& { return files[f].source.path; };
-
-  // One grid: each variable matches itself across files, and the first variable.
-  const Occurrence& reference = occurrences[0][0];
-  for (std::size_t v = 0; v < names.size(); ++v) {
-    const Occurrence& first = occurrences[v][0];
-    if (v > 0) {
-      const auto& r = *reference.variable;
-      if (auto d = grid_difference(first.variable->x, first.variable->y, first.variable->z, r.x,
-                                   r.y, r.z, fmt::format("variable '{}'", r.name))) {
-        throw make_error(ErrorCode::kInvalidInput,
-                         "{}: variable '{}' is not on the grid of variable '{}' ({}): {}",
-                         file_name(first.file), names[v], r.name, file_name(reference.file), *d);
-      }
-    }
-    for (std::size_t o = 1; o < occurrences[v].size(); ++o) {
-      const Occurrence& occ = occurrences[v][o];
-      const auto& a = *occ.variable;
-      const auto& b = *first.variable;
-      if (auto d = grid_difference(a.x, a.y, a.z, b.x, b.y, b.z, file_name(first.file))) {
-        throw make_error(ErrorCode::kInvalidInput, "{}: {} (variable '{}')", file_name(occ.file),
-                         *d, names[v]);
-      }
-      check_same_attributes(a, file_name(occ.file), b, file_name(first.file));
-    }
-  }
-  // One placement: the same grid mapping (or none) for every variable in every file.
-  for (std::size_t v = 0; v < names.size(); ++v) {
-    for (const Occurrence& occ : occurrences[v]) {
-      const ScannedVariable& a = *occ.variable;
-      const ScannedVariable& r = *reference.variable;
-      if (a.grid_mapping == r.grid_mapping) continue;
-      auto describe = [](const ScannedVariable& x) {
-        return x.grid_mapping ? fmt::format("grid mapping '{}' ({})", x.grid_mapping->variable,
-                                            x.grid_mapping->name)
-                              : std::string("no grid mapping");
-      };
-      throw make_error(ErrorCode::kInvalidInput,
-                       "{}: variable '{}' has {} but variable '{}' in {} has {}{}",
-                       file_name(occ.file), a.name, describe(a), r.name, file_name(reference.file),
-                       describe(r),
-                       a.grid_mapping && r.grid_mapping ? " (their attributes differ)" : "");
-    }
-  }
-
-  InputCatalog catalog;
-  for (const auto& f : files) catalog.files.push_back(f.source);
-  catalog.x = reference.variable->x;
-  catalog.y = reference.variable->y;
-  catalog.z = reference.variable->z;
-  catalog.grid_mapping = reference.variable->grid_mapping;
-  catalog.source_nx = reference.variable->source_nx;
-  for (std::size_t v = 0; v < names.size(); ++v) {
-    catalog.variables.push_back(occurrences[v][0].variable->meta);
-  }
-
-  // Time: the same units and calendar everywhere (the first occurrence in file order
-  // is the reference), each (variable, time) in exactly one file.
-  const Occurrence* time_reference = nullptr;
-  for (std::size_t f = 0; f < files.size() && time_reference == nullptr; ++f) {
-    for (std::size_t v = 0; v < names.size() && time_reference == nullptr; ++v) {
-      for (const auto& occ : occurrences[v]) {
-        if (occ.file == f) {
-          time_reference = &occ;
-          break;
-        }
-      }
-    }
-  }
-  const ScannedVariable& tref = *time_reference->variable;
-  std::vector<std::map<double, VariableLocation>> steps(names.size());
-  for (std::size_t v = 0; v < names.size(); ++v) {
-    for (const Occurrence& occ : occurrences[v]) {
-      const ScannedVariable& sv = *occ.variable;
-      const bool same =
-          sv.time.has_value() == tref.time.has_value() &&
-          (!sv.time || (sv.time->units == tref.time->units &&
-                        normalized_calendar(sv.time->calendar) ==
-                            normalized_calendar(tref.time->calendar)));
-      if (!same) {
-        throw make_error(ErrorCode::kInvalidInput,
-                         "{}: variable '{}' has {} but {} has {} (variable '{}'); all inputs must "
-                         "use the same time units and calendar",
-                         file_name(occ.file), sv.name, describe_time_units(sv),
-                         file_name(time_reference->file), describe_time_units(tref), tref.name);
-      }
-      const std::vector<double> values = sv.time ? sv.time->values : std::vector<double>{0.0};
-      for (std::size_t i = 0; i < values.size(); ++i) {
-        auto [it, inserted] = steps[v].emplace(values[i], VariableLocation{occ.file, i});
-        if (inserted) continue;
-        if (!sv.time) {
-          throw make_error(ErrorCode::kInvalidInput,
-                           "variable '{}' has no time dimension in both {} and {}: files without "
-                           "a time dimension can hold only one step of a variable",
-                           sv.name, file_name(it->second.file), file_name(occ.file));
-        }
-        throw make_error(ErrorCode::kInvalidInput,
-                         "variable '{}' time {} is in both {} and {} (duplicate time step)",
-                         sv.name, time_text(values[i], sv.time), file_name(it->second.file),
-                         file_name(occ.file));
-      }
-    }
-  }
-  std::set<double> all_times;
-  for (const auto& s : steps) {
-    for (const auto& [t, loc] : s) all_times.insert(t);
-  }
-  for (std::size_t v = 0; v < names.size(); ++v) {
-    if (steps[v].size() == all_times.size()) continue;
-    for (double t : all_times) {
-      if (steps[v].count(t)) continue;
-      for (std::size_t w = 0; w < names.size(); ++w) {
-        auto it = steps[w].find(t);
-        if (it == steps[w].end()) continue;
-        throw make_error(ErrorCode::kInvalidInput,
-                         "variable '{}' has no time step {}, which {} has for variable '{}'; "
-                         "every variable must have the same time steps",
-                         names[v], time_text(t, tref.time), file_name(it->second.file),
-                         names[w]);
-      }
-    }
-  }
-
-  const std::vector<double> merged(all_times.begin(), all_times.end());
+  const Occurrence& tref_occ = time_reference(in);
+  const ScannedVariable& tref = *tref_occ.variable;
+  const std::vector<std::map<double, VariableLocation>> steps = locate_time_steps(in, tref_occ);
+  const std::vector<double> merged = common_time_steps(in, steps, tref.time);
   const std::size_t n = merged.size();
-  const std::size_t first = options.first_step.value_or(0);
-  const std::size_t last = options.last_step.value_or(n - 1);
-  auto out_of_range = [&](std::string_view which, std::size_t step) {
-    return make_error(ErrorCode::kInvalidArgument,
-                      "{} time step {} requested but the inputs have {} time step{} (0..{})",
-                      which, step, n, n == 1 ? "" : "s", n - 1);
-  };
-  if (first >= n) throw out_of_range("first", first);
-  if (last >= n) throw out_of_range("last", last);
-  if (first > last) {
-    throw make_error(ErrorCode::kInvalidArgument, "first time step {} is after last time step {}",
-                     first, last);
-  }
+  const StepRange range = requested_steps(options, n);
 
   if (tref.time) {
     catalog.time.name = tref.time->name;
     catalog.time.units = tref.time->units;
     catalog.time.calendar = tref.time->calendar;
   }
-  catalog.time.values.assign(merged.begin() + static_cast<std::ptrdiff_t>(first),
-                             merged.begin() + static_cast<std::ptrdiff_t>(last) + 1);
-  catalog.locations.resize(names.size());
-  for (std::size_t v = 0; v < names.size(); ++v) {
+  catalog.time.values.assign(merged.begin() + static_cast<std::ptrdiff_t>(range.first),
+                             merged.begin() + static_cast<std::ptrdiff_t>(range.last) + 1);
+  catalog.locations.resize(in.names.size());
+  for (std::size_t v = 0; v < in.names.size(); ++v) {
     for (double t : catalog.time.values) catalog.locations[v].push_back(steps[v].at(t));
   }
 
+  const std::vector<std::string>& names = in.names;
   spdlog::info("{} input file{}: {} variable{} ({}) on a {} x {} x {} grid ({} levels), {} of {} "
                "time step{}",
-               files.size(), files.size() == 1 ? "" : "s", names.size(),
+               in.files.size(), in.files.size() == 1 ? "" : "s", names.size(),
                names.size() == 1 ? "" : "s", fmt::join(names, ", "), catalog.x.size(),
                catalog.y.size(), catalog.z.size(), axis_kind_name(catalog.z.kind),
                catalog.time.size(), n, n == 1 ? "" : "s");

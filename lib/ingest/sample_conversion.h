@@ -81,92 +81,111 @@ bool exact_in_double(Int r) {
 template <typename Raw>
 inline constexpr Raw kNaNRaw = detail::kNaNRawImpl<Raw>;
 
-template <typename Raw, typename Out>
-ConversionResult convert_samples(std::span<const Raw> raw, const CfValueAttributes& attrs,
-                                 bool nan_as_fill, std::span<Out> out) {
-  check_usable(attrs);  // throws: scale_factor 0, an empty valid range...
-  // Integers of 64 bits are compared in long double (exact), the rest in double.
-  constexpr bool kWideInteger = std::is_integral_v<Raw> && sizeof(Raw) == 8;
-  using Cmp = std::conditional_t<kWideInteger, long double, double>;
-  constexpr bool kFloating = std::is_floating_point_v<Raw>;
-  constexpr Out kNaN = std::numeric_limits<Out>::quiet_NaN();
+namespace detail {
 
+// Which raw samples are missing: fill values (and NaN, when declared), and the valid range,
+// compared in Cmp: integers of 64 bits in long double (exact), the rest in double.
+template <typename Raw>
+struct MissingRule {
+  using Cmp = std::conditional_t<std::is_integral_v<Raw> && sizeof(Raw) == 8, long double, double>;
   std::vector<Raw> fills;
   bool nan_is_missing = false;
-  auto add_fill = [&](long double v) {
+  bool has_min = false, has_max = false;
+  Cmp vmin{}, vmax{};
+
+  explicit MissingRule(const CfValueAttributes& attrs) {
+    if (attrs.fill_value) add_fill(*attrs.fill_value);
+    if (attrs.default_fill) add_fill(*attrs.default_fill);
+    for (long double m : attrs.missing_values) add_fill(m);
+    has_min = attrs.valid_min.has_value() && !std::isnan(*attrs.valid_min);
+    has_max = attrs.valid_max.has_value() && !std::isnan(*attrs.valid_max);
+    if (has_min) vmin = static_cast<Cmp>(*attrs.valid_min);
+    if (has_max) vmax = static_cast<Cmp>(*attrs.valid_max);
+  }
+
+  bool is_missing(Raw r) const {
+    bool missing = false;
+    for (Raw f : fills) missing = missing || r == f;
+    if constexpr (std::is_floating_point_v<Raw>) missing = missing || (nan_is_missing && std::isnan(r));
+    if (has_min && static_cast<Cmp>(r) < vmin) missing = true;
+    if (has_max && static_cast<Cmp>(r) > vmax) missing = true;
+    return missing;
+  }
+
+ private:
+  void add_fill(long double v) {
     if (std::isnan(v)) {
       nan_is_missing = true;
-    } else if (auto r = detail::as_raw<Raw>(v)) {
+    } else if (auto r = as_raw<Raw>(v)) {
       fills.push_back(*r);
     }
+  }
+};
+
+// The fast path for the common case (model output): unpacked floating-point data with at
+// most two fill values and no valid range. Same result as convert_each_sample.
+template <typename Raw, typename Out>
+ConversionResult convert_unpacked_floats(std::span<const Raw> raw, const MissingRule<Raw>& rule,
+                                         bool nan_as_fill, std::span<Out> out) {
+  constexpr Out kNaN = std::numeric_limits<Out>::quiet_NaN();
+  ConversionResult result;
+  const Raw f0 = rule.fills.empty() ? kNaNRawImpl<Raw> : rule.fills[0];
+  const Raw f1 = rule.fills.size() < 2 ? f0 : rule.fills[1];
+  // Branch-free passes over blocks that stay in L1: one finds whether the block holds
+  // an undeclared NaN/Inf (then it is located while the block is still intact), the
+  // next writes the block. Both written with bitwise operators on unsigned flags, not
+  // && and ||: GCC 12 vectorizes them only so (short-circuit operators are control
+  // flow, and the loop stays scalar at 3x the cost). `raw` and `out` may be the same
+  // memory (in-place conversion).
+  const Raw* src = raw.data();
+  Out* dst = out.data();
+  const std::size_t n = raw.size();
+  const unsigned nan_missing = rule.nan_is_missing ? 1u : 0u;
+  auto finite = [](Raw r) -> unsigned { return r - r == Raw(0) ? 1u : 0u; };  // 0: NaN, +-Inf
+  auto missing = [f0, f1, nan_missing](Raw r) -> unsigned {
+    return static_cast<unsigned>(r == f0) | static_cast<unsigned>(r == f1) |
+           (nan_missing & static_cast<unsigned>(r != r));
   };
-  if (attrs.fill_value) add_fill(*attrs.fill_value);
-  if (attrs.default_fill) add_fill(*attrs.default_fill);
-  for (long double m : attrs.missing_values) add_fill(m);
-  const bool has_min = attrs.valid_min.has_value() && !std::isnan(*attrs.valid_min);
-  const bool has_max = attrs.valid_max.has_value() && !std::isnan(*attrs.valid_max);
-  const Cmp vmin = has_min ? static_cast<Cmp>(*attrs.valid_min) : Cmp{};
-  const Cmp vmax = has_max ? static_cast<Cmp>(*attrs.valid_max) : Cmp{};
+  constexpr std::size_t kBlock = 2048;
+  for (std::size_t b = 0; b < n; b += kBlock) {
+    const std::size_t e = std::min(n, b + kBlock);
+    if (!nan_as_fill && !result.first_non_finite) {
+      unsigned undeclared = 0;
+      for (std::size_t i = b; i < e; ++i) undeclared |= (missing(src[i]) ^ 1u) & (finite(src[i]) ^ 1u);
+      for (std::size_t i = b; undeclared != 0 && i < e; ++i) {
+        if (((missing(src[i]) ^ 1u) & (finite(src[i]) ^ 1u)) != 0) {
+          result.first_non_finite = i;
+          result.non_finite_value = static_cast<double>(src[i]);
+          break;
+        }
+      }
+    }
+    for (std::size_t i = b; i < e; ++i) {
+      const Raw r = src[i];
+      dst[i] = (missing(r) | (finite(r) ^ 1u)) != 0 ? kNaN : static_cast<Out>(r);
+    }
+  }
+  return result;
+}
+
+// The general path: any raw type, packed or not, with any fill values and valid range.
+template <typename Raw, typename Out>
+ConversionResult convert_each_sample(std::span<const Raw> raw, const MissingRule<Raw>& rule,
+                                     const CfValueAttributes& attrs, bool nan_as_fill,
+                                     std::span<Out> out) {
+  constexpr bool kWideInteger = std::is_integral_v<Raw> && sizeof(Raw) == 8;
+  constexpr Out kNaN = std::numeric_limits<Out>::quiet_NaN();
   const bool packed = attrs.packed();
   const double scale = attrs.scale_factor.value_or(1.0);
   const double offset = attrs.add_offset.value_or(0.0);
-
   ConversionResult result;
-  if constexpr (kFloating) {
-    // Fast path for the common case (model output): unpacked floating-point data with at
-    // most two fill values and no valid range. Same result as the general loop below.
-    if (!packed && !has_min && !has_max && fills.size() <= 2) {
-      const Raw f0 = fills.empty() ? kNaNRaw<Raw> : fills[0];
-      const Raw f1 = fills.size() < 2 ? f0 : fills[1];
-      // Branch-free passes over blocks that stay in L1: one finds whether the block holds
-      // an undeclared NaN/Inf (then it is located while the block is still intact), the
-      // next writes the block. Both written with bitwise operators on unsigned flags, not
-      // && and ||: GCC 12 vectorizes them only so (short-circuit operators are control
-      // flow, and the loop stays scalar at 3x the cost). `raw` and `out` may be the same
-      // memory (in-place conversion).
-      const Raw* src = raw.data();
-      Out* dst = out.data();
-      const std::size_t n = raw.size();
-      const unsigned nan_missing = nan_is_missing ? 1u : 0u;
-      auto finite = [](Raw r) -> unsigned { return r - r == Raw(0) ? 1u : 0u; };  // 0: NaN, +-Inf
-      auto missing = [f0, f1, nan_missing](Raw r) -> unsigned {
-        return static_cast<unsigned>(r == f0) | static_cast<unsigned>(r == f1) |
-               (nan_missing & static_cast<unsigned>(r != r));
-      };
-      constexpr std::size_t kBlock = 2048;
-      for (std::size_t b = 0; b < n; b += kBlock) {
-        const std::size_t e = std::min(n, b + kBlock);
-        if (!nan_as_fill && !result.first_non_finite) {
-          unsigned undeclared = 0;
-          for (std::size_t i = b; i < e; ++i) undeclared |= (missing(src[i]) ^ 1u) & (finite(src[i]) ^ 1u);
-          for (std::size_t i = b; undeclared != 0 && i < e; ++i) {
-            if (((missing(src[i]) ^ 1u) & (finite(src[i]) ^ 1u)) != 0) {
-              result.first_non_finite = i;
-              result.non_finite_value = static_cast<double>(src[i]);
-              break;
-            }
-          }
-        }
-        for (std::size_t i = b; i < e; ++i) {
-          const Raw r = src[i];
-          dst[i] = (missing(r) | (finite(r) ^ 1u)) != 0 ? kNaN : static_cast<Out>(r);
-        }
-      }
-      return result;
-    }
-  }
   for (std::size_t i = 0; i < raw.size(); ++i) {
     const Raw r = raw[i];
-    bool missing = false;
-    for (Raw f : fills) missing = missing || r == f;
-    if constexpr (kFloating) missing = missing || (nan_is_missing && std::isnan(r));
-    if (has_min && static_cast<Cmp>(r) < vmin) missing = true;
-    if (has_max && static_cast<Cmp>(r) > vmax) missing = true;
-    if (missing) {
+    if (rule.is_missing(r)) {
       out[i] = kNaN;
       continue;
     }
-    if constexpr (kFloating) {
+    if constexpr (std::is_floating_point_v<Raw>) {
       if (!std::isfinite(r)) {
         out[i] = kNaN;
         if (!nan_as_fill && !result.first_non_finite) {
@@ -179,7 +198,7 @@ ConversionResult convert_samples(std::span<const Raw> raw, const CfValueAttribut
     if constexpr (kWideInteger) {
       // Unpacking starts from the raw value as a double: one it cannot hold would be
       // rounded (2^53 + 1 stored as 2^53), packed or not.
-      if (!detail::exact_in_double(r)) {
+      if (!exact_in_double(r)) {
         out[i] = kNaN;
         if (!result.first_inexact) {
           result.first_inexact = i;
@@ -204,6 +223,21 @@ ConversionResult convert_samples(std::span<const Raw> raw, const CfValueAttribut
     }
   }
   return result;
+}
+
+}  // namespace detail
+
+template <typename Raw, typename Out>
+ConversionResult convert_samples(std::span<const Raw> raw, const CfValueAttributes& attrs,
+                                 bool nan_as_fill, std::span<Out> out) {
+  check_usable(attrs);  // throws: scale_factor 0, an empty valid range...
+  const detail::MissingRule<Raw> rule(attrs);
+  if constexpr (std::is_floating_point_v<Raw>) {
+    if (!attrs.packed() && !rule.has_min && !rule.has_max && rule.fills.size() <= 2) {
+      return detail::convert_unpacked_floats<Raw, Out>(raw, rule, nan_as_fill, out);
+    }
+  }
+  return detail::convert_each_sample<Raw, Out>(raw, rule, attrs, nan_as_fill, out);
 }
 
 }  // namespace strielad::ingest

@@ -62,6 +62,15 @@ struct OpenFile {
   std::shared_ptr<const DirectReadFile> direct;
 };
 
+// A slab once netcdf_mutex() is released: its samples, raw, already read through
+// netCDF, or the byte ranges to read with O_DIRECT.
+struct SlabSource {
+  CfValueAttributes attrs;
+  std::byte* raw = nullptr;
+  std::shared_ptr<const DirectReadFile> direct;
+  std::optional<std::vector<FileRange>> ranges;
+};
+
 }  // namespace
 
 struct SlabReader::Impl {
@@ -78,6 +87,18 @@ struct SlabReader::Impl {
 
   template <typename Out>
   void read(std::size_t v, std::size_t t, std::size_t z0, std::size_t z1, std::span<Out> out);
+
+  // The number of samples levels [z0, z1) of variable v at step t hold, checked against
+  // the catalog and the output's size.
+  std::size_t checked_slab_size(std::size_t v, std::size_t t, std::size_t z0, std::size_t z1,
+                                std::size_t out_size) const;
+
+  // Under netcdf_mutex(): the slab read through netCDF, or the byte ranges to read directly.
+  template <typename Out>
+  SlabSource fetch_slab(std::size_t v, const VariableLocation& loc, std::size_t z0,
+                        std::size_t z1, std::span<Out> out, const std::string& context);
+
+  void stop_direct_reads(std::size_t file, const Error& e);
 
   // The samples in `ranges` (raw, of attrs.type), read piece by piece with O_DIRECT and
   // converted into `out`.
@@ -261,9 +282,8 @@ ConversionResult SlabReader::Impl::read_direct(const DirectReadFile& file,
   return result;
 }
 
-template <typename Out>
-void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::size_t z1,
-                            std::span<Out> out) {
+std::size_t SlabReader::Impl::checked_slab_size(std::size_t v, std::size_t t, std::size_t z0,
+                                                std::size_t z1, std::size_t out_size) const {
   if (v >= catalog.variables.size()) {
     throw make_error(ErrorCode::kInvalidArgument, "variable index {} out of range ({} variables)",
                      v, catalog.variables.size());
@@ -278,90 +298,53 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
                      dims.z);
   }
   const std::size_t count = (z1 - z0) * dims.y * dims.x;
-  if (out.size() != count) {
+  if (out_size != count) {
     throw make_error(ErrorCode::kInvalidArgument,
-                     "output holds {} samples but levels [{}, {}) of {} x {} need {}", out.size(),
+                     "output holds {} samples but levels [{}, {}) of {} x {} need {}", out_size,
                      z0, z1, dims.x, dims.y, count);
   }
-  if (count == 0) return;
+  return count;
+}
 
-  const VariableLocation loc = catalog.locations[v][t];
-  const std::string& path = catalog.files[loc.file].path;
-  const std::string& name = catalog.variables[v].name;
-  const std::string context = fmt::format("{}: variable '{}' time step {}", path, name, t);
+namespace {
 
-  // Samples already in the output type are read straight into `out` and converted in
-  // place; others go through a per-thread buffer that is never zero-filled (netCDF fills
-  // it), so a slab costs no page faults beyond its first use.
+// A per-thread buffer that is never zero-filled (netCDF fills it), so a slab costs no
+// page faults beyond its first use.
+std::byte* reusable_buffer(std::size_t bytes) {
   static thread_local std::unique_ptr<std::byte[]> buffer;
   static thread_local std::size_t buffer_size = 0;
-  std::byte* raw = nullptr;
-  CfValueAttributes attrs;
-  std::shared_ptr<const DirectReadFile> direct;
-  std::optional<std::vector<FileRange>> ranges;
-  ConversionResult r;
-  for (;;) {
-    {
-      std::lock_guard lock(netcdf_mutex());
-      OpenFile& of = open_file(loc.file);
-      const VariableHandle& h = variable(of, loc.file, v);
-      if (h.has_time ? loc.time_in_file >= h.time_length : loc.time_in_file != 0) {
-        throw make_error(ErrorCode::kInvalidInput,
-                         "{}: time index {} not in the file (file changed since it was scanned?)",
-                         context, loc.time_in_file);
-      }
-      attrs = h.attrs;
-      if (h.planes && of.direct) ranges = h.planes->planes(loc.time_in_file, z0, z1);
-      if (ranges) {
-        direct = of.direct;  // kept alive should another thread close the file
-      } else {
-        if (attrs.type == (sizeof(Out) == 4 ? NC_FLOAT : NC_DOUBLE)) {
-          raw = reinterpret_cast<std::byte*>(out.data());
-        } else {
-          const std::size_t bytes = count * nc_type_size(attrs.type);
-          if (buffer_size < bytes) {
-            buffer.reset(new std::byte[bytes]);
-            buffer_size = bytes;
-          }
-          raw = buffer.get();
-        }
-        std::array<std::size_t, 4> start{}, edge{};
-        std::size_t d = 0;
-        if (h.has_time) {
-          start[d] = loc.time_in_file;
-          edge[d++] = 1;
-        }
-        start[d] = z0;
-        edge[d++] = z1 - z0;
-        start[d] = 0;
-        edge[d++] = dims.y;
-        start[d] = 0;
-        edge[d++] = dims.x;
-        nc_check(nc_get_vara(h.grpid, h.varid, start.data(), edge.data(), raw), context);
-      }
-    }
-    if (!ranges) {
-      r = convert_any<Out>(attrs.type, raw, count, attrs, options.nan_as_fill, out);
-      break;
-    }
-    try {
-      r = read_direct(*direct, *ranges, attrs, out);
-      break;
-    } catch (const Error& e) {
-      // A file system that opens files with O_DIRECT but refuses the reads (alignment
-      // beyond 4 KiB, a device error): this file is read through netCDF from now on,
-      // and netCDF reports what is really wrong with it, if anything.
-      spdlog::warn("{}: direct read failed ({}); reading the file through netCDF", path, e.what());
-      std::lock_guard lock(netcdf_mutex());
-      direct_failed.insert(loc.file);
-      if (auto it = open.find(loc.file); it != open.end()) it->second.direct.reset();
-      ranges.reset();
-      direct.reset();
-    }
+  if (buffer_size < bytes) {
+    buffer.reset(new std::byte[bytes]);
+    buffer_size = bytes;
   }
+  return buffer.get();
+}
+
+// Levels [z0, z1) of time index `time_in_file` of a variable, read through netCDF into `raw`.
+void get_slab(const VariableHandle& h, std::size_t time_in_file, std::size_t z0, std::size_t z1,
+              const Dims3& dims, std::byte* raw, const std::string& context) {
+  std::array<std::size_t, 4> start{}, edge{};
+  std::size_t d = 0;
+  if (h.has_time) {
+    start[d] = time_in_file;
+    edge[d++] = 1;
+  }
+  start[d] = z0;
+  edge[d++] = z1 - z0;
+  start[d] = 0;
+  edge[d++] = dims.y;
+  start[d] = 0;
+  edge[d++] = dims.x;
+  nc_check(nc_get_vara(h.grpid, h.varid, start.data(), edge.data(), raw), context);
+}
+
+// A conversion problem reported for the sample where it was found.
+template <typename Out>
+void check_converted(const ConversionResult& r, const CfValueAttributes& attrs, const Dims3& dims,
+                     std::size_t z0, const std::string& context) {
+  const std::size_t plane = dims.x * dims.y;
   if (r.first_non_finite) {
     const std::size_t i = *r.first_non_finite;
-    const std::size_t plane = dims.x * dims.y;
     const double bad = r.non_finite_value;
     throw make_error(ErrorCode::kInvalidInput,
                      "{}: sample (lon {}, lat {}, level {}) is {}; pass --nan-as-fill to treat "
@@ -371,7 +354,6 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
   }
   if (r.first_overflow) {
     const std::size_t i = *r.first_overflow;
-    const std::size_t plane = dims.x * dims.y;
     throw make_error(ErrorCode::kInvalidInput,
                      "{}: sample (lon {}, lat {}, level {}) unpacks to {} ({} x scale_factor {} + "
                      "add_offset {}), beyond the range of {}; check the variable's scale_factor "
@@ -382,7 +364,6 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
   }
   if (r.first_inexact) {
     const std::size_t i = *r.first_inexact;
-    const std::size_t plane = dims.x * dims.y;
     throw make_error(ErrorCode::kInvalidInput,
                      "{}: sample (lon {}, lat {}, level {}) is {} ({}), which a float64 cannot hold "
                      "exactly (integers beyond 2^53 would be rounded); the store keeps values "
@@ -390,6 +371,78 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
                      context, i % dims.x, (i % plane) / dims.x, z0 + i / plane, r.inexact_raw,
                      nc_type_name(attrs.type));
   }
+}
+
+}  // namespace
+
+template <typename Out>
+SlabSource SlabReader::Impl::fetch_slab(std::size_t v, const VariableLocation& loc,
+                                        std::size_t z0, std::size_t z1, std::span<Out> out,
+                                        const std::string& context) {
+  std::lock_guard lock(netcdf_mutex());
+  OpenFile& of = open_file(loc.file);
+  const VariableHandle& h = variable(of, loc.file, v);
+  if (h.has_time ? loc.time_in_file >= h.time_length : loc.time_in_file != 0) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: time index {} not in the file (file changed since it was scanned?)",
+                     context, loc.time_in_file);
+  }
+  SlabSource s;
+  s.attrs = h.attrs;
+  if (h.planes && of.direct) s.ranges = h.planes->planes(loc.time_in_file, z0, z1);
+  if (s.ranges) {
+    s.direct = of.direct;  // kept alive should another thread close the file
+    return s;
+  }
+  // Samples already in the output type are read straight into `out` and converted in
+  // place; others go through a reusable buffer.
+  if (s.attrs.type == (sizeof(Out) == 4 ? NC_FLOAT : NC_DOUBLE)) {
+    s.raw = reinterpret_cast<std::byte*>(out.data());
+  } else {
+    s.raw = reusable_buffer(out.size() * nc_type_size(s.attrs.type));
+  }
+  get_slab(h, loc.time_in_file, z0, z1, catalog.dims(), s.raw, context);
+  return s;
+}
+
+// A file system that opens files with O_DIRECT but refuses the reads (alignment beyond
+// 4 KiB, a device error): this file is read through netCDF from now on, and netCDF
+// reports what is really wrong with it, if anything.
+void SlabReader::Impl::stop_direct_reads(std::size_t file, const Error& e) {
+  spdlog::warn("{}: direct read failed ({}); reading the file through netCDF",
+               catalog.files[file].path, e.what());
+  std::lock_guard lock(netcdf_mutex());
+  direct_failed.insert(file);
+  if (auto it = open.find(file); it != open.end()) it->second.direct.reset();
+}
+
+template <typename Out>
+void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::size_t z1,
+                            std::span<Out> out) {
+  const std::size_t count = checked_slab_size(v, t, z0, z1, out.size());
+  if (count == 0) return;
+
+  const VariableLocation loc = catalog.locations[v][t];
+  const std::string& path = catalog.files[loc.file].path;
+  const std::string& name = catalog.variables[v].name;
+  const std::string context = fmt::format("{}: variable '{}' time step {}", path, name, t);
+
+  SlabSource s;
+  ConversionResult r;
+  for (;;) {
+    s = fetch_slab(v, loc, z0, z1, out, context);
+    if (!s.ranges) {
+      r = convert_any<Out>(s.attrs.type, s.raw, count, s.attrs, options.nan_as_fill, out);
+      break;
+    }
+    try {
+      r = read_direct(*s.direct, *s.ranges, s.attrs, out);
+      break;
+    } catch (const Error& e) {
+      stop_direct_reads(loc.file, e);
+    }
+  }
+  check_converted<Out>(r, s.attrs, catalog.dims(), z0, context);
 }
 
 SlabReader::SlabReader(const InputCatalog& catalog, const ScanOptions& options)

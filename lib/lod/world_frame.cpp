@@ -48,6 +48,37 @@ double largest_spacing(const std::vector<double>& v) {
   return h;
 }
 
+// The largest |f''| along each of `lines` grid lines, f the world x and y of the samples
+// at positions `along`: second divided differences (an axis of two samples: the
+// midpoint's offset from the chord, through PROJ). sample(k, l) is the world position of
+// sample k of line l, midpoint_world(l) that of line l's first midpoint.
+template <typename Sample, typename MidpointWorld>
+std::vector<std::array<double, 2>> grid_line_bends(const std::vector<double>& along,
+                                                   std::size_t lines, Sample sample,
+                                                   MidpointWorld midpoint_world) {
+  std::vector<std::array<double, 2>> out(lines, {0.0, 0.0});
+  const std::size_t n = along.size();
+  for (std::size_t l = 0; l < lines; ++l) {
+    if (n == 2) {
+      const double h = along[1] - along[0];
+      const auto mid = midpoint_world(l);
+      for (int c = 0; c < 2; ++c) {
+        const double chord = 0.5 * (sample(0, l)[c] + sample(1, l)[c]);
+        out[l][c] = std::isfinite(mid[c]) ? 8.0 * std::fabs(mid[c] - chord) / (h * h) : 0.0;
+      }
+    }
+    for (std::size_t k = 1; k + 1 < n; ++k) {
+      const double h0 = along[k] - along[k - 1], h1 = along[k + 1] - along[k];
+      for (int c = 0; c < 2; ++c) {
+        const double d1 = (sample(k + 1, l)[c] - sample(k, l)[c]) / h1;
+        const double d0 = (sample(k, l)[c] - sample(k - 1, l)[c]) / h0;
+        out[l][c] = std::max(out[l][c], std::fabs(2.0 * (d1 - d0) / (h0 + h1)));
+      }
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 struct WorldFrame::Mapped {
@@ -66,20 +97,78 @@ struct WorldFrame::Mapped {
     return geo::GridProjection::for_this_thread(proj);
   }
   const std::array<double, 2>& at(std::size_t i, std::size_t j) const { return xy[j * nx + i]; }
+
+  // Every sample's world position on the plane tangent at (lon0, lat0); x_name and
+  // y_name name the axes in errors.
+  void place_samples(double lon0, double lat0, double km_per_lon, const std::string& x_name,
+                     const std::string& y_name) {
+    const geo::GridProjection& p = projection();
+    xy.resize(nx * ny);
+    for (std::size_t j = 0; j < ny; ++j) {
+      for (std::size_t i = 0; i < nx; ++i) {
+        const auto g = p.to_geographic(x[i], y[j]);
+        if (!std::isfinite(g[0]) || !std::isfinite(g[1])) {
+          throw make_error(ErrorCode::kUnsupported,
+                           "grid mapping '{}' ({}) gives sample ({}, {}) ({} {}, {} {}) no "
+                           "geographic position",
+                           variable, name, i, j, x_name, x[i], y_name, y[j]);
+        }
+        xy[j * nx + i] = {std::remainder(g[0] - lon0, 360.0) * km_per_lon,
+                          (g[1] - lat0) * kKmPerDegree};
+      }
+    }
+  }
+
+  // Tears: neighbours more than half a turn of longitude apart lie on both sides of the
+  // meridian opposite the centre, where the plane is cut.
+  void check_tears(double lon0, double lat0, double km_per_lon) const {
+    const double half_turn_km = 180.0 * km_per_lon;
+    const auto tear = [&](std::size_t i0, std::size_t j0, std::size_t i1, std::size_t j1) {
+      if (std::fabs(at(i1, j1)[0] - at(i0, j0)[0]) > half_turn_km) {
+        throw make_error(ErrorCode::kUnsupported,
+                         "grid mapping '{}' ({}): samples ({}, {}) and ({}, {}) lie on both "
+                         "sides of longitude {:.2f}, opposite the domain's centre (the grid goes "
+                         "round a pole or across the whole Earth): the viewer's plane, tangent at "
+                         "the centre ({:.2f} N, {:.2f} E), cannot show it",
+                         variable, name, i0, j0, i1, j1, std::remainder(lon0 + 180.0, 360.0),
+                         lat0, lon0);
+      }
+    };
+    for (std::size_t j = 0; j < ny; ++j) {
+      for (std::size_t i = 0; i < nx; ++i) {
+        if (i + 1 < nx) tear(i, j, i + 1, j);
+        if (j + 1 < ny) tear(i, j, i, j + 1);
+      }
+    }
+  }
+
+  // Folds: every cell must keep the orientation of the others. Returns that orientation
+  // (1 or -1), or 0 for a grid of one row or column.
+  int cell_orientation() const {
+    int orientation = 0;
+    for (std::size_t j = 0; j + 1 < ny; ++j) {
+      for (std::size_t i = 0; i + 1 < nx; ++i) {
+        const auto& p = at(i, j);
+        const auto& px = at(i + 1, j);
+        const auto& py = at(i, j + 1);
+        const double det = (px[0] - p[0]) * (py[1] - p[1]) - (px[1] - p[1]) * (py[0] - p[0]);
+        const int s = det > 0 ? 1 : det < 0 ? -1 : 0;
+        if (s != 0 && orientation != 0 && s != orientation) {
+          throw make_error(ErrorCode::kUnsupported,
+                           "grid mapping '{}' ({}) folds the grid over itself at cell ({}, {}): "
+                           "the viewer cannot place it",
+                           variable, name, i, j);
+        }
+        if (orientation == 0) orientation = s;
+      }
+    }
+    return orientation;
+  }
 };
 
-WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options)
-    : exaggeration_(options.vertical_exaggeration), dims_(m.dims()) {
-  if (!std::isfinite(exaggeration_) || exaggeration_ <= 0) {
-    throw make_error(ErrorCode::kInvalidArgument,
-                     "vertical exaggeration {} must be a finite number > 0", exaggeration_);
-  }
-  check_axis_values(m.x, "grid.x");
-  check_axis_values(m.y, "grid.y");
-  check_axis_values(m.z, "grid.z");
-
-  // Horizontal: a grid mapping first, then length units (a Cartesian grid; a projected
-  // grid was once read with x/y kinds lon/lat), then longitude/latitude.
+// Horizontal: a grid mapping first, then length units (a Cartesian grid; a projected
+// grid was once read with x/y kinds lon/lat), then longitude/latitude.
+void WorldFrame::place_horizontal(const format::Manifest& m) {
   const auto kx = km_per_length_unit(m.x.units), ky = km_per_length_unit(m.y.units);
   const bool mapped = m.grid_mapping && !m.grid_mapping->proj.empty() &&
                       m.x.kind == AxisKind::kProjectionX && m.y.kind == AxisKind::kProjectionY;
@@ -121,66 +210,50 @@ WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options)
                      m.x.name, axis_kind_name(m.x.kind), m.x.units, m.y.name,
                      axis_kind_name(m.y.kind), m.y.units);
   }
+}
 
-  if (m.z.kind == AxisKind::kHeight) {
+void WorldFrame::place_vertical(const Axis& z) {
+  if (z.kind == AxisKind::kHeight) {
     vertical_ = VerticalMap::kHeight;
-    const auto km = m.z.units.empty() ? std::optional<double>(1e-3) : km_per_length_unit(m.z.units);
+    const auto km = z.units.empty() ? std::optional<double>(1e-3) : km_per_length_unit(z.units);
     if (!km) {
       throw make_error(ErrorCode::kUnsupported,
-                       "height axis '{}' has units '{}'; need m or km", m.z.name, m.z.units);
+                       "height axis '{}' has units '{}'; need m or km", z.name, z.units);
     }
     vertical_unit_ = *km * 1000.0;
-  } else if (m.z.kind == AxisKind::kPressure) {
+  } else if (z.kind == AxisKind::kPressure) {
     vertical_ = VerticalMap::kPressure;
-    const auto pa = pascals_per_pressure_unit(m.z.units);
+    const auto pa = pascals_per_pressure_unit(z.units);
     if (!pa) {
       throw make_error(ErrorCode::kUnsupported,
                        "pressure axis '{}' has units '{}'; need Pa, hPa, mbar, kPa, bar or atm",
-                       m.z.name, m.z.units);
+                       z.name, z.units);
     }
     vertical_unit_ = *pa;
-    for (std::size_t i = 0; i < m.z.size(); ++i) {
-      if (!(m.z.values[i] > 0)) {
+    for (std::size_t i = 0; i < z.size(); ++i) {
+      if (!(z.values[i] > 0)) {
         throw make_error(ErrorCode::kInvalidInput,
                          "pressure axis '{}' has value {} {} at index {}; a height needs a "
                          "pressure > 0",
-                         m.z.name, m.z.values[i], m.z.units, i);
+                         z.name, z.values[i], z.units, i);
       }
     }
   } else {
     throw make_error(ErrorCode::kUnsupported,
                      "vertical axis '{}' is {} (units '{}'): only height and pressure axes "
                      "have a world position",
-                     m.z.name, axis_kind_name(m.z.kind), m.z.units);
+                     z.name, axis_kind_name(z.kind), z.units);
   }
+  z_axis_ = z.values;
+  z_samples_.reserve(z.size());
+  for (double v : z.values) z_samples_.push_back(vertical_to_world(v));
+  const auto [lo, hi] = std::minmax_element(z_samples_.begin(), z_samples_.end());
+  domain_.lo[2] = *lo;
+  domain_.hi[2] = *hi;
+}
 
-  z_axis_ = m.z.values;
-  z_samples_.reserve(m.z.size());
-  for (double v : m.z.values) z_samples_.push_back(vertical_to_world(v));
-  {
-    const auto [lo, hi] = std::minmax_element(z_samples_.begin(), z_samples_.end());
-    domain_.lo[2] = *lo;
-    domain_.hi[2] = *hi;
-  }
-  const double z_mid = world_to_vertical(0.5 * (domain_.lo[2] + domain_.hi[2]));
-  const double hz = std::max(std::abs(z_mid), 1.0) * 1e-6;
-  const bool z_negative = vertical_to_world(z_mid + hz) - vertical_to_world(z_mid - hz) < 0;
-
-  if (horizontal_ != HorizontalMap::kMapped) {
-    const std::array<const Axis*, 2> axes{&m.x, &m.y};
-    for (int a = 0; a < 2; ++a) {
-      auto& w = xy_samples_[a];
-      w.reserve(axes[a]->size());
-      for (double v : axes[a]->values) w.push_back(separable_to_world(a, v));
-      const auto [lo, hi] = std::minmax_element(w.begin(), w.end());
-      domain_.lo[a] = *lo;
-      domain_.hi[a] = *hi;
-    }
-    mirrored_ = z_negative;  // x and y map with positive slopes
-    return;
-  }
-
-  // A mapped grid: the centre's true position, then every sample's world position.
+// A mapped grid: the centre's true position, then every sample's world position.
+void WorldFrame::place_mapped(const format::Manifest& m, bool z_negative) {
   auto t = std::make_shared<Mapped>();
   const GridMapping& gm = *m.grid_mapping;
   t->proj = gm.proj;
@@ -190,7 +263,7 @@ WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options)
   t->y = m.y.values;
   t->nx = m.x.size();
   t->ny = m.y.size();
-  t->degrees = !kx;
+  t->degrees = !km_per_length_unit(m.x.units);
   t->x_mid = origin_[0];
   const geo::GridProjection& projection = t->projection();  // kUnsupported if PROJ rejects it
   const auto centre = projection.to_geographic(origin_[0], origin_[1]);
@@ -210,91 +283,15 @@ WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options)
                      gm.variable, gm.name, lat0_);
   }
   km_per_lon_ = kKmPerDegree * cos_lat0;
-  const std::size_t nx = t->nx, ny = t->ny;
-  t->xy.resize(nx * ny);
-  for (std::size_t j = 0; j < ny; ++j) {
-    for (std::size_t i = 0; i < nx; ++i) {
-      const auto g = projection.to_geographic(t->x[i], t->y[j]);
-      if (!std::isfinite(g[0]) || !std::isfinite(g[1])) {
-        throw make_error(ErrorCode::kUnsupported,
-                         "grid mapping '{}' ({}) gives sample ({}, {}) ({} {}, {} {}) no "
-                         "geographic position",
-                         gm.variable, gm.name, i, j, m.x.name, t->x[i], m.y.name, t->y[j]);
-      }
-      t->xy[j * nx + i] = {std::remainder(g[0] - lon0_, 360.0) * km_per_lon_,
-                           (g[1] - lat0_) * kKmPerDegree};
-    }
-  }
-  // Tears: neighbours more than half a turn of longitude apart lie on both sides of the
-  // meridian opposite the centre, where the plane is cut.
-  const double half_turn_km = 180.0 * km_per_lon_;
-  const auto tear = [&](std::size_t i0, std::size_t j0, std::size_t i1, std::size_t j1) {
-    if (std::fabs(t->at(i1, j1)[0] - t->at(i0, j0)[0]) > half_turn_km) {
-      throw make_error(ErrorCode::kUnsupported,
-                       "grid mapping '{}' ({}): samples ({}, {}) and ({}, {}) lie on both sides "
-                       "of longitude {:.2f}, opposite the domain's centre (the grid goes round "
-                       "a pole or across the whole Earth): the viewer's plane, tangent at the "
-                       "centre ({:.2f} N, {:.2f} E), cannot show it",
-                       gm.variable, gm.name, i0, j0, i1, j1, std::remainder(lon0_ + 180.0, 360.0),
-                       lat0_, lon0_);
-    }
-  };
-  for (std::size_t j = 0; j < ny; ++j) {
-    for (std::size_t i = 0; i < nx; ++i) {
-      if (i + 1 < nx) tear(i, j, i + 1, j);
-      if (j + 1 < ny) tear(i, j, i, j + 1);
-    }
-  }
-  // Folds: every cell must keep the orientation of the others.
-  int orientation = 0;
-  for (std::size_t j = 0; j + 1 < ny; ++j) {
-    for (std::size_t i = 0; i + 1 < nx; ++i) {
-      const auto& p = t->at(i, j);
-      const auto& px = t->at(i + 1, j);
-      const auto& py = t->at(i, j + 1);
-      const double det = (px[0] - p[0]) * (py[1] - p[1]) - (px[1] - p[1]) * (py[0] - p[0]);
-      const int s = det > 0 ? 1 : det < 0 ? -1 : 0;
-      if (s != 0 && orientation != 0 && s != orientation) {
-        throw make_error(ErrorCode::kUnsupported,
-                         "grid mapping '{}' ({}) folds the grid over itself at cell ({}, {}): "
-                         "the viewer cannot place it",
-                         gm.variable, gm.name, i, j);
-      }
-      if (orientation == 0) orientation = s;
-    }
-  }
-  // Bends of the grid lines: second divided differences of the samples' world positions
-  // (an axis of two samples: the midpoint's offset from the chord, through PROJ).
-  const auto bends = [&](const std::vector<double>& along, std::size_t lines, auto sample,
-                         auto midpoint_world) {
-    std::vector<std::array<double, 2>> out(lines, {0.0, 0.0});
-    const std::size_t n = along.size();
-    for (std::size_t l = 0; l < lines; ++l) {
-      if (n == 2) {
-        const double h = along[1] - along[0];
-        const auto mid = midpoint_world(l);
-        for (int c = 0; c < 2; ++c) {
-          const double chord = 0.5 * (sample(0, l)[c] + sample(1, l)[c]);
-          out[l][c] = std::isfinite(mid[c]) ? 8.0 * std::fabs(mid[c] - chord) / (h * h) : 0.0;
-        }
-      }
-      for (std::size_t k = 1; k + 1 < n; ++k) {
-        const double h0 = along[k] - along[k - 1], h1 = along[k + 1] - along[k];
-        for (int c = 0; c < 2; ++c) {
-          const double d1 = (sample(k + 1, l)[c] - sample(k, l)[c]) / h1;
-          const double d0 = (sample(k, l)[c] - sample(k - 1, l)[c]) / h0;
-          out[l][c] = std::max(out[l][c], std::fabs(2.0 * (d1 - d0) / (h0 + h1)));
-        }
-      }
-    }
-    return out;
-  };
+  t->place_samples(lon0_, lat0_, km_per_lon_, m.x.name, m.y.name);
+  t->check_tears(lon0_, lat0_, km_per_lon_);
+  int orientation = t->cell_orientation();
   mapped_ = t;  // mapped_xy below needs it
-  t->row_bend = bends(
-      t->x, ny, [&](std::size_t k, std::size_t l) { return t->at(k, l); },
+  t->row_bend = grid_line_bends(
+      t->x, t->ny, [&](std::size_t k, std::size_t l) { return t->at(k, l); },
       [&](std::size_t l) { return mapped_xy(0.5 * (t->x[0] + t->x[1]), t->y[l]); });
-  t->col_bend = bends(
-      t->y, nx, [&](std::size_t k, std::size_t l) { return t->at(l, k); },
+  t->col_bend = grid_line_bends(
+      t->y, t->nx, [&](std::size_t k, std::size_t l) { return t->at(l, k); },
       [&](std::size_t l) { return mapped_xy(t->x[l], 0.5 * (t->y[0] + t->y[1])); });
   t->hx = largest_spacing(t->x);
   t->hy = largest_spacing(t->y);
@@ -305,11 +302,43 @@ WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options)
     orientation = det < 0 ? -1 : 1;
   }
   mirrored_ = (orientation < 0) != z_negative;
-  const WorldBox all = mapped_index_box(IndexBox{{0, 0, 0}, {nx - 1, ny - 1, m.z.size() - 1}});
+  const WorldBox all =
+      mapped_index_box(IndexBox{{0, 0, 0}, {t->nx - 1, t->ny - 1, m.z.size() - 1}});
   domain_.lo[0] = all.lo[0];
   domain_.lo[1] = all.lo[1];
   domain_.hi[0] = all.hi[0];
   domain_.hi[1] = all.hi[1];
+}
+
+WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options)
+    : exaggeration_(options.vertical_exaggeration), dims_(m.dims()) {
+  if (!std::isfinite(exaggeration_) || exaggeration_ <= 0) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "vertical exaggeration {} must be a finite number > 0", exaggeration_);
+  }
+  check_axis_values(m.x, "grid.x");
+  check_axis_values(m.y, "grid.y");
+  check_axis_values(m.z, "grid.z");
+  place_horizontal(m);
+  place_vertical(m.z);
+  // Whether the vertical map decreases, at the middle of the domain's height.
+  const double z_mid = world_to_vertical(0.5 * (domain_.lo[2] + domain_.hi[2]));
+  const double hz = std::max(std::abs(z_mid), 1.0) * 1e-6;
+  const bool z_negative = vertical_to_world(z_mid + hz) - vertical_to_world(z_mid - hz) < 0;
+  if (horizontal_ == HorizontalMap::kMapped) {
+    place_mapped(m, z_negative);
+    return;
+  }
+  const std::array<const Axis*, 2> axes{&m.x, &m.y};
+  for (int a = 0; a < 2; ++a) {
+    auto& w = xy_samples_[a];
+    w.reserve(axes[a]->size());
+    for (double v : axes[a]->values) w.push_back(separable_to_world(a, v));
+    const auto [lo, hi] = std::minmax_element(w.begin(), w.end());
+    domain_.lo[a] = *lo;
+    domain_.hi[a] = *hi;
+  }
+  mirrored_ = z_negative;  // x and y map with positive slopes
 }
 
 WorldFrame WorldFrame::with_exaggeration(double e) const {

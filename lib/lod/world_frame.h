@@ -153,6 +153,11 @@ class WorldFrame {
  private:
   struct Mapped;  // a mapped frame's pipeline and sample table (shared by copies)
 
+  // Parts of the constructor.
+  void place_horizontal(const format::Manifest& manifest);
+  void place_vertical(const Axis& z);  // also samples z and sets the domain's z range
+  void place_mapped(const format::Manifest& manifest, bool z_negative);
+
   double separable_to_world(int axis, double value) const;
   double separable_to_axis(int axis, double world) const;
   void check_on_earth() const;

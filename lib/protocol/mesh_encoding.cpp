@@ -245,40 +245,57 @@ void encode_mesh(const Mesh& mesh, ByteWriter& out, std::string_view what, MeshR
   out.bytes(w.bytes());
 }
 
-Mesh decode_mesh(ByteReader& in, std::string_view what, MeshRole role) {
+namespace {
+
+Error invalid_field(std::string_view what, std::string_view field, const std::string& problem) {
+  return make_error(ErrorCode::kInvalidInput, "{}: {}: {}", what, field, problem);
+}
+
+struct MeshHeader {
+  std::uint32_t vertex_count = 0;
+  std::uint32_t triangle_count = 0;
+  std::uint8_t attribute_count = 0;
+  std::uint8_t index_bytes = 0;
+  Box box{};
+};
+
+// The header, checked, and every count checked against the bytes that remain.
+MeshHeader read_mesh_header(ByteReader& in, std::string_view what, MeshRole role) {
   if (in.remaining() < kMeshHeaderBytes) {
     throw make_error(ErrorCode::kTruncated, "{}: the mesh header needs {} bytes, only {} remain",
                      what, kMeshHeaderBytes, in.remaining());
   }
-  const auto invalid = [&](std::string_view field, const std::string& problem) {
-    return make_error(ErrorCode::kInvalidInput, "{}: {}: {}", what, field, problem);
-  };
-  const std::uint32_t v = in.u32("vertex_count");
-  const std::uint32_t t = in.u32("triangle_count");
-  const std::uint8_t attribute_count = in.u8("attribute_count");
-  const std::uint8_t width = in.u8("index_bytes");
-  Box box;
-  for (auto& corner : box) {
+  MeshHeader h;
+  h.vertex_count = in.u32("vertex_count");
+  h.triangle_count = in.u32("triangle_count");
+  h.attribute_count = in.u8("attribute_count");
+  h.index_bytes = in.u8("index_bytes");
+  for (auto& corner : h.box) {
     for (double& c : corner) c = in.f64("box");
   }
-  if (t == 0) throw invalid("triangle_count", "0 (a mesh has at least one triangle)");
+  const std::uint32_t v = h.vertex_count, t = h.triangle_count;
+  const std::uint8_t attribute_count = h.attribute_count, width = h.index_bytes;
+  if (t == 0) throw invalid_field(what, "triangle_count", "0 (a mesh has at least one triangle)");
   if (role == MeshRole::kSlice && attribute_count != 1) {
-    throw invalid("attribute_count", fmt::format("{} (a slice mesh has exactly 1)", attribute_count));
+    throw invalid_field(what, "attribute_count",
+                        fmt::format("{} (a slice mesh has exactly 1)", attribute_count));
   }
   if (attribute_count > kMaxSceneAttributes) {
-    throw invalid("attribute_count", fmt::format("{} is over the limit of {}", attribute_count,
-                                                 kMaxSceneAttributes));
+    throw invalid_field(what, "attribute_count",
+                        fmt::format("{} is over the limit of {}", attribute_count,
+                                    kMaxSceneAttributes));
   }
   if (width != index_bytes_for(v)) {
-    throw invalid("index_bytes", fmt::format("{} with {} vertices (must be {})", width, v,
-                                             index_bytes_for(v)));
+    throw invalid_field(what, "index_bytes",
+                        fmt::format("{} with {} vertices (must be {})", width, v,
+                                    index_bytes_for(v)));
   }
   static constexpr std::array<char, 3> kAxis{'x', 'y', 'z'};
   for (int a = 0; a < 3; ++a) {
-    const double lo = box[0][a], hi = box[1][a];
+    const double lo = h.box[0][a], hi = h.box[1][a];
     if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo <= hi) || !std::isfinite(hi - lo)) {
-      throw invalid("box", fmt::format("{} range [{}, {}] is not finite with lo <= hi",
-                                       kAxis[a], lo, hi));
+      throw invalid_field(what, "box", fmt::format("{} range [{}, {}] is not finite with lo <= hi",
+                                                   kAxis[a], lo, hi));
     }
   }
   // Every count against the bytes that remain, before anything is allocated.
@@ -291,14 +308,17 @@ Mesh decode_mesh(ByteReader& in, std::string_view what, MeshRole role) {
                      "remain",
                      what, v, t, attribute_count, needed, in.remaining());
   }
+  return h;
+}
 
-  Mesh mesh;
+void read_vertices(ByteReader& in, const MeshHeader& h, Mesh& mesh) {
+  const std::uint32_t v = h.vertex_count;
   mesh.positions.resize(v);
   const std::byte* p = in.bytes(std::size_t{v} * 6, "positions").data();
   for (auto& position : mesh.positions) {
     for (int a = 0; a < 3; ++a, p += 2) {
-      position[a] =
-          std::lerp(box[0][a], box[1][a], static_cast<double>(load_u16(p)) / double{kPositionSteps});
+      position[a] = std::lerp(h.box[0][a], h.box[1][a],
+                              static_cast<double>(load_u16(p)) / double{kPositionSteps});
     }
   }
   mesh.normals.resize(v);
@@ -308,14 +328,21 @@ Mesh decode_mesh(ByteReader& in, std::string_view what, MeshRole role) {
                            static_cast<std::int16_t>(load_u16(p + 2)));
     p += 4;
   }
+}
+
+// The triangles, each index below vertex_count, and their face kinds, allowed for `role`.
+void read_triangles(ByteReader& in, const MeshHeader& h, std::string_view what, MeshRole role,
+                    Mesh& mesh) {
+  const std::uint32_t v = h.vertex_count, t = h.triangle_count;
+  const std::uint8_t width = h.index_bytes;
   mesh.triangles.resize(t);
-  p = in.bytes(std::size_t{t} * 3 * width, "triangles").data();
+  const std::byte* p = in.bytes(std::size_t{t} * 3 * width, "triangles").data();
   for (std::size_t i = 0; i < t; ++i) {
     for (int c = 0; c < 3; ++c, p += width) {
       const std::uint32_t index = load_index(p, width);
       if (index >= v) {
-        throw invalid(fmt::format("triangles[{}][{}]", i, c),
-                      fmt::format("index {} >= vertex_count {}", index, v));
+        throw invalid_field(what, fmt::format("triangles[{}][{}]", i, c),
+                            fmt::format("index {} >= vertex_count {}", index, v));
       }
       mesh.triangles[i][c] = index;
     }
@@ -325,22 +352,25 @@ Mesh decode_mesh(ByteReader& in, std::string_view what, MeshRole role) {
   for (std::size_t i = 0; i < t; ++i) {
     const auto kind = static_cast<std::uint8_t>(p[i]);
     if (!face_kind_allowed(kind, role)) {
-      throw invalid(fmt::format("face_kinds[{}]", i),
-                    fmt::format("{} is not a face kind ({})", kind, face_kinds_of(role)));
+      throw invalid_field(what, fmt::format("face_kinds[{}]", i),
+                          fmt::format("{} is not a face kind ({})", kind, face_kinds_of(role)));
     }
     mesh.face_kinds[i] = static_cast<FaceKind>(kind);
   }
-  mesh.attributes.resize(attribute_count);
-  for (std::size_t a = 0; a < attribute_count; ++a) {
+}
+
+void read_attributes(ByteReader& in, const MeshHeader& h, std::string_view what, Mesh& mesh) {
+  mesh.attributes.resize(h.attribute_count);
+  for (std::size_t a = 0; a < h.attribute_count; ++a) {
     const float lo = in.f32("attribute lo");
     const float hi = in.f32("attribute hi");
     if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo <= hi)) {
-      throw invalid(fmt::format("attributes[{}]", a),
-                    fmt::format("range [{}, {}] is not finite with lo <= hi", lo, hi));
+      throw invalid_field(what, fmt::format("attributes[{}]", a),
+                          fmt::format("range [{}, {}] is not finite with lo <= hi", lo, hi));
     }
     auto& values = mesh.attributes[a];
-    values.resize(v);
-    p = in.bytes(std::size_t{v} * 2, "attribute values").data();
+    values.resize(h.vertex_count);
+    const std::byte* p = in.bytes(std::size_t{h.vertex_count} * 2, "attribute values").data();
     for (auto& value : values) {
       const std::uint16_t q = load_u16(p);
       p += 2;
@@ -350,6 +380,16 @@ Mesh decode_mesh(ByteReader& in, std::string_view what, MeshRole role) {
                                                  static_cast<double>(q) / double{kAttributeSteps}));
     }
   }
+}
+
+}  // namespace
+
+Mesh decode_mesh(ByteReader& in, std::string_view what, MeshRole role) {
+  const MeshHeader header = read_mesh_header(in, what, role);
+  Mesh mesh;
+  read_vertices(in, header, mesh);
+  read_triangles(in, header, what, role, mesh);
+  read_attributes(in, header, what, mesh);
   return mesh;
 }
 

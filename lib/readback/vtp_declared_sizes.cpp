@@ -88,127 +88,178 @@ bool known_type(std::string_view type) {
   return false;
 }
 
-}  // namespace
+// The first bytes of a compressed array (block count, block size, last block size, then
+// one compressed size per block), and how many bytes follow them.
+struct CompressedStart {
+  std::string words;
+  std::size_t room = 0;
+};
 
-void check_declared_sizes(std::span<const char> file, const std::string& what) {
-  const std::string_view text(file.data(), file.size());
-  const double limit = kMaxExpansion * double(file.size()) + double(1 << 20);
-  const auto refuse = [&](std::string_view element, double values) {
-    throw make_error(ErrorCode::kInvalidInput,
-                     "{}: not a readable VTK XML PolyData file: {} declares {:.4g} values, more "
-                     "than its {} bytes can hold",
-                     what, element, values, file.size());
-  };
-  // The XML part ends where raw appended data begins (after "<AppendedData ...>_").
-  const auto appended = text.find("<AppendedData");
-  const std::string_view xml = text.substr(0, appended);
-  std::size_t header_bytes = 4;  // header_type UInt32 (VTK's default) or UInt64
-  bool compressed = false;
-  bool raw_appended = false;
-  std::size_t appended_start = text.size();
-  if (const auto file_tag_at = xml.find("<VTKFile"); file_tag_at != std::string_view::npos) {
-    const auto tag = xml.substr(file_tag_at, xml.find('>', file_tag_at) - file_tag_at);
-    if (attribute(tag, "header_type") == "UInt64") header_bytes = 8;
-    compressed = attribute(tag, "compressor").has_value();
-  }
-  if (appended != std::string_view::npos) {
-    const auto close = text.find('>', appended);
-    const auto tag = text.substr(appended, close - appended);
-    raw_appended = attribute(tag, "encoding") == "raw";
-    const auto underscore = close == std::string_view::npos ? close : text.find('_', close);
-    if (underscore != std::string_view::npos) appended_start = underscore + 1;
+// Checks one file's declared sizes against what its bytes can hold.
+class DeclaredSizeCheck {
+ public:
+  DeclaredSizeCheck(std::span<const char> file, const std::string& what)
+      : text_(file.data(), file.size()),
+        what_(what),
+        limit_(kMaxExpansion * double(file.size()) + double(1 << 20)) {
+    // The XML part ends where raw appended data begins (after "<AppendedData ...>_").
+    const auto appended = text_.find("<AppendedData");
+    xml_ = text_.substr(0, appended);
+    appended_start_ = text_.size();
+    if (const auto file_tag_at = xml_.find("<VTKFile"); file_tag_at != std::string_view::npos) {
+      const auto tag = xml_.substr(file_tag_at, xml_.find('>', file_tag_at) - file_tag_at);
+      if (attribute(tag, "header_type") == "UInt64") header_bytes_ = 8;
+      compressed_ = attribute(tag, "compressor").has_value();
+    }
+    if (appended != std::string_view::npos) {
+      const auto close = text_.find('>', appended);
+      const auto tag = text_.substr(appended, close - appended);
+      raw_appended_ = attribute(tag, "encoding") == "raw";
+      const auto underscore = close == std::string_view::npos ? close : text_.find('_', close);
+      if (underscore != std::string_view::npos) appended_start_ = underscore + 1;
+    }
   }
 
-  double points = 0, cells = 0;  // of the current piece
-  double verts = 0, lines = 0, strips = 0, polys = 0;
-  double tuples = 0;  // of the arrays in the current section
-  for (std::size_t at = xml.find('<'); at != std::string_view::npos; at = xml.find('<', at + 1)) {
-    const auto close = xml.find('>', at);
-    const auto tag = xml.substr(at, close == std::string_view::npos ? close : close - at);
-    const auto name_end = tag.find_first_of(" \t\r\n/>", 1);
-    const std::string_view name = tag.substr(1, name_end == std::string_view::npos ? name_end : name_end - 1);
-    if (name == "Piece") {
-      points = count(tag, "NumberOfPoints", 0);
-      verts = count(tag, "NumberOfVerts", 0);
-      lines = count(tag, "NumberOfLines", 0);
-      strips = count(tag, "NumberOfStrips", 0);
-      polys = count(tag, "NumberOfPolys", 0);
-      cells = verts + lines + strips + polys;
-      if (points * 3 > limit) refuse("Piece NumberOfPoints", points * 3);
-      if (cells > limit) refuse("Piece cell counts", cells);
-    } else if (name == "PointData" || name == "Points") {
-      tuples = points;
-    } else if (name == "CellData") {
-      tuples = cells;
-    } else if (name == "Verts" || name == "Lines" || name == "Strips" || name == "Polys") {
-      // The section's own cells: an empty section's arrays hold no values whatever the
-      // other sections hold. (Its connectivity holds more than one value per cell; the
-      // limit below is far above that.)
-      tuples = name == "Verts" ? verts : name == "Lines" ? lines : name == "Strips" ? strips : polys;
-    } else if (name == "FieldData") {
-      tuples = 0;
-    } else if (name == "DataArray" || name == "Array") {
-      // VTK 9.1 dereferences the null array it makes for a FieldData array of an unknown
-      // type: only its type names pass.
-      const auto type = attribute(tag, "type");
-      if (!type || !known_type(*type)) {
-        throw make_error(ErrorCode::kInvalidInput,
-                         "{}: not a readable VTK XML PolyData file: {} of type '{}' (not a VTK XML "
-                         "data type)",
-                         what, name, type ? *type : "");
-      }
-      const double n = count(tag, "NumberOfTuples", tuples) * std::max(1.0, count(tag, "NumberOfComponents", 1));
-      if (n > limit) refuse(name, n);
-      const auto format = attribute(tag, "format");
-      if (!compressed || !format) continue;
-      // The compressed header: block count, block size, last block size, then one
-      // compressed size per block; VTK allocates by the first three.
-      const std::size_t header = 3 * header_bytes;
-      std::string words;
-      std::size_t room = 0;
-      if (*format == "appended" && raw_appended) {
-        const double offset = count(tag, "offset", 0);
-        if (offset >= double(text.size() - std::min(text.size(), appended_start))) continue;  // VTK refuses
-        const std::size_t p = appended_start + std::size_t(offset);
-        if (text.size() - p < header) continue;  // VTK refuses a short header
-        words = std::string(text.substr(p, header));
-        room = text.size() - p - header;
-      } else if (*format == "binary" && close != std::string_view::npos) {
-        const std::string_view body = xml.substr(close + 1, xml.find('<', close) - close - 1);
-        words = decode_base64_prefix(body, header);
-        if (words.size() < header) continue;
-        room = body.size();
-      } else {
-        continue;
-      }
-      const auto word = [&](std::size_t i) {
-        return little_endian(reinterpret_cast<const unsigned char*>(words.data()) + i * header_bytes,
-                             header_bytes);
-      };
-      const std::uint64_t blocks = word(0), block_size = word(1), last_block_size = word(2);
-      // VTK 9.1 dereferences a null block table when an array with values has no blocks.
-      if (blocks == 0 && n > 0) {
-        throw make_error(ErrorCode::kInvalidInput,
-                         "{}: not a readable VTK XML PolyData file: {} declares {:.4g} values in "
-                         "a compressed header of 0 blocks",
-                         what, name, n);
-      }
-      // VTK 9.1 divides by the block size (SIGFPE when it is 0) and takes a last block
-      // larger than the others as more data than it allocated.
-      if (blocks > 0 && (block_size == 0 || last_block_size > block_size)) {
-        throw make_error(ErrorCode::kInvalidInput,
-                         "{}: not a readable VTK XML PolyData file: {}'s compressed header has {} "
-                         "blocks of {} bytes, the last of {}",
-                         what, name, blocks, block_size, last_block_size);
-      }
-      if (double(blocks) * double(header_bytes) > double(room) || double(block_size) > limit ||
-          double(last_block_size) > limit || double(blocks) * double(block_size) > limit) {
-        refuse(fmt::format("{}'s compressed header ({} blocks of {} bytes, the last {})", name,
-                           blocks, block_size, last_block_size),
-               double(blocks) * double(block_size));
+  void run() const {
+    double points = 0, cells = 0;  // of the current piece
+    double verts = 0, lines = 0, strips = 0, polys = 0;
+    double tuples = 0;  // of the arrays in the current section
+    constexpr auto npos = std::string_view::npos;
+    for (std::size_t at = xml_.find('<'); at != npos; at = xml_.find('<', at + 1)) {
+      const auto close = xml_.find('>', at);
+      const auto tag = xml_.substr(at, close == npos ? close : close - at);
+      const auto name_end = tag.find_first_of(" \t\r\n/>", 1);
+      const std::string_view name = tag.substr(1, name_end == npos ? name_end : name_end - 1);
+      if (name == "Piece") {
+        points = count(tag, "NumberOfPoints", 0);
+        verts = count(tag, "NumberOfVerts", 0);
+        lines = count(tag, "NumberOfLines", 0);
+        strips = count(tag, "NumberOfStrips", 0);
+        polys = count(tag, "NumberOfPolys", 0);
+        cells = verts + lines + strips + polys;
+        if (points * 3 > limit_) refuse("Piece NumberOfPoints", points * 3);
+        if (cells > limit_) refuse("Piece cell counts", cells);
+      } else if (name == "PointData" || name == "Points") {
+        tuples = points;
+      } else if (name == "CellData") {
+        tuples = cells;
+      } else if (name == "Verts" || name == "Lines" || name == "Strips" || name == "Polys") {
+        // The section's own cells: an empty section's arrays hold no values whatever the
+        // other sections hold. (Its connectivity holds more than one value per cell; the
+        // limit below is far above that.)
+        tuples = name == "Verts"    ? verts
+                 : name == "Lines"  ? lines
+                 : name == "Strips" ? strips
+                                    : polys;
+      } else if (name == "FieldData") {
+        tuples = 0;
+      } else if (name == "DataArray" || name == "Array") {
+        check_array(tag, name, close, tuples);
       }
     }
   }
+
+ private:
+  [[noreturn]] void refuse(std::string_view element, double values) const {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{}: not a readable VTK XML PolyData file: {} declares {:.4g} values, more "
+                     "than its {} bytes can hold",
+                     what_, element, values, text_.size());
+  }
+
+  // An array element `tag` ending at `close`, in a section whose arrays hold `tuples`.
+  void check_array(std::string_view tag, std::string_view name, std::size_t close,
+                   double tuples) const {
+    // VTK 9.1 dereferences the null array it makes for a FieldData array of an unknown
+    // type: only its type names pass.
+    const auto type = attribute(tag, "type");
+    if (!type || !known_type(*type)) {
+      throw make_error(ErrorCode::kInvalidInput,
+                       "{}: not a readable VTK XML PolyData file: {} of type '{}' (not a VTK XML "
+                       "data type)",
+                       what_, name, type ? *type : "");
+    }
+    const double n =
+        count(tag, "NumberOfTuples", tuples) * std::max(1.0, count(tag, "NumberOfComponents", 1));
+    if (n > limit_) refuse(name, n);
+    const auto format = attribute(tag, "format");
+    if (!compressed_ || !format) return;
+    if (const auto start = compressed_start(tag, *format, close)) {
+      check_compressed_header(name, n, *start);
+    }
+  }
+
+  // The compressed header of an appended or binary array; nothing where VTK refuses the
+  // array itself (an offset beyond the data, a short header) or for other formats.
+  std::optional<CompressedStart> compressed_start(std::string_view tag, std::string_view format,
+                                                  std::size_t close) const {
+    const std::size_t header = 3 * header_bytes_;
+    CompressedStart start;
+    if (format == "appended" && raw_appended_) {
+      const double offset = count(tag, "offset", 0);
+      const std::size_t appended_bytes = text_.size() - std::min(text_.size(), appended_start_);
+      if (offset >= double(appended_bytes)) return std::nullopt;  // VTK refuses
+      const std::size_t p = appended_start_ + std::size_t(offset);
+      if (text_.size() - p < header) return std::nullopt;  // VTK refuses a short header
+      start.words = std::string(text_.substr(p, header));
+      start.room = text_.size() - p - header;
+    } else if (format == "binary" && close != std::string_view::npos) {
+      const std::string_view body = xml_.substr(close + 1, xml_.find('<', close) - close - 1);
+      start.words = decode_base64_prefix(body, header);
+      if (start.words.size() < header) return std::nullopt;
+      start.room = body.size();
+    } else {
+      return std::nullopt;
+    }
+    return start;
+  }
+
+  // VTK allocates by the first three words of the compressed header.
+  void check_compressed_header(std::string_view name, double n,
+                               const CompressedStart& start) const {
+    const auto* words = reinterpret_cast<const unsigned char*>(start.words.data());
+    const auto word = [&](std::size_t i) {
+      return little_endian(words + i * header_bytes_, header_bytes_);
+    };
+    const std::uint64_t blocks = word(0), block_size = word(1), last_block_size = word(2);
+    // VTK 9.1 dereferences a null block table when an array with values has no blocks.
+    if (blocks == 0 && n > 0) {
+      throw make_error(ErrorCode::kInvalidInput,
+                       "{}: not a readable VTK XML PolyData file: {} declares {:.4g} values in "
+                       "a compressed header of 0 blocks",
+                       what_, name, n);
+    }
+    // VTK 9.1 divides by the block size (SIGFPE when it is 0) and takes a last block
+    // larger than the others as more data than it allocated.
+    if (blocks > 0 && (block_size == 0 || last_block_size > block_size)) {
+      throw make_error(ErrorCode::kInvalidInput,
+                       "{}: not a readable VTK XML PolyData file: {}'s compressed header has {} "
+                       "blocks of {} bytes, the last of {}",
+                       what_, name, blocks, block_size, last_block_size);
+    }
+    if (double(blocks) * double(header_bytes_) > double(start.room) ||
+        double(block_size) > limit_ || double(last_block_size) > limit_ ||
+        double(blocks) * double(block_size) > limit_) {
+      refuse(fmt::format("{}'s compressed header ({} blocks of {} bytes, the last {})", name,
+                         blocks, block_size, last_block_size),
+             double(blocks) * double(block_size));
+    }
+  }
+
+  std::string_view text_;
+  std::string_view xml_;
+  const std::string& what_;
+  double limit_;
+  std::size_t header_bytes_ = 4;  // header_type UInt32 (VTK's default) or UInt64
+  bool compressed_ = false;
+  bool raw_appended_ = false;
+  std::size_t appended_start_ = 0;
+};
+
+}  // namespace
+
+void check_declared_sizes(std::span<const char> file, const std::string& what) {
+  DeclaredSizeCheck(file, what).run();
 }
 
 }  // namespace strielad::vtp

@@ -107,99 +107,119 @@ void resolve_geographic(const GeographicBox& g, const format::Manifest& m, std::
   if (g.lat) fold(1, *g.lat, "lat", m.y);
 }
 
+void check_time_step(std::size_t time, std::size_t steps, std::string_view what) {
+  if (time < steps) return;
+  if (steps == 0) {
+    fail(ErrorCode::kNotFound, what, "time", "time step {} is out of range: the store has no time steps",
+         time);
+  }
+  fail(ErrorCode::kNotFound, what, "time",
+       "time step {} is out of range: the store has {} time steps (0..{})", time, steps,
+       steps - 1);
+}
+
+// The axis ranges of a subvolume's "domain" (at `path`) into its box; a longitude range
+// in any convention, a full turn or more being the whole axis.
+void resolve_domain(const SubVolume& sv, const std::string& path, const format::Manifest& manifest,
+                    const Names& names, std::string_view what, ResolvedSubVolume& r) {
+  const Axis* axes[3] = {&manifest.x, &manifest.y, &manifest.z};
+  for (const auto& [axis_name, range] : sv.domain) {
+    const std::string p = key_path(path, axis_name);
+    const std::size_t a = names.axis(axis_name, p);
+    const AxisRange e = extent(*axes[a]);
+    if (axes[a]->kind == AxisKind::kLongitude) {
+      // Any convention: the range meets the axis at some whole turn (longitude_turns.h);
+      // a full turn or more is the whole axis.
+      if (range.hi - range.lo >= kFullTurn) {
+        r.box[a] = AxisRange{-kInf, kInf};
+        continue;
+      }
+      if (longitude_turns(range.lo, range.hi, e.lo, e.hi).empty()) {
+        fail(ErrorCode::kInvalidInput, what, p,
+             "[{}, {}] selects no longitude of the store's {} axis [{}, {}] (in any "
+             "convention: shifted by any multiple of 360 it stays outside)",
+             range.lo, range.hi, scene_detail::shown(axis_name), e.lo, e.hi);
+      }
+    } else if (range.hi < e.lo || range.lo > e.hi) {
+      fail(ErrorCode::kInvalidInput, what, p, "[{}, {}] lies outside the store's {} axis [{}, {}]",
+           range.lo, range.hi, scene_detail::shown(axis_name), e.lo, e.hi);
+    }
+    r.box[a] = range;
+  }
+}
+
+ResolvedSubVolume resolve_subvolume(const SubVolume& sv, const std::string& path,
+                                    const format::Manifest& manifest, const Names& names,
+                                    std::string_view what, ResolvedScene& out) {
+  ResolvedSubVolume r;
+  r.id = sv.id;
+  r.name = sv.name;
+  for (std::size_t j = 0; j < sv.limits.size(); ++j) {
+    const Limit& l = sv.limits[j];
+    const std::string limit_path = index_path(key_path(path, "limits"), j);
+    r.limits.push_back(ResolvedLimit{names.variable(l.var, key_path(limit_path, "var")),
+                                     l.min.value_or(-kInf), l.max.value_or(kInf)});
+    out.needed_variables.push_back(r.limits.back().variable);
+  }
+  r.box.fill(AxisRange{-kInf, kInf});
+  resolve_domain(sv, key_path(path, "domain"), manifest, names, what, r);
+  if (sv.geographic) resolve_geographic(*sv.geographic, manifest, what, key_path(path, "geographic"), r);
+  return r;
+}
+
+ResolvedSlice resolve_slice(const Slice& slice, const std::string& path,
+                            const format::Manifest& manifest, const Names& names,
+                            std::string_view what, ResolvedScene& out) {
+  const Axis* axes[3] = {&manifest.x, &manifest.y, &manifest.z};
+  ResolvedSlice r;
+  r.id = slice.id;
+  r.name = slice.name;
+  r.value = slice.value;
+  r.colormap = slice.colormap;
+  r.range = slice.range;
+  if (slice.is_level()) {
+    r.level_variable = names.variable(slice.level_var, key_path(key_path(path, "level"), "var"));
+    out.needed_variables.push_back(r.level_variable);
+  } else {
+    const std::size_t a = names.axis(slice.axis, key_path(path, "axis"));
+    const AxisRange e = extent(*axes[a]);
+    if (axes[a]->kind == AxisKind::kLongitude && (slice.value < e.lo || slice.value > e.hi)) {
+      // A meridian in another convention: the same meridian of the axis, if it has it.
+      const auto turns = longitude_turns(slice.value, slice.value, e.lo, e.hi);
+      if (!turns.empty()) r.value = slice.value - kFullTurn * turns.front();
+    }
+    if (r.value < e.lo || r.value > e.hi) {
+      fail(ErrorCode::kInvalidInput, what, key_path(path, "value"),
+           "{} lies outside the store's {} axis [{}, {}]", slice.value,
+           scene_detail::shown(slice.axis), e.lo, e.hi);
+    }
+    r.axis = static_cast<int>(a);
+  }
+  r.variable = names.variable(slice.var, key_path(path, "var"));
+  out.needed_variables.push_back(r.variable);
+  return r;
+}
+
 }  // namespace
 
 ResolvedScene resolve_scene(const Scene& scene, const format::Manifest& manifest,
                             std::string_view what) {
   validate_scene(scene, what);
   const Names names(manifest, what);
-  const std::size_t steps = manifest.time.size();
-  if (scene.time >= steps) {
-    if (steps == 0) {
-      fail(ErrorCode::kNotFound, what, "time", "time step {} is out of range: the store has no time steps",
-           scene.time);
-    }
-    fail(ErrorCode::kNotFound, what, "time",
-         "time step {} is out of range: the store has {} time steps (0..{})", scene.time, steps,
-         steps - 1);
-  }
+  check_time_step(scene.time, manifest.time.size(), what);
   ResolvedScene out;
   out.time = scene.time;
-  const Axis* axes[3] = {&manifest.x, &manifest.y, &manifest.z};
   for (std::size_t i = 0; i < scene.subvolumes.size(); ++i) {
-    const SubVolume& sv = scene.subvolumes[i];
-    const std::string path = index_path("subvolumes", i);
-    ResolvedSubVolume r;
-    r.id = sv.id;
-    r.name = sv.name;
-    for (std::size_t j = 0; j < sv.limits.size(); ++j) {
-      const Limit& l = sv.limits[j];
-      const std::string limit_path = index_path(key_path(path, "limits"), j);
-      r.limits.push_back(ResolvedLimit{names.variable(l.var, key_path(limit_path, "var")),
-                                       l.min.value_or(-kInf), l.max.value_or(kInf)});
-      out.needed_variables.push_back(r.limits.back().variable);
-    }
-    r.box.fill(AxisRange{-kInf, kInf});
-    for (const auto& [axis_name, range] : sv.domain) {
-      const std::string p = key_path(key_path(path, "domain"), axis_name);
-      const std::size_t a = names.axis(axis_name, p);
-      const AxisRange e = extent(*axes[a]);
-      if (axes[a]->kind == AxisKind::kLongitude) {
-        // Any convention: the range meets the axis at some whole turn (longitude_turns.h);
-        // a full turn or more is the whole axis.
-        if (range.hi - range.lo >= kFullTurn) {
-          r.box[a] = AxisRange{-kInf, kInf};
-          continue;
-        }
-        if (longitude_turns(range.lo, range.hi, e.lo, e.hi).empty()) {
-          fail(ErrorCode::kInvalidInput, what, p,
-               "[{}, {}] selects no longitude of the store's {} axis [{}, {}] (in any "
-               "convention: shifted by any multiple of 360 it stays outside)",
-               range.lo, range.hi, scene_detail::shown(axis_name), e.lo, e.hi);
-        }
-      } else if (range.hi < e.lo || range.lo > e.hi) {
-        fail(ErrorCode::kInvalidInput, what, p, "[{}, {}] lies outside the store's {} axis [{}, {}]",
-             range.lo, range.hi, scene_detail::shown(axis_name), e.lo, e.hi);
-      }
-      r.box[a] = range;
-    }
-    if (sv.geographic) resolve_geographic(*sv.geographic, manifest, what, key_path(path, "geographic"), r);
-    out.subvolumes.push_back(std::move(r));
+    out.subvolumes.push_back(resolve_subvolume(scene.subvolumes[i], index_path("subvolumes", i),
+                                               manifest, names, what, out));
   }
   for (std::size_t k = 0; k < scene.attributes.size(); ++k) {
     out.attributes.push_back(names.variable(scene.attributes[k], index_path("attributes", k)));
     out.needed_variables.push_back(out.attributes.back());
   }
   for (std::size_t i = 0; i < scene.slices.size(); ++i) {
-    const Slice& slice = scene.slices[i];
-    const std::string path = index_path("slices", i);
-    ResolvedSlice r;
-    r.id = slice.id;
-    r.name = slice.name;
-    r.value = slice.value;
-    r.colormap = slice.colormap;
-    r.range = slice.range;
-    if (slice.is_level()) {
-      r.level_variable = names.variable(slice.level_var, key_path(key_path(path, "level"), "var"));
-      out.needed_variables.push_back(r.level_variable);
-    } else {
-      const std::size_t a = names.axis(slice.axis, key_path(path, "axis"));
-      const AxisRange e = extent(*axes[a]);
-      if (axes[a]->kind == AxisKind::kLongitude && (slice.value < e.lo || slice.value > e.hi)) {
-        // A meridian in another convention: the same meridian of the axis, if it has it.
-        const auto turns = longitude_turns(slice.value, slice.value, e.lo, e.hi);
-        if (!turns.empty()) r.value = slice.value - kFullTurn * turns.front();
-      }
-      if (r.value < e.lo || r.value > e.hi) {
-        fail(ErrorCode::kInvalidInput, what, key_path(path, "value"),
-             "{} lies outside the store's {} axis [{}, {}]", slice.value,
-             scene_detail::shown(slice.axis), e.lo, e.hi);
-      }
-      r.axis = static_cast<int>(a);
-    }
-    r.variable = names.variable(slice.var, key_path(path, "var"));
-    out.needed_variables.push_back(r.variable);
-    out.slices.push_back(std::move(r));
+    out.slices.push_back(resolve_slice(scene.slices[i], index_path("slices", i), manifest, names,
+                                       what, out));
   }
   std::sort(out.needed_variables.begin(), out.needed_variables.end());
   out.needed_variables.erase(std::unique(out.needed_variables.begin(), out.needed_variables.end()),

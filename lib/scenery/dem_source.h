@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// A digital elevation model as the terrain reads it (issue 8, "Terrain"): a grid of
+// A digital elevation model as the viewer's terrain reads it: a grid of
 // width x height samples, each georeferenced to geographic longitude/latitude (WGS84
 // degrees), heights read window by window, never the whole grid at once.
 //

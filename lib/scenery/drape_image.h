@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// A georeferenced image draped over the terrain (issue 8: "draped with a georeferenced
-// image (any raster GDAL reads)"): RGB (bands 1-3) or greyscale (band 1), 8-bit values
-// (others are clamped to 0-255). Read per terrain tile, never whole: the part of the
-// image under a tile's vertices, at most max_size x max_size texels (GDAL takes coarser
-// samples, from overviews where the file has them), with each vertex's texture
-// coordinate found through the image's own georeferencing (its CRS from WGS84
-// longitude/latitude, then the inverse geotransform).
+// A georeferenced image draped over the terrain (any raster GDAL reads): RGB (bands
+// 1-3) or greyscale (band 1), 8-bit values (others are clamped to 0-255). Read per
+// terrain tile, never whole: the part of the image under a tile's vertices, at most
+// max_size x max_size texels (GDAL takes coarser samples, from overviews where the file
+// has them), with each vertex's texture coordinate found through the image's own
+// georeferencing (its CRS from WGS84 longitude/latitude, then the inverse geotransform).
 #pragma once
 
 #include <cstdint>

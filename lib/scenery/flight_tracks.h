@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Flight tracks for the viewer's geographic context (issue 8, "Trajectories"), read
+// Flight tracks for the viewer's geographic context (aircraft trajectories), read
 // from CF-NetCDF trajectory files (below) or from CSV: a header row naming the columns id, time, lon, lat, altitude (any order,
 // other columns ignored), then one row per position report. `time` is an ISO 8601 UTC
 // date-time ("2013-04-26T12:03:00Z"; a zone offset is allowed), `lon`/`lat` degrees,

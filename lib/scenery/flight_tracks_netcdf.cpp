@@ -12,6 +12,7 @@
 #include <cctype>
 #include <cmath>
 #include <mutex>
+#include <optional>
 #include <string>
 
 #include "core/error.h"
@@ -110,6 +111,102 @@ std::vector<std::string> track_ids(int ncid, std::size_t count, const std::strin
   return ids;
 }
 
+struct TrajectoryVariables {
+  Found time, lon, lat, alt;
+};
+
+TrajectoryVariables find_trajectory_variables(int ncid, const std::string& p) {
+  const TrajectoryVariables v{find_variable(ncid, "time", {"time"}),
+                              find_variable(ncid, "longitude", {"lon", "longitude"}),
+                              find_variable(ncid, "latitude", {"lat", "latitude"}),
+                              find_variable(ncid, "altitude", {"alt", "altitude", "height"})};
+  for (const auto& [found, what] : {std::pair{v.time, "time"}, std::pair{v.lon, "longitude"},
+                                    std::pair{v.lat, "latitude"}, std::pair{v.alt, "altitude"}}) {
+    if (found.varid < 0) {
+      throw make_error(ErrorCode::kInvalidInput, "{}: no {} variable (by standard_name or name)", p, what);
+    }
+  }
+  return v;
+}
+
+// Where each track's reports are (first, count): rows of a (trajectory, obs) array, or
+// runs given by a row_size variable (contiguous ragged array).
+std::vector<std::pair<std::size_t, std::size_t>> track_runs(int ncid, const Found& time,
+                                                            std::size_t samples,
+                                                            const std::string& p) {
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  const auto dims = ingest::variable_dimids(ncid, time.varid);
+  if (dims.size() == 2) {
+    const std::size_t tracks = ingest::dimension_length(ncid, dims[0]);
+    const std::size_t obs = ingest::dimension_length(ncid, dims[1]);
+    for (std::size_t i = 0; i < tracks; ++i) runs.emplace_back(i * obs, obs);
+  } else if (dims.size() == 1) {
+    int row_size = -1;
+    const int n = ingest::variable_count(ncid);
+    for (int v = 0; v < n && row_size < 0; ++v) {
+      if (ingest::has_attribute(ncid, v, "sample_dimension")) row_size = v;
+    }
+    if (row_size < 0) {
+      runs.emplace_back(0, samples);  // a single trajectory
+    } else {
+      const auto sizes = ingest::read_all_as_double(ncid, row_size, p + ": row_size");
+      std::size_t first = 0;
+      for (const double s : sizes) {
+        if (!(s >= 0) || first + static_cast<std::size_t>(s) > samples) {
+          throw make_error(ErrorCode::kInvalidInput,
+                           "{}: {}: row sizes add up to more than the {} samples", p,
+                           ingest::variable_name(ncid, row_size), samples);
+        }
+        runs.emplace_back(first, static_cast<std::size_t>(s));
+        first += static_cast<std::size_t>(s);
+      }
+    }
+  } else {
+    throw make_error(ErrorCode::kInvalidInput, "{}: {} has {} dimensions: expected (trajectory, obs) "
+                     "or one sample dimension", p, time.name, dims.size());
+  }
+  return runs;
+}
+
+// Every position report: time (in the file's units), longitude, latitude, altitude (in
+// the file's units), NaN where missing.
+struct Reports {
+  std::vector<double> t, x, y, z;
+};
+
+// Track `id`: the complete reports of one run, sorted by time, in seconds since
+// `earliest` (a Julian day) and metres (`to_m` per altitude unit); nothing when the run
+// has no complete report.
+std::optional<FlightTrack> track_of_run(const Reports& r, std::pair<std::size_t, std::size_t> run,
+                                        const std::string& id, const CfTimeUnits& units,
+                                        double earliest, double to_m, const std::string& lat_name,
+                                        const std::string& p) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = run.first; i < run.first + run.second; ++i) {
+    if (std::isfinite(r.t[i]) && std::isfinite(r.x[i]) && std::isfinite(r.y[i]) && std::isfinite(r.z[i])) {
+      if (r.y[i] < -90 || r.y[i] > 90) {
+        throw make_error(ErrorCode::kInvalidInput, "{}: {}[{}]: latitude {} outside [-90, 90]", p, lat_name, i, r.y[i]);
+      }
+      order.push_back(i);
+    }
+  }
+  if (order.empty()) return std::nullopt;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return r.t[a] < r.t[b]; });
+  FlightTrack track;
+  track.id = id;
+  for (const std::size_t i : order) {
+    const double s = (units.julian_day(r.t[i]) - earliest) * 86400.0;
+    if (!track.seconds.empty() && !(s > track.seconds.back())) {
+      throw make_error(ErrorCode::kInvalidInput, "{}: track '{}' has two reports at the same time", p, track.id);
+    }
+    track.seconds.push_back(s);
+    track.lon.push_back(r.x[i]);
+    track.lat.push_back(r.y[i]);
+    track.altitude_m.push_back(r.z[i] * to_m);
+  }
+  return track;
+}
+
 }  // namespace
 
 FlightTracks load_flight_tracks_netcdf(const std::filesystem::path& path) {
@@ -123,98 +220,35 @@ FlightTracks load_flight_tracks_netcdf(const std::filesystem::path& path) {
                      "{}: featureType '{}': flight tracks must be a CF trajectory file "
                      "(featureType = \"trajectory\")", p, feature);
   }
-  const Found time = find_variable(ncid, "time", {"time"});
-  const Found lon = find_variable(ncid, "longitude", {"lon", "longitude"});
-  const Found lat = find_variable(ncid, "latitude", {"lat", "latitude"});
-  const Found alt = find_variable(ncid, "altitude", {"alt", "altitude", "height"});
-  for (const auto& [found, what] : {std::pair{time, "time"}, std::pair{lon, "longitude"},
-                                    std::pair{lat, "latitude"}, std::pair{alt, "altitude"}}) {
-    if (found.varid < 0) {
-      throw make_error(ErrorCode::kInvalidInput, "{}: no {} variable (by standard_name or name)", p, what);
-    }
-  }
+  const auto [time, lon, lat, alt] = find_trajectory_variables(ncid, p);
   const auto units = parse_cf_time_units(ingest::text_attribute_or_empty(ncid, time.varid, "units"),
                                          ingest::text_attribute_or_empty(ncid, time.varid, "calendar"));
   const double to_m = metres_per_unit(ingest::text_attribute_or_empty(ncid, alt.varid, "units"),
                                       p + ": " + alt.name);
-  const auto t = read_values(ncid, time.varid, p + ": " + time.name);
-  const auto x = read_values(ncid, lon.varid, p + ": " + lon.name);
-  const auto y = read_values(ncid, lat.varid, p + ": " + lat.name);
-  const auto z = read_values(ncid, alt.varid, p + ": " + alt.name);
-  if (x.size() != t.size() || y.size() != t.size() || z.size() != t.size()) {
+  Reports r;
+  r.t = read_values(ncid, time.varid, p + ": " + time.name);
+  r.x = read_values(ncid, lon.varid, p + ": " + lon.name);
+  r.y = read_values(ncid, lat.varid, p + ": " + lat.name);
+  r.z = read_values(ncid, alt.varid, p + ": " + alt.name);
+  if (r.x.size() != r.t.size() || r.y.size() != r.t.size() || r.z.size() != r.t.size()) {
     throw make_error(ErrorCode::kInvalidInput,
                      "{}: {}, {}, {} and {} do not have the same shape", p, time.name, lon.name,
                      lat.name, alt.name);
   }
-
-  // Where each track's reports are: rows of a (trajectory, obs) array, or runs given by
-  // a row_size variable (contiguous ragged array).
-  std::vector<std::pair<std::size_t, std::size_t>> runs;  // first, count
-  const auto dims = ingest::variable_dimids(ncid, time.varid);
-  if (dims.size() == 2) {
-    const std::size_t tracks = ingest::dimension_length(ncid, dims[0]);
-    const std::size_t obs = ingest::dimension_length(ncid, dims[1]);
-    for (std::size_t i = 0; i < tracks; ++i) runs.emplace_back(i * obs, obs);
-  } else if (dims.size() == 1) {
-    int row_size = -1;
-    const int n = ingest::variable_count(ncid);
-    for (int v = 0; v < n && row_size < 0; ++v) {
-      if (ingest::has_attribute(ncid, v, "sample_dimension")) row_size = v;
-    }
-    if (row_size < 0) {
-      runs.emplace_back(0, t.size());  // a single trajectory
-    } else {
-      const auto sizes = ingest::read_all_as_double(ncid, row_size, p + ": row_size");
-      std::size_t first = 0;
-      for (const double s : sizes) {
-        if (!(s >= 0) || first + static_cast<std::size_t>(s) > t.size()) {
-          throw make_error(ErrorCode::kInvalidInput,
-                           "{}: {}: row sizes add up to more than the {} samples", p,
-                           ingest::variable_name(ncid, row_size), t.size());
-        }
-        runs.emplace_back(first, static_cast<std::size_t>(s));
-        first += static_cast<std::size_t>(s);
-      }
-    }
-  } else {
-    throw make_error(ErrorCode::kInvalidInput, "{}: {} has {} dimensions: expected (trajectory, obs) "
-                     "or one sample dimension", p, time.name, dims.size());
-  }
-
+  const auto runs = track_runs(ncid, time, r.t.size(), p);
   const auto ids = track_ids(ncid, runs.size(), p);
   FlightTracks out;
   double earliest = INFINITY;
-  for (const double v : t) {
+  for (const double v : r.t) {
     if (std::isfinite(v)) earliest = std::min(earliest, units.julian_day(v));
   }
   if (!std::isfinite(earliest)) throw make_error(ErrorCode::kInvalidInput, "{}: no position reports", p);
   out.reference_julian_day = earliest;
-  for (std::size_t r = 0; r < runs.size(); ++r) {
-    std::vector<std::size_t> order;
-    for (std::size_t i = runs[r].first; i < runs[r].first + runs[r].second; ++i) {
-      if (std::isfinite(t[i]) && std::isfinite(x[i]) && std::isfinite(y[i]) && std::isfinite(z[i])) {
-        if (y[i] < -90 || y[i] > 90) {
-          throw make_error(ErrorCode::kInvalidInput, "{}: {}[{}]: latitude {} outside [-90, 90]", p, lat.name, i, y[i]);
-        }
-        order.push_back(i);
-      }
-    }
-    if (order.empty()) continue;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return t[a] < t[b]; });
-    FlightTrack track;
-    track.id = ids[r];
-    for (const std::size_t i : order) {
-      const double s = (units.julian_day(t[i]) - earliest) * 86400.0;
-      if (!track.seconds.empty() && !(s > track.seconds.back())) {
-        throw make_error(ErrorCode::kInvalidInput, "{}: track '{}' has two reports at the same time", p, track.id);
-      }
-      track.seconds.push_back(s);
-      track.lon.push_back(x[i]);
-      track.lat.push_back(y[i]);
-      track.altitude_m.push_back(z[i] * to_m);
-    }
-    out.reports += track.size();
-    out.tracks.push_back(std::move(track));
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    auto track = track_of_run(r, runs[i], ids[i], units, earliest, to_m, lat.name, p);
+    if (!track) continue;
+    out.reports += track->size();
+    out.tracks.push_back(std::move(*track));
   }
   return out;
 }
