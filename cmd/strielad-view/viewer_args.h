@@ -42,7 +42,7 @@ struct ViewerArgs {
   std::string sun = "time";  // "time": the true sun at the simulation time; "fixed"
   // With "fixed": towards the sun in the world frame (x east, y north, z up); unset: the
   // built-in light. Set from the scene's "sun" {"elevation", "azimuth"}.
-  std::optional<lod::Vec3> sun_fixed_direction;
+  std::optional<Vec3> sun_fixed_direction;
   bool sun_given = false;  // --sun was on the command line (it overrides the scene)
   bool sun_time_asked = false;  // the scene asks for {"mode": "time"} (not a default)
   std::string tracks_file;   // flight tracks CSV (scenery/flight_tracks.h)

@@ -245,7 +245,7 @@ ViewerArgs with_scene_settings(ViewerArgs args) {
     constexpr double kRad = std::numbers::pi / 180.0;
     const double el = scene.sun->elevation_deg * kRad, az = scene.sun->azimuth_deg * kRad;
     args.sun = "fixed";
-    args.sun_fixed_direction = lod::Vec3{std::sin(az) * std::cos(el), std::cos(az) * std::cos(el),
+    args.sun_fixed_direction = Vec3{std::sin(az) * std::cos(el), std::cos(az) * std::cos(el),
                                          std::sin(el)};
   }
   return args;

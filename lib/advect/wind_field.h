@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// A wind field between two output time steps on a rectilinear grid (issue 6): u, v, w at
-// t0 and t1, trilinear in space on the real (non-uniform, possibly descending) axes and
-// linear in time, turned into the rate of change of a point's axis coordinates.
+// A wind field between two output time steps on a rectilinear grid: u, v, w at t0 and
+// t1, trilinear in space on the real (non-uniform, possibly descending) axes and linear
+// in time, turned into the rate of change of a point's axis coordinates.
 //
 // Units (R = 6,371,008.8 m, the IUGG mean Earth radius, as lod/world_frame.h):
 // - geographic x/y (longitude/latitude in degrees), u/v in m/s:
@@ -21,11 +21,11 @@
 #include <functional>
 #include <vector>
 
+#include "core/vec3.h"
+
 namespace strielad::advect {
 
 inline constexpr double kEarthRadiusM = 6371008.8;
-
-using Vec3 = std::array<double, 3>;
 
 enum class Horizontal { kDegrees, kMetres };
 enum class Vertical { kMetres, kPascals };

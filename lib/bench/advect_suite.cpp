@@ -20,7 +20,6 @@
 namespace strielad::bench {
 namespace {
 
-using advect::Vec3;
 using Clock = std::chrono::steady_clock;
 using Formula = advect::WindFormula;
 using Exact = std::function<Vec3(const Vec3& start, double t)>;

@@ -10,9 +10,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/vec3.h"
+
 namespace strielad::bench {
 
-using Point3 = std::array<double, 3>;
+using Point3 = Vec3;
 using Triangle3 = std::array<std::uint32_t, 3>;
 
 // A static k-d tree over points, each carrying its index in the input.

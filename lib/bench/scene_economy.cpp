@@ -57,19 +57,19 @@ std::vector<NamedScene> typical_scenes(const format::Manifest& m) {
 
 std::vector<NamedCamera> typical_cameras(const lod::WorldFrame& frame, double aspect) {
   const lod::WorldBox& d = frame.domain();
-  const lod::Vec3 size = lod::sub(d.hi, d.lo);
+  const Vec3 size = sub(d.hi, d.lo);
   const double width = std::max(size[0], size[1]);
-  const lod::Vec3 ground{d.lo[0] + 0.5 * size[0], d.lo[1] + 0.5 * size[1], d.lo[2]};
+  const Vec3 ground{d.lo[0] + 0.5 * size[0], d.lo[1] + 0.5 * size[1], d.lo[2]};
   const double fov = 45;
   const double elevation = 50 * std::acos(-1.0) / 180;
   const double distance = d.radius() / std::sin(0.5 * fov * std::acos(-1.0) / 180);
-  const lod::Vec3 overview_eye{ground[0], ground[1] - distance * std::cos(elevation),
+  const Vec3 overview_eye{ground[0], ground[1] - distance * std::cos(elevation),
                                ground[2] + distance * std::sin(elevation)};
   const double down = 25 * std::acos(-1.0) / 180;
-  const lod::Vec3 oblique_eye{ground[0], ground[1] - 0.12 * width,
+  const Vec3 oblique_eye{ground[0], ground[1] - 0.12 * width,
                               ground[2] + 0.12 * width * std::tan(down)};
-  const lod::Vec3 spot{d.lo[0] + 0.3 * size[0], d.lo[1] + 0.6 * size[1], d.lo[2]};
-  const lod::Vec3 top_eye{spot[0], spot[1], spot[2] + 0.25 * width};
+  const Vec3 spot{d.lo[0] + 0.3 * size[0], d.lo[1] + 0.6 * size[1], d.lo[2]};
+  const Vec3 top_eye{spot[0], spot[1], spot[2] + 0.25 * width};
   return {
       {"overview", lod::look_at(overview_eye, d.center(), fov, aspect, d)},
       {"low oblique", lod::look_at(oblique_eye, ground, fov, aspect, d)},

@@ -53,6 +53,7 @@ struct ExtractStats {
   std::uint64_t clipped_tets = 0;   // tetrahedra clipped by the general polytope clipper
   std::uint64_t conditions = 0;     // half-space conditions left after trivial ones
   bool empty_by_condition = false;  // some condition excludes the whole node
+  friend bool operator==(const ExtractStats&, const ExtractStats&) = default;
 };
 
 }  // namespace strielad

@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "extract/vec3.h"
+#include "core/vec3.h"
 
 namespace strielad {
 

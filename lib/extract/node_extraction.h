@@ -33,24 +33,29 @@ enum class NodeOutcome : std::uint8_t {
 
 std::string_view node_outcome_name(NodeOutcome outcome);
 
+// One sub-volume's outcome in a node. Also the protocol's form of it (protocol/messages.h,
+// NodeResult), which carries every field but `stats`.
 struct SubVolumeResult {
   std::uint32_t subvolume_id = 0;
   NodeOutcome outcome = NodeOutcome::kEmpty;
   std::string reason;  // for skips: which variable or axis, and the ranges
   Mesh mesh;
   ExtractStats stats;
+  friend bool operator==(const SubVolumeResult&, const SubVolumeResult&) = default;
 };
 
 // One slice's outcome in a node (formats/scene.md, "Slices"): kMesh with a mesh of face
 // kind kSlice and one attribute (the colouring variable), kEmpty, or a skip decided
 // from the node's box and index alone: kSkippedDomain (the plane misses the node, or
 // lies on its upper face that the neighbouring node draws), kSkippedValueRange (the
-// level's value is outside the node's range of its variable), kSkippedNoData.
+// level's value is outside the node's range of its variable), kSkippedNoData. Also the
+// protocol's form of it (protocol/messages.h, NodeResult, version 2).
 struct SliceResult {
   std::uint32_t slice_id = 0;
   NodeOutcome outcome = NodeOutcome::kEmpty;
   std::string reason;
   Mesh mesh;
+  friend bool operator==(const SliceResult&, const SliceResult&) = default;
 };
 
 struct NodeExtraction {

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "core/error.h"
-#include "extract/vec3.h"
+#include "core/vec3.h"
 #include "geo/standard_atmosphere.h"
 #include "grid/units.h"
 

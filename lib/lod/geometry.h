@@ -1,35 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 // The small amount of 3-D geometry the level-of-detail code needs, in the world frame
-// (lod/world_frame.h: right-handed, kilometres, z up): vectors, axis-aligned boxes and
-// the solid angle a box's bounding sphere covers. Header-only, no allocation.
+// (lod/world_frame.h: right-handed, kilometres, z up): axis-aligned boxes of Vec3
+// (core/vec3.h) and the solid angle a box's bounding sphere covers. Header-only, no
+// allocation.
 #pragma once
 
-#include <array>
 #include <cmath>
 #include <numbers>
 
+#include "core/vec3.h"
+
 namespace strielad::lod {
-
-using Vec3 = std::array<double, 3>;
-
-inline Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-inline Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline Vec3 scale(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double length(const Vec3& a) { return std::sqrt(dot(a, a)); }
-// a / |a|; the zero vector stays zero.
-inline Vec3 normalize(const Vec3& a) {
-  const double n = length(a);
-  return n > 0 ? scale(a, 1.0 / n) : a;
-}
-// a + s (b - a)
-inline Vec3 lerp(const Vec3& a, const Vec3& b, double s) { return add(a, scale(sub(b, a), s)); }
-inline bool all_finite(const Vec3& a) {
-  return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
-}
 
 // Axis-aligned box, lo <= hi per axis (a degenerate, flat box is allowed).
 struct WorldBox {

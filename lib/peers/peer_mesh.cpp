@@ -5,16 +5,10 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "core/vec3.h"
+
 namespace strielad::peers {
 namespace {
-
-using Vec = std::array<double, 3>;
-
-Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec cross(const Vec& a, const Vec& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double norm(const Vec& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
 // Index of the cell of axis `axis` containing fractional index `index`, in [0, n-2].
 std::size_t cell_of(const NodeSamples& samples, int axis, double index) {
@@ -43,18 +37,18 @@ EdgeCounts count_open_edges(const Mesh& mesh) {
 }
 
 void compute_vertex_normals(Mesh& mesh) {
-  std::vector<Vec> sums(mesh.positions.size(), Vec{0, 0, 0});
+  std::vector<Vec3> sums(mesh.positions.size(), Vec3{0, 0, 0});
   for (const auto& t : mesh.triangles) {
-    const Vec& p0 = mesh.positions[t[0]];
+    const Vec3& p0 = mesh.positions[t[0]];
     // Unnormalised cross product: weighted by twice the triangle's area.
-    const Vec n = cross(sub(mesh.positions[t[1]], p0), sub(mesh.positions[t[2]], p0));
+    const Vec3 n = cross(sub(mesh.positions[t[1]], p0), sub(mesh.positions[t[2]], p0));
     for (std::uint32_t v : t) {
       for (int a = 0; a < 3; ++a) sums[v][a] += n[a];
     }
   }
   mesh.normals.resize(mesh.positions.size());
   for (std::size_t v = 0; v < sums.size(); ++v) {
-    const double len = norm(sums[v]);
+    const double len = length(sums[v]);
     if (len > 0 && std::isfinite(len)) {
       mesh.normals[v] = {float(sums[v][0] / len), float(sums[v][1] / len), float(sums[v][2] / len)};
     } else {
@@ -78,15 +72,15 @@ double axis_spacing_at(const NodeSamples& samples, int axis, double index) {
 void map_index_mesh_to_axes(Mesh& mesh, const NodeSamples& samples) {
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     auto& p = mesh.positions[v];
-    Vec spacing{};
+    Vec3 spacing{};
     for (int a = 0; a < 3; ++a) {
       spacing[a] = axis_spacing_at(samples, a, p[a]);
       p[a] = index_to_axis(samples, a, p[a]);
     }
     if (v < mesh.normals.size()) {
       auto& n = mesh.normals[v];
-      const Vec m{n[0] / spacing[0], n[1] / spacing[1], n[2] / spacing[2]};
-      const double len = norm(m);
+      const Vec3 m{n[0] / spacing[0], n[1] / spacing[1], n[2] / spacing[2]};
+      const double len = length(m);
       if (len > 0 && std::isfinite(len)) {
         n = {float(m[0] / len), float(m[1] / len), float(m[2] / len)};
       }

@@ -213,9 +213,9 @@ void validate_results(const std::vector<Result>& results, std::string_view list,
 // The mesh itself is checked by encode_mesh / decode_mesh.
 void validate(const NodeResult& m, const Rules& r) {
   validate_results(m.subvolumes, "subvolumes", kMaxSubVolumes, kMaxSubVolumeId, "subvolume_id",
-                   [](const SubVolumeResultWire& s) { return s.subvolume_id; }, r);
+                   [](const SubVolumeResult& s) { return s.subvolume_id; }, r);
   validate_results(m.slices, "slices", kMaxSliceResults, kMaxSliceId, "slice_id",
-                   [](const SliceResultWire& s) { return s.slice_id; }, r);
+                   [](const SliceResult& s) { return s.slice_id; }, r);
 }
 
 void validate(const NodeFailed& m, const Rules& r) {
@@ -308,7 +308,7 @@ void write(const NodeResult& m, ByteWriter& w, const Rules& r) {
   w.u32(m.node);
   w.u32(static_cast<std::uint32_t>(m.subvolumes.size()));
   for (std::size_t i = 0; i < m.subvolumes.size(); ++i) {
-    const SubVolumeResultWire& s = m.subvolumes[i];
+    const SubVolumeResult& s = m.subvolumes[i];
     w.u32(s.subvolume_id);
     w.u8(static_cast<std::uint8_t>(s.outcome));
     put_str16(w, s.reason);
@@ -319,7 +319,7 @@ void write(const NodeResult& m, ByteWriter& w, const Rules& r) {
   if (m.slices.empty()) return;  // no slice list, no flag: a version-1 payload
   w.u32(static_cast<std::uint32_t>(m.slices.size()));
   for (std::size_t i = 0; i < m.slices.size(); ++i) {
-    const SliceResultWire& s = m.slices[i];
+    const SliceResult& s = m.slices[i];
     w.u32(s.slice_id);
     w.u8(static_cast<std::uint8_t>(s.outcome));
     put_str16(w, s.reason);
@@ -498,7 +498,7 @@ NodeResult read_node_result(PayloadReader& p, std::uint16_t flags) {
   m.node = p.in().u32("node");
   m.subvolumes.resize(p.count("subvolumes", kMaxSubVolumes, kMinSubVolumeBytes));
   for (std::size_t i = 0; i < m.subvolumes.size(); ++i) {
-    SubVolumeResultWire& s = m.subvolumes[i];
+    SubVolumeResult& s = m.subvolumes[i];
     read_result(p, fmt::format("subvolumes[{}]", i), "subvolume_id", MeshRole::kSubVolume,
                 s.subvolume_id, s);
   }
@@ -509,7 +509,7 @@ NodeResult read_node_result(PayloadReader& p, std::uint16_t flags) {
   }
   m.slices.resize(slices);
   for (std::size_t i = 0; i < m.slices.size(); ++i) {
-    SliceResultWire& s = m.slices[i];
+    SliceResult& s = m.slices[i];
     read_result(p, fmt::format("slices[{}]", i), "slice_id", MeshRole::kSlice, s.slice_id, s);
   }
   return m;

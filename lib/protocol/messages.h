@@ -171,35 +171,20 @@ struct GenerationStarted {
   friend bool operator==(const GenerationStarted&, const GenerationStarted&) = default;
 };
 
-// One sub-volume's outcome in a node. `mesh` is set (non-empty) only for kMesh; it
-// arrives quantized (protocol/mesh_encoding.h), so positions are within the quantum
-// of the server's.
-struct SubVolumeResultWire {
-  std::uint32_t subvolume_id = 0;
-  NodeOutcome outcome = NodeOutcome::kEmpty;
-  std::string reason;  // for skips
-  Mesh mesh;
-  friend bool operator==(const SubVolumeResultWire&, const SubVolumeResultWire&) = default;
-};
-
-// One slice's outcome in a node (version 2). `mesh` is set only for kMesh: face kind 4
-// (FaceKind::kSlice) on every triangle and one attribute, the slice's colouring
-// variable (named by the scene, not on the wire); mesh.subvolume_id is the slice id.
-struct SliceResultWire {
-  std::uint32_t slice_id = 0;
-  NodeOutcome outcome = NodeOutcome::kEmpty;
-  std::string reason;  // for skips
-  Mesh mesh;
-  friend bool operator==(const SliceResultWire&, const SliceResultWire&) = default;
-};
-
+// One node's results: the extraction's own SubVolumeResult and SliceResult
+// (extract/node_extraction.h), of which the wire carries the id, outcome, reason and
+// mesh (a decoded SubVolumeResult has default `stats`). `mesh` is set (non-empty) only
+// for kMesh; it arrives quantized (protocol/mesh_encoding.h), so positions are within
+// the quantum of the server's, and without attribute names (the client knows them from
+// the scene). A slice's mesh has face kind 4 (FaceKind::kSlice) on every triangle and
+// one attribute, the slice's colouring variable; mesh.subvolume_id is the slice id.
 struct NodeResult {
   std::uint32_t generation = 0;
   NodeId node = 0;
-  std::vector<SubVolumeResultWire> subvolumes;  // in scene order
+  std::vector<SubVolumeResult> subvolumes;  // in scene order
   // In the scene's slice order; only on a connection of version 2 or later (the frame
   // then has kFrameFlagSlices). Empty: no slice list on the wire.
-  std::vector<SliceResultWire> slices{};
+  std::vector<SliceResult> slices{};
   friend bool operator==(const NodeResult&, const NodeResult&) = default;
 };
 

@@ -152,7 +152,7 @@ SliceDrawing::SliceDrawing() {
 
 void SliceDrawing::draw(const GpuMeshes& meshes, const lod::Mat4& view_projection,
                         double vertical_exaggeration, const std::vector<SliceStyle>& styles,
-                        const lod::Vec3& sun) {
+                        const Vec3& sun) {
   bool any = false;
   for (const auto& [node, mesh] : meshes.meshes()) any = any || mesh.slice_index_count > 0;
   if (!any) return;

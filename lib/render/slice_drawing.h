@@ -51,7 +51,7 @@ class SliceDrawing {
   // unit; zero: lit from straight above). Binds texture unit kTextureUnit.
   void draw(const GpuMeshes& meshes, const lod::Mat4& view_projection,
             double vertical_exaggeration, const std::vector<SliceStyle>& styles,
-            const lod::Vec3& sun);
+            const Vec3& sun);
 
   static constexpr GLuint kTextureUnit = 15;
 

@@ -86,7 +86,7 @@ TerrainDrawing::TerrainDrawing() {
 
 TerrainDrawStats TerrainDrawing::draw(const view::TerrainFrame& frame,
                                       const lod::Mat4& view_projection,
-                                      double vertical_exaggeration, const lod::Vec3& sun) {
+                                      double vertical_exaggeration, const Vec3& sun) {
   TerrainDrawStats stats;
   ++frame_;
   const GLuint p = program_.get();
@@ -95,7 +95,7 @@ TerrainDrawStats TerrainDrawing::draw(const view::TerrainFrame& frame,
                             view_projection.data());
   glProgramUniform1f(p, glGetUniformLocation(p, "u_vertical_exaggeration"),
                      static_cast<float>(vertical_exaggeration));
-  const lod::Vec3 s = lod::normalize(sun);
+  const Vec3 s = normalize(sun);
   glProgramUniform3f(p, glGetUniformLocation(p, "u_sun"), float(s[0]), float(s[1]), float(s[2]));
   glProgramUniform4f(p, glGetUniformLocation(p, "u_clip"), float(frame.clip.lo[0]),
                      float(frame.clip.lo[1]), float(frame.clip.hi[0]), float(frame.clip.hi[1]));

@@ -31,7 +31,7 @@ class TerrainDrawing {
   // Draws into the bound framebuffer with depth test and depth writes on; uploads tiles
   // it has not seen and forgets those unused for a while.
   TerrainDrawStats draw(const view::TerrainFrame& frame, const lod::Mat4& view_projection,
-                        double vertical_exaggeration, const lod::Vec3& sun_direction);
+                        double vertical_exaggeration, const Vec3& sun_direction);
 
  private:
   struct GpuTile {

@@ -22,7 +22,7 @@ GLint location(GLuint program, const char* name) { return glGetUniformLocation(p
 void set_mat4(GLuint program, const char* name, const lod::Mat4& m) {
   glProgramUniformMatrix4fv(program, location(program, name), 1, GL_FALSE, m.data());
 }
-void set_vec3(GLuint program, const char* name, const lod::Vec3& v) {
+void set_vec3(GLuint program, const char* name, const Vec3& v) {
   glProgramUniform3f(program, location(program, name), static_cast<float>(v[0]),
                      static_cast<float>(v[1]), static_cast<float>(v[2]));
 }

@@ -56,7 +56,7 @@ struct RenderSettings {
 struct FrameInputs {
   lod::Camera camera;                  // world frame at the current exaggeration
   double vertical_exaggeration = 10.0;
-  lod::Vec3 sun_direction{0.3, -0.5, 0.8};  // towards the sun, world frame
+  Vec3 sun_direction{0.3, -0.5, 0.8};  // towards the sun, world frame
   double time_seconds = 0;             // passed to color()
   bool mirrored = false;               // view::GeometryPlacer::mirrored()
   // Node boxes to outline (world frame), with an RGBA colour each; empty: none.

@@ -8,13 +8,13 @@
 
 #include "advect/integrators.h"
 #include "core/error.h"
-#include "robust/level_samples.h"
+#include "store/level_samples.h"
 
 namespace strielad::robust {
 namespace {
 
 advect::WindSlice wind_slice(const Store& store, std::uint32_t step) {
-  const LevelSamples level = read_level_samples(store, step, 0, 0);
+  const LevelSamples<double> level = read_level_samples<double>(store, step, 0, 0);
   advect::WindSlice slice;
   slice.u.reserve(level.values.size());
   for (double v : level.values) slice.u.push_back(static_cast<float>(v));
@@ -58,7 +58,7 @@ StageFindings check_advection(const Store& store) {
   };
   struct Start {
     std::string name;
-    advect::Vec3 p;
+    Vec3 p;
     bool outside = false;
   };
   const std::vector<Start> starts{

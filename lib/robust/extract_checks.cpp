@@ -15,8 +15,8 @@
 #include "grid/longitude_turns.h"
 #include "peers/vtk_paper_pipeline.h"
 #include "robust/case_reference.h"
-#include "robust/level_samples.h"
 #include "serve/server.h"
+#include "store/level_samples.h"
 
 namespace strielad::robust {
 namespace {
@@ -56,7 +56,7 @@ struct VolumeBounds {
   double lower = 0, upper = 0;
 };
 
-VolumeBounds limit_volume_bounds(const LevelSamples& level, const IndexBox& box,
+VolumeBounds limit_volume_bounds(const LevelSamples<double>& level, const IndexBox& box,
                                  const NodeGeometry& g, const ResolvedLimit& limit) {
   VolumeBounds b;
   const auto& d = level.dims;
@@ -81,7 +81,7 @@ VolumeBounds limit_volume_bounds(const LevelSamples& level, const IndexBox& box,
   return b;
 }
 
-bool any_missing(const LevelSamples& level, const IndexBox& box) {
+bool any_missing(const LevelSamples<double>& level, const IndexBox& box) {
   const auto& d = level.dims;
   for (std::size_t z = box.lo[2]; z <= box.hi[2]; ++z)
     for (std::size_t y = box.lo[1]; y <= box.hi[1]; ++y)
@@ -317,7 +317,7 @@ std::vector<NodeReference> reference_ranges(const ExtremeCase& c, const Store& s
   const std::vector<std::vector<double>> level0 = reference_level0(c);
   std::vector<NodeReference> ranges = reference_node_stats(layout, level0.at(0));
   for (std::size_t level = 1; level < layout.level_count(); ++level) {
-    widen_to_level_samples(ranges, layout, level, read_level_samples(store, 0, 0, level).values);
+    widen_to_level_samples(ranges, layout, level, read_level_samples<double>(store, 0, 0, level).values);
   }
   return ranges;
 }
@@ -331,7 +331,7 @@ struct LevelCheck {
   const Store& store;
   const ResolvedScene& scene;
   const std::vector<NodeReference>& ranges;
-  const LevelSamples& samples;
+  const LevelSamples<double>& samples;
   std::size_t level;
   bool longitude_x;
 };
@@ -445,7 +445,7 @@ StageFindings check_extraction(const ExtremeCase& c, const Store& store, int thr
       f.refusal = fmt::format("level {}: {}", level, e.what());
       return f;
     }
-    const LevelSamples samples = read_level_samples(store, 0, 0, level);
+    const LevelSamples<double> samples = read_level_samples<double>(store, 0, 0, level);
     const LevelCheck lc{store, scene, ranges, samples, level, longitude_x};
     for (const NodeExtraction& node : result.nodes) check_node(lc, node, f, tally);
     if (c.check_unions) check_unions(store, scene, result, level, f, unions);

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "robust/case_reference.h"
-#include "robust/level_samples.h"
+#include "store/level_samples.h"
 
 namespace strielad::robust {
 namespace {
@@ -30,7 +30,7 @@ StageFindings check_statistics(const Store& store, const std::vector<std::vector
     const auto entries = store.index(step, 0);
     std::vector<NodeReference> ref = reference_node_stats(layout, level0.at(step));
     for (std::size_t level = 1; level < layout.level_count(); ++level) {
-      widen_to_level_samples(ref, layout, level, read_level_samples(store, step, 0, level).values);
+      widen_to_level_samples(ref, layout, level, read_level_samples<double>(store, step, 0, level).values);
     }
     for (NodeId n = 0; n < entries.size(); ++n) {
       const auto& e = entries[n];
@@ -80,7 +80,7 @@ StageFindings check_levels(const ExtremeCase& c, const Store& store,
   std::uint64_t exact = 0, means = 0;
   double worst = 0;  // largest error / bound of a fallback mean
   for (std::uint32_t step = 0; step < store.step_count(); ++step) {
-    LevelSamples fine = read_level_samples(store, step, 0, 0);
+    LevelSamples<double> fine = read_level_samples<double>(store, step, 0, 0);
     if (fine.shared_mismatches) {
       f.problem("step {} level 0: {} shared samples differ between bricks", step,
                 fine.shared_mismatches);
@@ -94,7 +94,7 @@ StageFindings check_levels(const ExtremeCase& c, const Store& store,
     exact += fine.values.size();
     for (std::size_t level = 0; level + 1 < layout.level_count(); ++level) {
       const CoarseReference ref = reference_downsample(layout, level, fine.values, is_double);
-      LevelSamples coarse = read_level_samples(store, step, 0, level + 1);
+      LevelSamples<double> coarse = read_level_samples<double>(store, step, 0, level + 1);
       if (coarse.shared_mismatches) {
         f.problem("step {} level {}: {} shared samples differ between bricks", step, level + 1,
                   coarse.shared_mismatches);

@@ -3,6 +3,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <stop_token>
@@ -168,6 +169,16 @@ int MpiMaster::place_locked(const NodeTask& task, bool may_steal) const {
   return best;
 }
 
+void MpiMaster::send_scene_locked(int rank, const NodeTask& task) {
+  std::deque<std::uint64_t>& held = workers_[static_cast<std::size_t>(rank)].scenes;
+  const std::uint64_t id = task.scene_source->id;
+  if (std::find(held.begin(), held.end(), id) != held.end()) return;
+  outbox_.push_back(
+      {rank, mpi::kScene, mpi::encode(mpi::SceneDefinition{id, task.dataset, task.scene_source->json})});
+  held.push_back(id);
+  if (held.size() > mpi::kWorkerScenes) held.pop_front();  // as the worker forgets it
+}
+
 std::shared_ptr<MpiMaster::Pending> MpiMaster::run_task(const NodeTask& task, bool prefetch,
                                                        const YieldCheck* should_yield) {
   if (task.stop.stop_requested()) return nullptr;
@@ -184,8 +195,8 @@ std::shared_ptr<MpiMaster::Pending> MpiMaster::run_task(const NodeTask& task, bo
     request.kind = prefetch ? mpi::TaskKind::kPrefetch : mpi::TaskKind::kExtract;
     request.generation = task.generation;
     request.node = task.node;
-    request.dataset = task.dataset;
-    request.scene_json = task.scene_json;
+    request.scene = task.scene_source->id;
+    send_scene_locked(p->rank, task);
     outbox_.push_back({p->rank, mpi::kTask, mpi::encode(request)});
   }
   wake_.notify_one();

@@ -10,7 +10,8 @@
 // time step and every client of that node meet the same brick cache (prefetching of the
 // next step too); when that rank already runs as many tasks as it has threads and
 // another has a free one, the task goes to the least busy one instead. Prefetches always
-// go to the node's own rank.
+// go to the node's own rank. A generation's scene goes to a worker once, before its
+// first task there (lib/serve/mpi_messages.h); tasks name it by its id.
 #pragma once
 
 #include <condition_variable>
@@ -63,6 +64,8 @@ class MpiMaster {
     unsigned threads = 1;
     unsigned in_flight = 0;  // sent and not yet replied to (cancelled ones too)
     BrickCacheStats cache;   // as of its latest reply
+    // Ids of the scenes it holds, oldest first (mirrors the worker's list: mpi_messages.h).
+    std::deque<std::uint64_t> scenes;
   };
   struct Outgoing {
     int rank;
@@ -75,6 +78,8 @@ class MpiMaster {
   std::shared_ptr<Pending> run_task(const NodeTask& task, bool prefetch,
                                     const YieldCheck* should_yield);
   int place_locked(const NodeTask& task, bool may_steal) const;
+  // Queues the task's scene for `rank` unless the worker holds it already.
+  void send_scene_locked(int rank, const NodeTask& task);
   void pump();  // the MPI loop, until body_done_
   void handle(MpiChannel::Message message);
   void stop_workers();

@@ -58,14 +58,31 @@ WorkerReady decode_ready(std::span<const std::byte> bytes) {
   return m;
 }
 
+std::vector<std::byte> encode(const SceneDefinition& m) {
+  ByteWriter w;
+  w.u64(m.id);
+  put_text(w, m.dataset);
+  put_text(w, m.scene_json);
+  return w.take();
+}
+
+SceneDefinition decode_scene(std::span<const std::byte> bytes) {
+  ByteReader r(bytes, "MPI message Scene");
+  SceneDefinition m;
+  m.id = r.u64("id");
+  m.dataset = get_text(r, "dataset");
+  m.scene_json = get_text(r, "scene_json");
+  expect_end(r, "Scene");
+  return m;
+}
+
 std::vector<std::byte> encode(const TaskRequest& m) {
   ByteWriter w;
   w.u64(m.id);
   w.u8(static_cast<std::uint8_t>(m.kind));
   w.u32(m.generation);
   w.u32(m.node);
-  put_text(w, m.dataset);
-  put_text(w, m.scene_json);
+  w.u64(m.scene);
   return w.take();
 }
 
@@ -80,8 +97,7 @@ TaskRequest decode_task(std::span<const std::byte> bytes) {
   m.kind = static_cast<TaskKind>(kind);
   m.generation = r.u32("generation");
   m.node = r.u32("node");
-  m.dataset = get_text(r, "dataset");
-  m.scene_json = get_text(r, "scene_json");
+  m.scene = r.u64("scene");
   expect_end(r, "Task");
   return m;
 }

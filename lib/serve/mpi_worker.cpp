@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <condition_variable>
 #include <deque>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -29,8 +28,6 @@ namespace strielad::serve {
 
 namespace {
 
-constexpr std::size_t kSceneCacheEntries = 32;
-
 // An error message as a NodeFailed may carry it (protocol::kMaxMessageTextBytes).
 std::string clipped(std::string text) {
   if (text.size() <= protocol::kMaxMessageTextBytes) return text;
@@ -39,6 +36,28 @@ std::string clipped(std::string text) {
   if (!text.empty() && (static_cast<unsigned char>(text.back()) & 0x80)) text.pop_back();
   return text + "...";
 }
+
+// A scene rank 0 sent (mpi::SceneDefinition), parsed and resolved by the first task that
+// needs it; the tasks after it share the result.
+class WorkerScene {
+ public:
+  explicit WorkerScene(mpi::SceneDefinition definition) : definition_(std::move(definition)) {}
+  const std::string& dataset() const { return definition_.dataset; }
+  // \error the scene's parse and resolve errors (then the next task tries again).
+  std::shared_ptr<const ResolvedScene> resolved(const Store& store) {
+    std::lock_guard lock(mutex_);
+    if (!resolved_) {
+      const Scene scene = parse_scene(definition_.scene_json, "scene");
+      resolved_ = std::make_shared<const ResolvedScene>(resolve_scene(scene, store.manifest(), "scene"));
+    }
+    return resolved_;
+  }
+
+ private:
+  const mpi::SceneDefinition definition_;
+  std::mutex mutex_;
+  std::shared_ptr<const ResolvedScene> resolved_;
+};
 
 class Worker {
  public:
@@ -60,6 +79,7 @@ class Worker {
  private:
   struct Job {
     mpi::TaskRequest request;
+    std::shared_ptr<WorkerScene> scene;
     std::stop_source stop;
     bool running = false;
   };
@@ -67,8 +87,7 @@ class Worker {
   void serve_until_stop();
   void executor_loop();
   mpi::TaskReply run_job(const Job& job);
-  std::shared_ptr<const ResolvedScene> scene_for(const std::string& dataset, const std::string& json,
-                                                 const Store& store);
+  void keep_scene(mpi::SceneDefinition definition);
   void accept(mpi::TaskRequest request);
   void cancel(std::uint64_t id);
   std::vector<std::byte> cancelled_reply_locked(std::uint64_t id);
@@ -91,9 +110,9 @@ class Worker {
   std::deque<std::vector<std::byte>> replies_;
   bool stopping_ = false;
 
-  std::mutex scenes_mutex_;
-  std::map<std::string, std::shared_ptr<const ResolvedScene>> scenes_;
-  std::deque<std::string> scene_order_;  // oldest first
+  // The scenes rank 0 sent, the MPI thread only: the last mpi::kWorkerScenes of them.
+  std::unordered_map<std::uint64_t, std::shared_ptr<WorkerScene>> scenes_;
+  std::deque<std::uint64_t> scene_order_;  // oldest first
 };
 
 int Worker::run() {
@@ -154,7 +173,9 @@ void Worker::serve_until_stop() {
     for (auto& bytes : out) channel_.send(0, mpi::kReply, std::move(bytes));
     while (std::optional<MpiChannel::Message> m = channel_.receive()) {
       active = true;
-      if (m->tag == mpi::kTask) {
+      if (m->tag == mpi::kScene) {
+        keep_scene(mpi::decode_scene(m->bytes));
+      } else if (m->tag == mpi::kTask) {
         accept(mpi::decode_task(m->bytes));
       } else if (m->tag == mpi::kCancel) {
         cancel(mpi::decode_cancel(m->bytes));
@@ -193,9 +214,27 @@ void Worker::finish() {
   while (channel_.progress() > 0) std::this_thread::sleep_for(backoff.next());
 }
 
+void Worker::keep_scene(mpi::SceneDefinition definition) {
+  const std::uint64_t id = definition.id;
+  if (!scenes_.insert_or_assign(id, std::make_shared<WorkerScene>(std::move(definition))).second) {
+    return;  // sent again: rank 0 never does, but its place in the order stays
+  }
+  scene_order_.push_back(id);
+  if (scene_order_.size() > mpi::kWorkerScenes) {
+    scenes_.erase(scene_order_.front());
+    scene_order_.pop_front();
+  }
+}
+
 void Worker::accept(mpi::TaskRequest request) {
+  const auto scene = scenes_.find(request.scene);
+  if (scene == scenes_.end()) {
+    throw make_error(ErrorCode::kCorrupt, "MPI message Task {}: scene {} was not sent, or was forgotten",
+                     request.id, request.scene);
+  }
   auto job = std::make_shared<Job>();
   job->request = std::move(request);
+  job->scene = scene->second;
   {
     std::lock_guard lock(mutex_);
     jobs_[job->request.id] = job;
@@ -255,14 +294,13 @@ mpi::TaskReply Worker::run_job(const Job& job) {
   mpi::TaskReply reply;
   reply.id = r.id;
   NodeTask task;
-  task.dataset = r.dataset;
-  task.scene_json = r.scene_json;
+  task.dataset = job.scene->dataset();
   task.generation = r.generation;
   task.node = r.node;
   task.stop = job.stop.get_token();
   try {
-    task.store = datasets_->open(r.dataset);
-    task.scene = scene_for(r.dataset, r.scene_json, *task.store);
+    task.store = datasets_->open(task.dataset);
+    task.scene = job.scene->resolved(*task.store);
   } catch (const Error& e) {
     // Rank 0 opened the same store and resolved the same scene: the file systems differ.
     if (r.kind == mpi::TaskKind::kExtract) {
@@ -291,28 +329,6 @@ mpi::TaskReply Worker::run_job(const Job& job) {
   }
   reply.cache = cache_.stats();
   return reply;
-}
-
-std::shared_ptr<const ResolvedScene> Worker::scene_for(const std::string& dataset,
-                                                       const std::string& json, const Store& store) {
-  std::string key = dataset;
-  key += '\0';
-  key += json;
-  {
-    std::lock_guard lock(scenes_mutex_);
-    if (const auto it = scenes_.find(key); it != scenes_.end()) return it->second;
-  }
-  const Scene scene = parse_scene(json, "scene");
-  auto resolved = std::make_shared<const ResolvedScene>(resolve_scene(scene, store.manifest(), "scene"));
-  std::lock_guard lock(scenes_mutex_);
-  if (scenes_.emplace(key, resolved).second) {
-    scene_order_.push_back(std::move(key));
-    while (scene_order_.size() > kSceneCacheEntries) {
-      scenes_.erase(scene_order_.front());
-      scene_order_.pop_front();
-    }
-  }
-  return resolved;
 }
 
 }  // namespace

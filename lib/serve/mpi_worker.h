@@ -9,8 +9,8 @@
 //     tasks before prefetches; each task has its own std::stop_source, which a cancel
 //     from rank 0 triggers while the task runs (extraction checks it between bricks).
 //
-// Resolved scenes are cached by (dataset, scene JSON), so a generation's scene is parsed
-// and resolved once per rank, not once per node.
+// Rank 0 sends a generation's scene once (lib/serve/mpi_messages.h, kScene); the worker
+// parses and resolves it once, at its first task, and its other tasks share it.
 #pragma once
 
 #include <cstdint>

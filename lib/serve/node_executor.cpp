@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <atomic>
 
 #include "core/error.h"
 #include "extract/node_extraction.h"
@@ -40,6 +41,11 @@ NodeOutput failed(const NodeTask& task, protocol::WireError code, std::string_vi
 
 }  // namespace
 
+std::uint64_t next_scene_source_id() {
+  static std::atomic<std::uint64_t> next{1};
+  return next++;
+}
+
 NodeOutput run_node_task(const NodeTask& task, BrickCache& cache) {
   try {
     NodeExtraction extraction =
@@ -52,9 +58,9 @@ NodeOutput run_node_task(const NodeTask& task, BrickCache& cache) {
       any_mesh |= r.outcome == NodeOutcome::kMesh;
       all_skipped &= r.outcome != NodeOutcome::kMesh && r.outcome != NodeOutcome::kEmpty;
       r.mesh.attribute_names.clear();  // the client knows them from the scene
-      result.subvolumes.push_back(
-          {r.subvolume_id, r.outcome, clipped(std::move(r.reason)), std::move(r.mesh)});
+      r.reason = clipped(std::move(r.reason));
     }
+    result.subvolumes = std::move(extraction.results);
     // Slices after the sub-volumes (protocol version 2: the session accepts a scene with
     // slices only on such a connection).
     std::uint32_t slice_meshes = 0;
@@ -67,9 +73,9 @@ NodeOutput run_node_task(const NodeTask& task, BrickCache& cache) {
         slice_triangles += s.mesh.triangle_count();
       }
       s.mesh.attribute_names.clear();
-      result.slices.push_back(
-          {s.slice_id, s.outcome, clipped(std::move(s.reason)), std::move(s.mesh)});
+      s.reason = clipped(std::move(s.reason));
     }
+    result.slices = std::move(extraction.slices);
     NodeOutput out;
     out.slice_meshes = slice_meshes;
     out.slice_triangles = slice_triangles;

@@ -22,11 +22,24 @@ class Store;
 
 namespace strielad::serve {
 
+// A generation's scene at one time step as another process resolves it (an MPI worker
+// rank): its canonical JSON, written once per generation and step, and an id unique in
+// this process by which the worker keeps it once parsed and resolved.
+struct SceneSource {
+  std::uint64_t id = 0;
+  std::string json;  // canonical scene (formats/scene.md) with that time step
+};
+
+// A new SceneSource id (thread-safe; never 0).
+std::uint64_t next_scene_source_id();
+
 struct NodeTask {
   std::shared_ptr<const Store> store;
   std::string dataset;                        // the name the client opened it by
   std::shared_ptr<const ResolvedScene> scene;  // scene->time is the step to extract
-  std::string scene_json;                     // canonical scene with that time step
+  // The same scene, shared by every task of the generation; null where no executor
+  // needs it (a worker rank's own tasks).
+  std::shared_ptr<const SceneSource> scene_source;
   std::uint32_t generation = 0;
   NodeId node = 0;
   std::uint64_t serial = 0;  // tells a re-added node's new task from its old one

@@ -316,20 +316,23 @@ void Session::start_generation(std::uint32_t generation, Scene scene, ResolvedSc
   generation_ = generation;
   generation_started_ = true;
   queue_.start_generation(generation);
-  scene_json_ = scene_to_json(scene);
+  source_ = std::make_shared<const SceneSource>(
+      SceneSource{next_scene_source_id(), scene_to_json(scene)});
   resolved_ = std::make_shared<const ResolvedScene>(resolved);
   resolved_next_.reset();
+  source_next_.reset();
   if (resolved.time + 1 < store_->step_count()) {
     Scene next = scene;
     next.time = resolved.time + 1;
     ResolvedScene r = resolved;
     r.time = next.time;
     resolved_next_ = std::make_shared<const ResolvedScene>(std::move(r));
-    scene_json_next_ = scene_to_json(next);
+    source_next_ = std::make_shared<const SceneSource>(
+        SceneSource{next_scene_source_id(), scene_to_json(next)});
   }
   const std::uint32_t step = scene.time;
   scene_ = std::move(scene);
-  send(protocol::GenerationStarted{generation, step, scene_json_});
+  send(protocol::GenerationStarted{generation, step, source_->json});
 }
 
 void Session::cancel_all_locked() {
@@ -423,7 +426,7 @@ std::optional<NodeTask> Session::take_task() {
   --context_.counters.queued;
   const std::uint64_t serial = next_serial_++;
   std::stop_source stop;
-  NodeTask task{store_, dataset_, resolved_, scene_json_, item.generation, item.node, serial,
+  NodeTask task{store_, dataset_, resolved_, source_, item.generation, item.node, serial,
                 stop.get_token()};
   running_[item.node] = Running{serial, std::move(stop)};
   ++context_.counters.running;
@@ -469,7 +472,7 @@ std::optional<NodeTask> Session::take_prefetch() {
   while (prefetch_cursor_ < prefetch_order_.size()) {
     const NodeId node = prefetch_order_[prefetch_cursor_++];
     if (!cut_.contains(node) || !prefetched_.insert(node).second) continue;
-    return NodeTask{store_, dataset_, resolved_next_, scene_json_next_, generation_, node, 0,
+    return NodeTask{store_, dataset_, resolved_next_, source_next_, generation_, node, 0,
                     generation_stop_.get_token()};
   }
   return std::nullopt;

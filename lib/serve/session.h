@@ -110,7 +110,8 @@ class Session {
   std::optional<Scene> scene_;
   std::shared_ptr<const ResolvedScene> resolved_;       // scene at step
   std::shared_ptr<const ResolvedScene> resolved_next_;  // scene at step + 1 (prefetch)
-  std::string scene_json_, scene_json_next_;
+  std::shared_ptr<const SceneSource> source_;       // resolved_ as the client's JSON
+  std::shared_ptr<const SceneSource> source_next_;  // resolved_next_ likewise
   std::uint32_t generation_ = 0;  // the last accepted; 0 before the first
   bool generation_started_ = false;  // a generation is current (OpenDataset ends it)
   std::unordered_map<NodeId, float> cut_;  // the client's cut in this generation

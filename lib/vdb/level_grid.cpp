@@ -13,6 +13,7 @@
 #include "extract/geographic_conditions.h"
 #include "extract/node_extraction.h"
 #include "grid/longitude_turns.h"
+#include "store/level_samples.h"
 
 namespace strielad::vdb {
 namespace {
@@ -74,16 +75,13 @@ openvdb::FloatGrid::Ptr build_level_grid(const Store& store, std::uint32_t step,
   summary.min = INFINITY;
   summary.max = -INFINITY;
   auto accessor = grid->getAccessor();
-  for (NodeId n = shape.first_node; n < shape.first_node + shape.node_count(); ++n) {
-    const auto& entry = store.node_entry(step, variable, n);
-    if (entry.kind == format::BrickKind::kEmpty ||
-        (entry.kind == format::BrickKind::kConstant &&
-         static_cast<float>(entry.constant) == background)) {
-      ++summary.bricks_skipped;
-      continue;
-    }
-    const Brick b = store.read_brick(step, variable, n);
-    ++summary.bricks_read;
+  // Empty bricks and constant ones equal to the background add no active voxel: not read.
+  const auto wanted = [background](const format::IndexEntry& entry) {
+    return !(entry.kind == format::BrickKind::kEmpty ||
+             (entry.kind == format::BrickKind::kConstant &&
+              static_cast<float>(entry.constant) == background));
+  };
+  const LevelBrickCounts counts = for_each_level_brick(store, step, variable, level, [&](const Brick& b) {
     if (b.kind == format::BrickKind::kConstant) {
       const openvdb::CoordBBox box(
           openvdb::Coord(int(b.box.lo[0]), int(b.box.lo[1]), int(b.box.lo[2])),
@@ -91,7 +89,7 @@ openvdb::FloatGrid::Ptr build_level_grid(const Store& store, std::uint32_t step,
       grid->tree().fill(box, static_cast<float>(b.constant), true);
       summary.min = std::min(summary.min, b.constant);
       summary.max = std::max(summary.max, b.constant);
-      continue;
+      return;
     }
     for (std::size_t z = 0; z < b.dims[2]; ++z)
       for (std::size_t y = 0; y < b.dims[1]; ++y)
@@ -104,7 +102,9 @@ openvdb::FloatGrid::Ptr build_level_grid(const Store& store, std::uint32_t step,
           summary.min = std::min(summary.min, v);
           summary.max = std::max(summary.max, v);
         }
-  }
+  }, wanted);
+  summary.bricks_read = counts.bricks_read;
+  summary.bricks_skipped = counts.bricks_skipped;
   grid->pruneGrid();
   summary.active_voxels = grid->activeVoxelCount();
   if (summary.active_voxels == 0) summary.min = summary.max = 0;

@@ -26,7 +26,7 @@ double lattice_coordinate(double p, double lo, double hi, std::size_t n) {
 
 }  // namespace
 
-lod::Vec3 DisplacementMap::displacement_at(const lod::Vec3& p, double s) const {
+Vec3 DisplacementMap::displacement_at(const Vec3& p, double s) const {
   std::array<std::size_t, 3> i0{};
   std::array<double, 3> f{};
   for (int a = 0; a < 3; ++a) {
@@ -37,7 +37,7 @@ lod::Vec3 DisplacementMap::displacement_at(const lod::Vec3& p, double s) const {
   const double k_real = std::clamp(s / seconds, 0.0, 1.0) * static_cast<double>(keyframes - 1);
   const std::size_t k0 = std::min(static_cast<std::size_t>(k_real), keyframes - 2);
   const double fk = k_real - static_cast<double>(k0);
-  lod::Vec3 out{0, 0, 0};
+  Vec3 out{0, 0, 0};
   for (std::size_t k = k0; k <= k0 + 1; ++k) {
     const double wk = k == k0 ? 1 - fk : fk;
     const float* d = keyframe(k);
@@ -95,7 +95,7 @@ DisplacementMap compute_displacement_map(const WindStep& wind, const lod::WorldF
     std::uint64_t local_stopped = 0, local_evaluations = 0;
     for (std::size_t x = 0; x < lattice[0]; ++x) {
       const std::array<std::size_t, 3> index{x, y, z};
-      lod::Vec3 start{};
+      Vec3 start{};
       for (int a = 0; a < 3; ++a) {
         // Points on the box's faces start a hair inside, so that rounding in the
         // world-to-axis map does not put them outside the grid (where they could not
@@ -105,10 +105,10 @@ DisplacementMap compute_displacement_map(const WindStep& wind, const lod::WorldF
                                                   static_cast<double>(lattice[a] - 1),
                               map.box.lo[a] + 1e-9 * extent, map.box.hi[a] - 1e-9 * extent);
       }
-      advect::Vec3 position = wind.units.to_wind(frame.to_axis(start));
+      Vec3 position = wind.units.to_wind(frame.to_axis(start));
       bool moving = true;
       const std::size_t point = (z * lattice[1] + y) * lattice[0] + x;
-      lod::Vec3 last{0, 0, 0};
+      Vec3 last{0, 0, 0};
       for (std::size_t k = 1; k < map.keyframes; ++k) {
         if (moving) {
           const auto r = advect::advect(wind.field, position, map.keyframe_seconds(k - 1),
@@ -119,7 +119,7 @@ DisplacementMap compute_displacement_map(const WindStep& wind, const lod::WorldF
             moving = false;
             ++local_stopped;
           }
-          const lod::Vec3 world = frame.to_world(wind.units.to_axis(position));
+          const Vec3 world = frame.to_world(wind.units.to_axis(position));
           bool finite = true;
           for (int a = 0; a < 3; ++a) finite = finite && std::isfinite(world[a]);
           if (finite) {

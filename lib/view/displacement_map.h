@@ -62,7 +62,7 @@ struct DisplacementMap {
   }
   // Displacement (world km) at world position p, `s` seconds after the step (clamped to
   // [0, seconds]); p outside the box is clamped to it.
-  lod::Vec3 displacement_at(const lod::Vec3& p, double s) const;
+  Vec3 displacement_at(const Vec3& p, double s) const;
   const float* keyframe(std::size_t k) const { return displacement.data() + k * points() * 3; }
 };
 

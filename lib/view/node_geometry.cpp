@@ -23,7 +23,7 @@ namespace {
 void place_vertex(const lod::WorldFrame& frame, const Mesh& mesh, std::size_t v, NodeId node,
                   std::string_view what, float* position, float* normal_out) {
   const auto& p = mesh.positions[v];
-  const lod::Vec3 world = frame.to_world(p);
+  const Vec3 world = frame.to_world(p);
   for (int axis = 0; axis < 3; ++axis) {
     if (!std::isfinite(world[axis])) {
       throw make_error(ErrorCode::kInvalidInput, "node {}: {} {}: vertex {} has no world position",
@@ -32,7 +32,7 @@ void place_vertex(const lod::WorldFrame& frame, const Mesh& mesh, std::size_t v,
     position[axis] = static_cast<float>(world[axis]);
   }
   const auto& n = mesh.normals[v];
-  const lod::Vec3 normal = frame.normal_to_world(p, {n[0], n[1], n[2]});
+  const Vec3 normal = frame.normal_to_world(p, {n[0], n[1], n[2]});
   for (int axis = 0; axis < 3; ++axis) normal_out[axis] = static_cast<float>(normal[axis]);
 }
 
@@ -128,24 +128,24 @@ void GeometryPlacer::place_heights(const std::vector<float>& values, std::size_t
   }
   // Normals of the placed surface: area-weighted face normals, outward (flipped where
   // the map reverses orientation, as the renderer's front-face rule is).
-  std::vector<lod::Vec3> sum(n, lod::Vec3{0, 0, 0});
+  std::vector<Vec3> sum(n, Vec3{0, 0, 0});
   const auto position = [&](std::uint32_t i) {
     const float* p = &out.vertices[std::size_t(i) * kVertexFloats + kVertexPosition];
-    return lod::Vec3{p[0], p[1], p[2]};
+    return Vec3{p[0], p[1], p[2]};
   };
   const double sign = mirrored_ ? -1.0 : 1.0;
   const auto first_index = static_cast<std::uint32_t>(first);
   for (std::size_t k = first_triangle_index; k + 2 < out.indices.size(); k += 3) {
     const std::uint32_t i0 = out.indices[k], i1 = out.indices[k + 1], i2 = out.indices[k + 2];
-    const lod::Vec3 p0 = position(i0);
-    const lod::Vec3 f =
-        lod::scale(lod::cross(lod::sub(position(i1), p0), lod::sub(position(i2), p0)), sign);
+    const Vec3 p0 = position(i0);
+    const Vec3 f =
+        scale(cross(sub(position(i1), p0), sub(position(i2), p0)), sign);
     for (const std::uint32_t i : {i0, i1, i2}) {
       for (int c = 0; c < 3; ++c) sum[i - first_index][c] += f[c];
     }
   }
   for (std::size_t v = 0; v < n; ++v) {
-    const double len = lod::length(sum[v]);
+    const double len = length(sum[v]);
     if (!(len > 0) || !std::isfinite(len)) continue;  // keeps the frame's normal
     float* normal = &out.vertices[(first + v) * kVertexFloats + kVertexNormal];
     for (int c = 0; c < 3; ++c) normal[c] = static_cast<float>(sum[v][c] / len);

@@ -21,11 +21,11 @@ void OrbitCamera::home() {
   pitch_deg_ = 50;
 }
 
-lod::Vec3 OrbitCamera::eye() const {
+Vec3 OrbitCamera::eye() const {
   const double yaw = yaw_deg_ * kRadPerDeg, pitch = pitch_deg_ * kRadPerDeg;
-  const lod::Vec3 back{-std::sin(yaw) * std::cos(pitch), -std::cos(yaw) * std::cos(pitch),
+  const Vec3 back{-std::sin(yaw) * std::cos(pitch), -std::cos(yaw) * std::cos(pitch),
                        std::sin(pitch)};
-  return lod::add(target_, lod::scale(back, distance_));
+  return add(target_, scale(back, distance_));
 }
 
 void OrbitCamera::orbit(double yaw_deg, double pitch_deg) {
@@ -36,8 +36,8 @@ void OrbitCamera::orbit(double yaw_deg, double pitch_deg) {
 void OrbitCamera::pan(double right_fraction, double up_fraction) {
   const auto basis = lod::camera_basis(camera(1.0));
   const double height = 2 * distance_ * std::tan(22.5 * kRadPerDeg);
-  target_ = lod::add(target_, lod::add(lod::scale(basis.right, right_fraction * height),
-                                       lod::scale(basis.up, up_fraction * height)));
+  target_ = add(target_, add(scale(basis.right, right_fraction * height),
+                                       scale(basis.up, up_fraction * height)));
 }
 
 void OrbitCamera::zoom(double factor) {
@@ -48,14 +48,14 @@ void OrbitCamera::zoom(double factor) {
 
 void OrbitCamera::fly(double forward_km, double right_km, double up_km) {
   const double yaw = yaw_deg_ * kRadPerDeg;
-  const lod::Vec3 forward{std::sin(yaw), std::cos(yaw), 0}, right{std::cos(yaw), -std::sin(yaw), 0};
-  target_ = lod::add(target_, lod::add(lod::scale(forward, forward_km),
-                                       lod::add(lod::scale(right, right_km), lod::Vec3{0, 0, up_km})));
+  const Vec3 forward{std::sin(yaw), std::cos(yaw), 0}, right{std::cos(yaw), -std::sin(yaw), 0};
+  target_ = add(target_, add(scale(forward, forward_km),
+                                       add(scale(right, right_km), Vec3{0, 0, up_km})));
 }
 
-void OrbitCamera::look_from(const lod::Vec3& eye, const lod::Vec3& target) {
-  const lod::Vec3 back = lod::sub(eye, target);
-  const double d = lod::length(back);
+void OrbitCamera::look_from(const Vec3& eye, const Vec3& target) {
+  const Vec3 back = sub(eye, target);
+  const double d = length(back);
   if (!(d > 0) || !std::isfinite(d)) return;
   target_ = target;
   distance_ = d;
@@ -64,7 +64,7 @@ void OrbitCamera::look_from(const lod::Vec3& eye, const lod::Vec3& target) {
 }
 
 void OrbitCamera::rescale_vertical(double ratio, const lod::WorldBox& new_domain) {
-  const lod::Vec3 e = eye();
+  const Vec3 e = eye();
   domain_ = new_domain;
   if (!(ratio > 0) || !std::isfinite(ratio)) return;
   look_from({e[0], e[1], e[2] * ratio}, {target_[0], target_[1], target_[2] * ratio});

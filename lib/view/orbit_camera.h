@@ -27,18 +27,18 @@ class OrbitCamera {
   // Moves eye and target along the view direction projected on the ground (forward),
   // sideways and vertically, in km.
   void fly(double forward_km, double right_km, double up_km);
-  void look_from(const lod::Vec3& eye, const lod::Vec3& target);
+  void look_from(const Vec3& eye, const Vec3& target);
   // The vertical exaggeration changed by `ratio` (new / old): world z scales with it.
   void rescale_vertical(double ratio, const lod::WorldBox& new_domain);
 
   lod::Camera camera(double aspect, double fov_y_deg = 45.0) const;
-  lod::Vec3 eye() const;
-  const lod::Vec3& target() const { return target_; }
+  Vec3 eye() const;
+  const Vec3& target() const { return target_; }
   double distance() const { return distance_; }
 
  private:
   lod::WorldBox domain_;
-  lod::Vec3 target_{};
+  Vec3 target_{};
   double distance_ = 1.0;
   double yaw_deg_ = 0;    // 0: looking north (eye south of the target)
   double pitch_deg_ = 50; // elevation of the eye above the target's horizon

@@ -33,7 +33,7 @@ inline constexpr double kWideDomainLongitudeDeg = 30.0;
 enum class SunViewpoint { kDomainCentre, kSunniestPoint };
 
 struct SunAtTime {
-  lod::Vec3 direction{};  // unit, world frame
+  Vec3 direction{};  // unit, world frame
   geo::SolarPosition position;  // seen from (latitude_deg, longitude_deg)
   SunViewpoint viewpoint = SunViewpoint::kDomainCentre;
   double latitude_deg = 0, longitude_deg = 0;  // where the sun is seen from

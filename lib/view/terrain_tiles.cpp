@@ -60,7 +60,7 @@ std::vector<float> read_grid(const geo::DemSource& dem, const std::vector<std::s
   return out;
 }
 
-double box_distance(const lod::WorldBox& box, const lod::Vec3& p) {
+double box_distance(const lod::WorldBox& box, const Vec3& p) {
   double d2 = 0;
   for (int a = 0; a < 3; ++a) {
     const double d = std::max({box.lo[a] - p[a], 0.0, p[a] - box.hi[a]});
@@ -379,13 +379,13 @@ TerrainTileSamples TerrainTiles::samples(const TerrainTileKey& k) const {
   return s;
 }
 
-lod::Vec3 TerrainTiles::place(const geo::LonLat& ll) const {
+Vec3 TerrainTiles::place(const geo::LonLat& ll) const {
   const auto xy = frame_.geographic_to_world(ll.lon, ll.lat);
   return {xy[0], xy[1], 0.0};
 }
 
 std::array<float, 2> TerrainTiles::clip_coordinates(const geo::LonLat& ll,
-                                                    const lod::Vec3& world) const {
+                                                    const Vec3& world) const {
   if (!mapped_) return {float(world[0]), float(world[1])};
   const auto a = frame_.geographic_to_axis(ll.lon, ll.lat);
   // No place in the store's axes: far outside every clip box (NaN would compare
@@ -425,7 +425,7 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
   }
   std::vector<geo::LonLat> ll(wc * wr);
   dem_->georeference(cd, rd, ll);
-  std::vector<lod::Vec3> p(wc * wr);
+  std::vector<Vec3> p(wc * wr);
   for (std::size_t i = 0; i < p.size(); ++i) {
     p[i] = place(ll[i]);
     // Water (no value, or below sea level) lies flat at sea level.

@@ -170,8 +170,8 @@ class TerrainTiles {
   };
   std::size_t stride(int level) const { return std::size_t{1} << (finest_level_ - level); }
   lod::WorldBox estimated_box(const TerrainTileKey& key, const lod::WorldBox* parent) const;
-  lod::Vec3 place(const geo::LonLat& ll) const;
-  std::array<float, 2> clip_coordinates(const geo::LonLat& ll, const lod::Vec3& world) const;
+  Vec3 place(const geo::LonLat& ll) const;
+  std::array<float, 2> clip_coordinates(const geo::LonLat& ll, const Vec3& world) const;
   std::size_t dem_column(std::size_t column) const;
   std::vector<std::size_t> dem_columns(std::vector<std::size_t> columns) const;
   void worker_loop(std::stop_token stop);

@@ -1,14 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "view/wind_source.h"
 
-#include <tbb/parallel_for.h>
-
-#include <atomic>
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 #include "core/error.h"
+#include "store/level_samples.h"
 #include "view/default_scene.h"
 
 namespace strielad::view {
@@ -18,33 +15,6 @@ std::string trim(const std::string& s) {
   const auto first = s.find_first_not_of(" \t");
   if (first == std::string::npos) return {};
   return s.substr(first, s.find_last_not_of(" \t") - first + 1);
-}
-
-// One component at one step on the level's grid, x fastest; NaN where missing.
-std::vector<float> read_level(const Store& store, std::uint32_t step, std::uint32_t variable,
-                              std::uint32_t level, std::atomic<std::uint64_t>& bytes) {
-  const auto& layout = store.octree();
-  const LevelShape& shape = layout.level(level);
-  const auto& n = shape.samples;
-  std::vector<float> out(n[0] * n[1] * n[2], std::numeric_limits<float>::quiet_NaN());
-  const std::size_t nodes = shape.node_count();
-  tbb::parallel_for(std::size_t{0}, nodes, [&](std::size_t i) {
-    const NodeId id = static_cast<NodeId>(shape.first_node + i);
-    const Brick brick = store.read_brick(step, variable, id);
-    bytes += brick.bytes.size();
-    const std::vector<float> values = brick.to_vector<float>();
-    const IndexBox& box = brick.box;
-    // Neighbouring bricks share their boundary samples (equal values): writing them
-    // twice from two threads writes the same bits.
-    for (std::size_t z = 0; z < brick.dims[2]; ++z) {
-      for (std::size_t y = 0; y < brick.dims[1]; ++y) {
-        const std::size_t src = (z * brick.dims[1] + y) * brick.dims[0];
-        const std::size_t dst = ((box.lo[2] + z) * n[1] + box.lo[1] + y) * n[0] + box.lo[0];
-        std::copy_n(values.data() + src, brick.dims[0], out.data() + dst);
-      }
-    }
-  });
-  return out;
 }
 
 }  // namespace
@@ -148,12 +118,18 @@ WindStep load_wind_step(const Store& store, std::uint32_t step, const WindNames&
                              units.scale[a]);
     }
   }
-  std::atomic<std::uint64_t> bytes{0};
+  std::uint64_t bytes = 0;
+  // One component at one step on the level's grid, x fastest; NaN where missing.
+  const auto read_level = [&](std::uint32_t at_step, std::uint32_t variable) {
+    LevelSamples<float> level_samples = read_level_samples<float>(store, at_step, variable, level);
+    bytes += level_samples.counts.sample_bytes;
+    return std::move(level_samples.values);
+  };
   std::array<advect::WindSlice, 2> slices;
   for (int t = 0; t < 2; ++t) {
-    slices[t].u = read_level(store, step + t, variables[0], level, bytes);
-    slices[t].v = read_level(store, step + t, variables[1], level, bytes);
-    slices[t].w = read_level(store, step + t, variables[2], level, bytes);
+    slices[t].u = read_level(step + t, variables[0]);
+    slices[t].v = read_level(step + t, variables[1]);
+    slices[t].w = read_level(step + t, variables[2]);
   }
   try {
     return WindStep{.field = advect::WindField(std::move(grid), 0.0, std::move(slices[0]),
@@ -162,7 +138,7 @@ WindStep load_wind_step(const Store& store, std::uint32_t step, const WindNames&
                     .step = step,
                     .seconds = seconds,
                     .level = level,
-                    .bytes_read = bytes.load()};
+                    .bytes_read = bytes};
   } catch (const Error& e) {
     throw make_error(e.code(), "{}: wind at level {}: {}", store.path().string(), level,
                      e.what());

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// The wind a viewer advects its meshes with: the store's wind
-// components at two consecutive time steps, read from one octree level and assembled
-// into an advect::WindField in the units lib/advect integrates in.
+// The wind a viewer advects its meshes with: the store's wind components at two
+// consecutive time steps, read from one octree level (store/level_samples.h) and
+// assembled into an advect::WindField in the units lib/advect integrates in.
 //
 // Units: lib/advect wants degrees on geographic x/y, metres on metric x/y and on a
 // height axis, pascals on a pressure axis. WindUnits converts between those and the
@@ -38,10 +38,10 @@ struct WindUnits {
   advect::Horizontal horizontal = advect::Horizontal::kDegrees;
   advect::Vertical vertical = advect::Vertical::kMetres;
 
-  advect::Vec3 to_wind(const lod::Vec3& axis) const {
+  Vec3 to_wind(const Vec3& axis) const {
     return {axis[0] * scale[0], axis[1] * scale[1], axis[2] * scale[2]};
   }
-  lod::Vec3 to_axis(const advect::Vec3& wind) const {
+  Vec3 to_axis(const Vec3& wind) const {
     return {wind[0] / scale[0], wind[1] / scale[1], wind[2] / scale[2]};
   }
 };
@@ -66,7 +66,7 @@ struct WindStep {
   std::uint32_t step = 0;      // the field runs from this step (t = 0 s) ...
   double seconds = 0;          // ... to the next one (t = seconds)
   std::uint32_t level = 0;
-  std::uint64_t bytes_read = 0;  // compressed brick bytes read
+  std::uint64_t bytes_read = 0;  // bytes of the bricks' samples read (decoded)
 };
 
 // The wind between `step` and `step + 1` at `level`, every brick of the level read

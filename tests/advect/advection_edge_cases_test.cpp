@@ -16,7 +16,6 @@ namespace {
 
 using advect::Method;
 using advect::Stop;
-using advect::Vec3;
 
 advect::WindField uniform(Vec3 wind) {
   advect::WindGrid g;

@@ -14,7 +14,6 @@ namespace strielad::testing {
 namespace {
 
 using advect::Method;
-using advect::Vec3;
 
 constexpr double kOmega = 2 * std::numbers::pi / 3600;  // one turn an hour
 

@@ -14,7 +14,6 @@ namespace strielad::testing {
 namespace {
 
 using advect::Mat3;
-using advect::Vec3;
 
 TEST(RosenbrockLinearSolveTest, PivotsPastAZeroLeadingEntry) {
   const Mat3 m{Vec3{0, 2, 1}, Vec3{1, 0, 0}, Vec3{0, 1, 3}};

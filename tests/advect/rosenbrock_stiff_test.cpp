@@ -15,7 +15,6 @@ namespace strielad::testing {
 namespace {
 
 using advect::Method;
-using advect::Vec3;
 
 constexpr double kSlow = 1e-3, kX0 = 50e3, kY0 = 50e3, kHour = 3600;
 

@@ -14,7 +14,6 @@ namespace strielad::testing {
 namespace {
 
 using advect::Sample;
-using advect::Vec3;
 
 advect::WindGrid metric_grid() {
   advect::WindGrid g;

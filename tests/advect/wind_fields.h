@@ -18,7 +18,7 @@ inline advect::WindField wind_growing_in_time() {
   g.horizontal = advect::Horizontal::kMetres;
   g.axes = {linspace(0, 1e6, 3), linspace(0, 1e6, 3), linspace(0, 1000, 2)};
   return advect::sample_wind(std::move(g), 0, 3600, [](double, double, double, double t) {
-    return advect::Vec3{10 * t / 3600, 0, 0};
+    return Vec3{10 * t / 3600, 0, 0};
   });
 }
 

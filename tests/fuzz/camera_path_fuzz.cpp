@@ -51,7 +51,7 @@ void play(const lod::CameraPath& path, const lod::WorldFrame& f) {
   const double t0 = world->start_time(), t1 = world->end_time();
   for (double s : {-1.0, 0.0, 0.25, 0.5, 0.999, 1.0, 2.0}) {
     const lod::CameraPose pose = world->sample(t0 + s * (t1 - t0));
-    if (!lod::all_finite(pose.eye) || !lod::all_finite(pose.target) ||
+    if (!all_finite(pose.eye) || !all_finite(pose.target) ||
         !(pose.fov_deg > 0 && pose.fov_deg < 180)) {
       std::abort();
     }

@@ -32,8 +32,9 @@ void expect_same(const std::vector<std::byte>& encoded, std::span<const std::byt
 std::vector<std::vector<std::uint8_t>> strielad_fuzz_seeds() {
   WorkerReady ready{8, 1 << 30, std::nullopt, "node17", ""};
   WorkerReady failed{0, 0, ErrorCode::kNotFound, "node18", "no such dataset 'x'"};
-  TaskRequest task{42, TaskKind::kExtract, 3, 1234, "wind", R"({"time": 2, "subvolumes": []})"};
-  TaskRequest prefetch{43, TaskKind::kPrefetch, 3, 9, "wind", "{}"};
+  SceneDefinition scene{7, "wind", R"({"time": 2, "subvolumes": []})"};
+  TaskRequest task{42, TaskKind::kExtract, 3, 1234, 7};
+  TaskRequest prefetch{43, TaskKind::kPrefetch, 3, 9, 8};
   TaskReply reply;
   reply.id = 42;
   reply.kind = NodeOutputKind::kMesh;
@@ -45,7 +46,7 @@ std::vector<std::vector<std::uint8_t>> strielad_fuzz_seeds() {
   TaskReply cancelled;
   cancelled.id = 43;
   cancelled.kind = NodeOutputKind::kCancelled;
-  return {to_u8(encode(ready)), to_u8(encode(failed)), to_u8(encode(task)),
+  return {to_u8(encode(ready)), to_u8(encode(failed)), to_u8(encode(scene)), to_u8(encode(task)),
           to_u8(encode(prefetch)), to_u8(encode(reply)), to_u8(encode(cancelled)),
           to_u8(encode_cancel(42))};
 }
@@ -54,6 +55,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
   try {
     expect_same(encode(decode_ready(bytes)), bytes);
+  } catch (const Error&) {
+  }
+  try {
+    expect_same(encode(decode_scene(bytes)), bytes);
   } catch (const Error&) {
   }
   try {

@@ -75,7 +75,7 @@ NodeResult slice_result_seed() {
   NodeResult r;
   r.generation = 2;
   r.node = 9;
-  r.subvolumes.push_back({1, NodeOutcome::kEmpty, "", {}});
+  r.subvolumes.push_back({1, NodeOutcome::kEmpty, "", {}, {}});
   r.slices.push_back({3, NodeOutcome::kMesh, "", m});
   r.slices.push_back({4, NodeOutcome::kSkippedDomain, "misses", {}});
   return r;

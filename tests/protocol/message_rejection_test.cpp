@@ -394,18 +394,18 @@ TEST(MessageRejectionTest, NodeResultWithBadSubVolumesIsRejected) {
   expect_invalid(frame_of(MessageType::kNodeResult, node_result({{1, 5}})),
                  {"NodeResult: subvolumes[0].outcome: 5 is not an outcome"});
 
-  expect_unencodable(NodeResult{1, 2, {{0, NodeOutcome::kEmpty, "", {}}}},
+  expect_unencodable(NodeResult{1, 2, {{0, NodeOutcome::kEmpty, "", {}, {}}}},
                      {"encode NodeResult: subvolumes[0].subvolume_id: 0"});
-  expect_unencodable(NodeResult{1, 2, {{1, static_cast<NodeOutcome>(9), "", {}}}},
+  expect_unencodable(NodeResult{1, 2, {{1, static_cast<NodeOutcome>(9), "", {}, {}}}},
                      {"encode NodeResult: subvolumes[0].outcome: 9"});
-  expect_unencodable(NodeResult{1, 2, {{1, NodeOutcome::kMesh, "", {}}}},
+  expect_unencodable(NodeResult{1, 2, {{1, NodeOutcome::kMesh, "", {}, {}}}},
                      {"encode NodeResult: subvolumes[0].mesh", "at least one triangle"});
-  expect_unencodable(NodeResult{1, 2, {{1, NodeOutcome::kEmpty, "", samples::exact_mesh(1)}}},
+  expect_unencodable(NodeResult{1, 2, {{1, NodeOutcome::kEmpty, "", samples::exact_mesh(1), {}}}},
                      {"encode NodeResult: subvolumes[0].mesh: 4 triangles with outcome"});
 }
 
 TEST(MessageRejectionTest, MeshErrorsNameTheResult) {
-  NodeResult result{1, 2, {{9, NodeOutcome::kEmpty, "", {}}, {3, NodeOutcome::kMesh, "", samples::exact_mesh(3)}}};
+  NodeResult result{1, 2, {{9, NodeOutcome::kEmpty, "", {}, {}}, {3, NodeOutcome::kMesh, "", samples::exact_mesh(3), {}}}};
   auto frame = encode_frame(result);
   // payload: 12 bytes, result 0 (7), result 1's id, outcome and reason (7), then the mesh.
   const std::size_t mesh_at = kFrameHeaderBytes + 12 + 7 + 7;

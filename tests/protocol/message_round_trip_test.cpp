@@ -121,7 +121,7 @@ TEST(MessageRoundTripTest, StringsAndListsAtTheirLimitsRoundTrip) {
   EXPECT_EQ(decode_frame(frame, kMaxClientPayloadBytes), Message(update));
   NodeResult result{1, 2, {}};
   for (std::uint32_t id = 1; id <= kMaxSubVolumes; ++id) {
-    result.subvolumes.push_back({id, NodeOutcome::kSkippedDomain, "", {}});
+    result.subvolumes.push_back({id, NodeOutcome::kSkippedDomain, "", {}, {}});
   }
   EXPECT_EQ(decode_frame(encode_frame(result), kMaxServerPayloadBytes), Message(result));
 }
@@ -143,7 +143,7 @@ TEST(MessageRoundTripTest, NodeResultMeshIsQuantizedWithinBounds) {
     mesh.triangles.push_back({i, i + 1, i + 2});
     mesh.face_kinds.push_back(static_cast<FaceKind>(i % 4));
   }
-  const NodeResult sent{2, 99, {{3, NodeOutcome::kMesh, "", mesh}}};
+  const NodeResult sent{2, 99, {{3, NodeOutcome::kMesh, "", mesh, {}}}};
   const Message got = decode_frame(encode_frame(sent), kMaxServerPayloadBytes);
   const auto& result = std::get<NodeResult>(got);
   ASSERT_EQ(result.subvolumes.size(), 1u);

@@ -37,12 +37,12 @@ inline std::vector<Message> sample_messages() {
       R"({"format_version":1,"time":0,"subvolumes":[{"id":1,"name":"cloud ice",)"
       R"("limits":[{"var":"cli","min":1e-06}]}],"attributes":["ta","ua"]})";
   NodeResult result{7, 51392, {}};
-  result.subvolumes.push_back({1, NodeOutcome::kMesh, "", exact_mesh(1)});
-  result.subvolumes.push_back({2, NodeOutcome::kEmpty, "", {}});
+  result.subvolumes.push_back({1, NodeOutcome::kMesh, "", exact_mesh(1), {}});
+  result.subvolumes.push_back({2, NodeOutcome::kEmpty, "", {}, {}});
   result.subvolumes.push_back(
-      {65535, NodeOutcome::kSkippedValueRange, "cli: node range [0, 1e-07] misses [1e-06, inf]", {}});
-  result.subvolumes.push_back({4, NodeOutcome::kSkippedDomain, "lon", {}});
-  result.subvolumes.push_back({5, NodeOutcome::kSkippedNoData, "", {}});
+      {65535, NodeOutcome::kSkippedValueRange, "cli: node range [0, 1e-07] misses [1e-06, inf]", {}, {}});
+  result.subvolumes.push_back({4, NodeOutcome::kSkippedDomain, "lon", {}, {}});
+  result.subvolumes.push_back({5, NodeOutcome::kSkippedNoData, "", {}, {}});
   const std::vector<std::byte> manifest{std::byte{'S'}, std::byte{'T'}, std::byte{0},
                                         std::byte{0xFF}};
   return {

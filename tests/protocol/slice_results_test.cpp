@@ -31,7 +31,7 @@ NodeResult result_with_slices() {
   NodeResult r;
   r.generation = 3;
   r.node = 17;
-  r.subvolumes.push_back({1, NodeOutcome::kEmpty, "", {}});
+  r.subvolumes.push_back({1, NodeOutcome::kEmpty, "", {}, {}});
   r.slices.push_back({4, NodeOutcome::kMesh, "", slice_mesh()});
   r.slices.push_back({5, NodeOutcome::kSkippedDomain, "plane lat = 2 misses the node", {}});
   return r;

@@ -44,7 +44,7 @@ class AbufferLimitsTest : public RenderTest {
   }
 };
 
-const lod::Vec3 kEye{-20.0, -330.0, 55.0};
+const Vec3 kEye{-20.0, -330.0, 55.0};
 
 TEST_F(AbufferLimitsTest, APixelOverKFragmentsKeepsTheNearestAndLosesLittle) {
   const auto frame = render(shells(), kEye, kSphereCenter1, red_shader(0.25));
@@ -73,7 +73,7 @@ TEST_F(AbufferLimitsTest, APixelOverKFragmentsKeepsTheNearestAndLosesLittle) {
 class AbufferPoolTest : public RenderTest {};
 
 TEST_F(AbufferPoolTest, AFullPoolDropsTheFarthestNodesFragmentsAndCountsThem) {
-  const lod::Vec3 east{330.0, 0.0, 55.0}, middle{5.0, 0.0, 55.0};
+  const Vec3 east{330.0, 0.0, 55.0}, middle{5.0, 0.0, 55.0};
   // Seen from the east, sphere 2 (blue) hides sphere 1 (red) behind it. First how many
   // fragments the near sphere alone has, then both spheres unbounded.
   Scene near_only;

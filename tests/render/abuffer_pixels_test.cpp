@@ -26,8 +26,8 @@ void expect_rgb_near(const Rgb& actual, const Rgb& expected, int tolerance, cons
 }
 
 // The side view: from the south (-y), level with the sphere centres.
-const lod::Vec3 kSouthEye{5.0, -320.0, 55.0};
-const lod::Vec3 kSouthTarget{5.0, 0.0, 55.0};
+const Vec3 kSouthEye{5.0, -320.0, 55.0};
+const Vec3 kSouthTarget{5.0, 0.0, 55.0};
 
 TEST_F(RenderTest, AnOpaqueSphereCoversItsProjectedDisc) {
   Scene scene;
@@ -38,7 +38,7 @@ TEST_F(RenderTest, AnOpaqueSphereCoversItsProjectedDisc) {
   expect_rgb_near(rgb_at(frame.image, project(cam, kSphereCenter1)), {255, 0, 0}, 2, "centre");
   expect_rgb_near(rgb_at(frame.image, {2, 2}), {0, 0, 0}, 0, "corner");
   // Red pixels against the disc the sphere projects to (radius from the view angle).
-  const double distance = lod::length(lod::sub(kSphereCenter1, kSouthEye));
+  const double distance = length(sub(kSphereCenter1, kSouthEye));
   const double angular_radius = std::asin(30.0 / distance);
   const double radius_px = std::tan(angular_radius) / std::tan(22.5 * M_PI / 180) * kSize / 2;
   int red = 0;
@@ -56,7 +56,7 @@ TEST_F(RenderTest, EachSubVolumeIdGetsItsColour) {
   expect_rgb_near(rgb_at(frame.image, project(cam, kSphereCenter1)), {255, 0, 0}, 2, "id 1");
   expect_rgb_near(rgb_at(frame.image, project(cam, kSphereCenter2)), {0, 0, 255}, 2, "id 3");
   // Between the spheres: background.
-  const lod::Vec3 between{7.0, 0.0, 55.0};
+  const Vec3 between{7.0, 0.0, 55.0};
   expect_rgb_near(rgb_at(frame.image, project(cam, between)), {0, 0, 0}, 0, "between");
 }
 
@@ -70,7 +70,7 @@ TEST_F(RenderTest, ANestedSubVolumeShowsThroughItsOuterOne) {
   expect_rgb_near(rgb_at(frame.image, project(cam, kSphereCenter1)), {128, 127, 0}, 4,
                   "core through shell");
   // 20 km off the centre: only the shell.
-  const lod::Vec3 ring{kSphereCenter1[0], 0.0, kSphereCenter1[2] + 20.0};
+  const Vec3 ring{kSphereCenter1[0], 0.0, kSphereCenter1[2] + 20.0};
   expect_rgb_near(rgb_at(frame.image, project(cam, ring)), {128, 0, 0}, 4, "shell only");
 }
 
@@ -79,7 +79,7 @@ TEST_F(RenderTest, TheNearerOfTwoSubVolumesDominates) {
   scene.subvolumes = {sphere(1, "d1", 20.0), sphere(3, "d2", 20.0)};
   const auto shader = flat_shader("return 0.6;");
   // Along the line through both centres, from the east: sphere 2 (blue) is in front.
-  const lod::Vec3 east{330.0, 0.0, 55.0}, west{-320.0, 0.0, 55.0}, middle{5.0, 0.0, 55.0};
+  const Vec3 east{330.0, 0.0, 55.0}, west{-320.0, 0.0, 55.0}, middle{5.0, 0.0, 55.0};
   auto frame = render(scene, east, middle, shader);
   auto cam = camera(east, middle);
   // 0.6 of the front colour, 0.4 * 0.6 of the one behind.
@@ -103,7 +103,7 @@ TEST_F(RenderTest, OpacityFollowsTheWholeDistanceInsideAcrossNodeFaces) {
   EXPECT_NEAR(centre[0], 153, 8);
   // A vertical chord is travelled at true scale too: seen from above, the 60 km of
   // exaggerated height are 6 km of air.
-  const lod::Vec3 above{kSphereCenter1[0], 0.1, 400.0};
+  const Vec3 above{kSphereCenter1[0], 0.1, 400.0};
   const auto top = render(scene, above, kSphereCenter1, flat_shader("return min(distance / 10.0, 1.0);"));
   const auto top_cam = camera(above, kSphereCenter1);
   EXPECT_NEAR(rgb_at(top.image, project(top_cam, kSphereCenter1))[0], 153, 8);

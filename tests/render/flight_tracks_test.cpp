@@ -6,8 +6,8 @@
 namespace strielad::testing {
 namespace {
 
-const lod::Vec3 kSouthEye{5.0, -320.0, 55.0};
-const lod::Vec3 kSouthTarget{5.0, 0.0, 55.0};
+const Vec3 kSouthEye{5.0, -320.0, 55.0};
+const Vec3 kSouthTarget{5.0, 0.0, 55.0};
 
 // A straight east-west segment at world y (km), 5.5 km up (55 km drawn), from x0 to x1.
 std::shared_ptr<view::TrackLines> line_at(double y, double x0, double x1) {

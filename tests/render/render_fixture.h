@@ -70,12 +70,12 @@ class RenderTest : public ::testing::Test {
     connection_.server.reset();
   }
 
-  lod::Camera camera(const lod::Vec3& eye, const lod::Vec3& target) const {
+  lod::Camera camera(const Vec3& eye, const Vec3& target) const {
     return lod::look_at(eye, target, 45.0, 1.0, controller_->frame().domain());
   }
 
   // Renders `scene` seen from `eye` towards `target` with `shader`.
-  render::CompleteFrame render(const Scene& scene, const lod::Vec3& eye, const lod::Vec3& target,
+  render::CompleteFrame render(const Scene& scene, const Vec3& eye, const Vec3& target,
                                const std::string& shader,
                                const std::vector<render::MeshMotion>& motions = {}) {
     if (!controller_) {
@@ -95,7 +95,7 @@ class RenderTest : public ::testing::Test {
   }
 
   // Pixel (column, row from the top) where a world point appears.
-  static std::pair<int, int> project(const lod::Camera& cam, const lod::Vec3& p) {
+  static std::pair<int, int> project(const lod::Camera& cam, const Vec3& p) {
     const auto clip = lod::to_clip(lod::multiply(lod::projection_matrix(cam), lod::view_matrix(cam)), p);
     const double x = (clip[0] / clip[3] + 1) / 2 * kSize;
     const double y = (1 - clip[1] / clip[3]) / 2 * kSize;

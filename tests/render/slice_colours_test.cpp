@@ -62,7 +62,7 @@ TEST_F(RenderTest, SliceHidesWhatIsBehindIt) {
   Scene scene;
   scene.subvolumes = {sphere(1, "d1", 15.0)};
   const auto shader = flat_shader("return 1.0;");
-  const lod::Vec3 eye{-20.0, -1.0, 400.0}, target{-20.0, 0.0, 55.0};
+  const Vec3 eye{-20.0, -1.0, 400.0}, target{-20.0, 0.0, 55.0};
   scene.slices = {height_slice(9000.0, "greys")};  // 90 km drawn: above the sphere
   const auto above = render(scene, eye, target, shader);
   scene.slices = {height_slice(1000.0, "greys")};  // 10 km drawn: below it

@@ -31,8 +31,8 @@ double chromaticity_distance(const Rgb& a, const Rgb& b) {
   return std::hypot(ca[0] - cb[0], ca[1] - cb[1], ca[2] - cb[2]);
 }
 
-const lod::Vec3 kSouthEye{5.0, -320.0, 55.0};
-const lod::Vec3 kSouthTarget{5.0, 0.0, 55.0};
+const Vec3 kSouthEye{5.0, -320.0, 55.0};
+const Vec3 kSouthTarget{5.0, 0.0, 55.0};
 
 // Ids 2 and 3 (neither is 1): the built-in shader once drew every id but 1 in the same
 // grey.

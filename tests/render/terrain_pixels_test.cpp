@@ -116,7 +116,7 @@ TEST_F(TerrainPixelsTest, SolidDrapeColoursTheTerrain) {
 TEST_F(TerrainPixelsTest, TerrainInFrontHidesASubVolume) {
   Scene scene;
   scene.subvolumes.push_back(testing::sphere(1, "d1", 15.0));
-  const lod::Vec3 eye{-20, -140, 55}, target{-20, 0, 55};
+  const Vec3 eye{-20, -140, 55}, target{-20, 0, 55};
   // Without terrain the sphere shows red at the centre of the image.
   const auto plain = render(scene, eye, target, testing::flat_shader("return 1.0;"));
   const Pixel before = at(plain.image.pixels, kSize, kSize / 2, kSize / 2);

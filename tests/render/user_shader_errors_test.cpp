@@ -188,7 +188,7 @@ TEST_F(UserShaderTest, AttributeNamesInvalidInGlslBecomeValidMacroNames) {
 class UserShaderRenderTest : public RenderTest {};
 
 TEST_F(UserShaderRenderTest, ABrokenShaderLeavesThePictureUnchanged) {
-  const lod::Vec3 eye{5.0, -320.0, 55.0}, target{5.0, 0.0, 55.0};
+  const Vec3 eye{5.0, -320.0, 55.0}, target{5.0, 0.0, 55.0};
   Scene scene;
   scene.subvolumes = {sphere(1, "d1", 30.0)};
   const auto first = render(scene, eye, target, flat_shader("return 1.0;"));

@@ -10,8 +10,8 @@
 namespace strielad::testing {
 namespace {
 
-const lod::Vec3 kSouthEye{5.0, -320.0, 55.0};
-const lod::Vec3 kSouthTarget{5.0, 0.0, 55.0};
+const Vec3 kSouthEye{5.0, -320.0, 55.0};
+const Vec3 kSouthTarget{5.0, 0.0, 55.0};
 
 // Moves everything by `east_km` over 600 s (the sphere store's step), linearly.
 std::shared_ptr<const view::DisplacementMap> eastward_map(std::uint32_t step,
@@ -73,7 +73,7 @@ TEST_F(RenderTest, MeshesMoveWithTheirStepsDisplacementMap) {
                   e = red_pixels(other_step.image);
   ASSERT_GT(a.count, 200);  // a disc about 10 px in radius
   const auto cam = camera(kSouthEye, kSouthTarget);
-  const double shift_px = project(cam, lod::add(kSphereCenter1, {kSphereStepShiftKm, 0, 0})).first -
+  const double shift_px = project(cam, add(kSphereCenter1, {kSphereStepShiftKm, 0, 0})).first -
                           project(cam, kSphereCenter1).first;
   ASSERT_GT(shift_px, 2.0);
   EXPECT_NEAR(b.mean_column - a.mean_column, shift_px, 1.0);

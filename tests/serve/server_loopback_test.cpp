@@ -106,7 +106,7 @@ void ServerLoopbackTest::expect_results_equal_batch_extraction(bool direct_reads
     ASSERT_EQ(wire.subvolumes.size(), batch.results.size());
     for (std::size_t s = 0; s < batch.results.size(); ++s) {
       const SubVolumeResult& want = batch.results[s];
-      const protocol::SubVolumeResultWire& got = wire.subvolumes[s];
+      const SubVolumeResult& got = wire.subvolumes[s];
       EXPECT_EQ(got.subvolume_id, want.subvolume_id);
       ASSERT_EQ(got.outcome, want.outcome) << "node " << node;
       EXPECT_EQ(got.reason, want.reason);

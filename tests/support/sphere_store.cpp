@@ -26,9 +26,9 @@ std::filesystem::path write_sphere_store(const std::filesystem::path& dir, unsig
       for (std::size_t j = 0; j < n; ++j)
         for (std::size_t i = 0; i < n; ++i) {
           // The viewer's world frame (lod/world_frame.h) at exaggeration 10.
-          const lod::Vec3 p{(lon[i] - 0.5) * lod::kKmPerDegree, lat[j] * lod::kKmPerDegree,
+          const Vec3 p{(lon[i] - 0.5) * lod::kKmPerDegree, lat[j] * lod::kKmPerDegree,
                             height[k] / 1000.0 * 10.0};
-          const auto distance = [&](const lod::Vec3& c) {
+          const auto distance = [&](const Vec3& c) {
             return std::sqrt((p[0] - c[0] - shift) * (p[0] - c[0] - shift) +
                              (p[1] - c[1]) * (p[1] - c[1]) + (p[2] - c[2]) * (p[2] - c[2]));
           };

@@ -14,8 +14,8 @@
 
 namespace strielad::testing {
 
-inline constexpr lod::Vec3 kSphereCenter1{-20.0, 0.0, 55.0};
-inline constexpr lod::Vec3 kSphereCenter2{30.0, 0.0, 55.0};
+inline constexpr Vec3 kSphereCenter1{-20.0, 0.0, 55.0};
+inline constexpr Vec3 kSphereCenter2{30.0, 0.0, 55.0};
 inline constexpr double kSphereStepShiftKm = 10.0;
 
 // Writes the NetCDF files under `dir` and converts them into `dir / "spheres"` with

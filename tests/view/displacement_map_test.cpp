@@ -38,7 +38,7 @@ TEST(DisplacementMapTest, AUniformWindMovesEveryPointByWindTimesTime) {
   const auto m = lod::testing::geographic_manifest(11, 8, {12000.0, 3000.0, 0.0});
   const lod::WorldFrame frame(m, {.vertical_exaggeration = 1.0});
   const WindStep wind = formula_wind(m, [](double, double, double, double) {
-    return advect::Vec3{10.0, 0.0, 0.0};
+    return Vec3{10.0, 0.0, 0.0};
   });
   DisplacementOptions options;
   options.lattice = {9, 7, 5};
@@ -51,14 +51,14 @@ TEST(DisplacementMapTest, AUniformWindMovesEveryPointByWindTimesTime) {
   for (double fx : {0.1, 0.4, 0.8}) {
     for (double fy : {0.05, 0.5, 0.95}) {
       for (double fz : {0.0, 0.3, 1.0}) {
-        lod::Vec3 p{};
-        const lod::Vec3 f{fx, fy, fz};
+        Vec3 p{};
+        const Vec3 f{fx, fy, fz};
         for (int a = 0; a < 3; ++a) p[a] = map.box.lo[a] + f[a] * (map.box.hi[a] - map.box.lo[a]);
         const double lat = frame.to_axis(p)[1];
         // 10 m/s for 300 s = 3 km along the parallel, drawn at cos(lat0)/cos(lat).
         const double expected = 3.0 * std::cos(lat0 * kDeg) / std::cos(lat * kDeg);
         for (const double s : {300.0, 150.0, 40.0}) {
-          const lod::Vec3 d = map.displacement_at(p, s);
+          const Vec3 d = map.displacement_at(p, s);
           // Lattice interpolation of cos(lat0)/cos(lat) across 1 degree cells: < 1e-3.
           EXPECT_NEAR(d[0], expected * s / 300.0, 2e-3 * expected) << "at " << fx << "," << fy << "," << fz;
           EXPECT_NEAR(d[1], 0.0, 1e-9);
@@ -73,7 +73,7 @@ TEST(DisplacementMapTest, AUniformWindMovesEveryPointByWindTimesTime) {
   EXPECT_EQ(checked, 81u);
   // The east face flows out: those trajectories stop at the boundary, inside the box.
   EXPECT_EQ(map.stopped, map.lattice[1] * map.lattice[2]);
-  const lod::Vec3 east{map.box.hi[0], 0.0, 5.0};
+  const Vec3 east{map.box.hi[0], 0.0, 5.0};
   const auto d = map.displacement_at(east, 300);
   EXPECT_GE(d[0], 0.0);
   EXPECT_LT(d[0], 1e-3);
@@ -85,7 +85,7 @@ TEST(DisplacementMapTest, StoppedTrajectoriesLeaveFiniteDisplacements) {
   // Fill west of 9 E, a strong updraft and a jet elsewhere.
   const WindStep wind = formula_wind(m, [](double lon, double, double, double) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    return lon < 9 ? advect::Vec3{nan, nan, nan} : advect::Vec3{80.0, -40.0, 30.0};
+    return lon < 9 ? Vec3{nan, nan, nan} : Vec3{80.0, -40.0, 30.0};
   });
   const DisplacementMap map = compute_displacement_map(wind, frame, {.lattice = {12, 9, 6}});
   EXPECT_GT(map.stopped, 0u);
@@ -113,16 +113,16 @@ double max_error_m(const DisplacementMap& map, const WindStep& wind, const lod::
   double worst = 0;
   *max_displacement_m = 0;
   for (int i = 0; i < 343; ++i) {
-    const lod::Vec3 f{0.1 + 0.8 * ((i % 7) + 0.5) / 7, 0.1 + 0.8 * ((i / 7 % 7) + 0.5) / 7,
+    const Vec3 f{0.1 + 0.8 * ((i % 7) + 0.5) / 7, 0.1 + 0.8 * ((i / 7 % 7) + 0.5) / 7,
                       0.05 + 0.6 * ((i / 49) + 0.5) / 7};
-    lod::Vec3 p{};
+    Vec3 p{};
     for (int a = 0; a < 3; ++a) p[a] = map.box.lo[a] + f[a] * (map.box.hi[a] - map.box.lo[a]);
     const auto r = advect::advect(wind.field, wind.units.to_wind(frame.to_axis(p)), 0, s);
     if (r.stop != advect::Stop::kReached) continue;
-    const lod::Vec3 exact = frame.to_world(wind.units.to_axis(r.position));
-    const lod::Vec3 moved = lod::add(p, map.displacement_at(p, s));
-    worst = std::max(worst, lod::length(lod::sub(exact, moved)) * 1000);
-    *max_displacement_m = std::max(*max_displacement_m, lod::length(lod::sub(exact, p)) * 1000);
+    const Vec3 exact = frame.to_world(wind.units.to_axis(r.position));
+    const Vec3 moved = add(p, map.displacement_at(p, s));
+    worst = std::max(worst, length(sub(exact, moved)) * 1000);
+    *max_displacement_m = std::max(*max_displacement_m, length(sub(exact, p)) * 1000);
   }
   return worst;
 }
@@ -149,7 +149,7 @@ TEST(DisplacementMapTest, BadOptionsAreRefused) {
   const auto m = lod::testing::geographic_manifest(4, 4, {0.0, 1000.0});
   const lod::WorldFrame frame(m, {.vertical_exaggeration = 1.0});
   const WindStep wind = formula_wind(m, [](double, double, double, double) {
-    return advect::Vec3{1.0, 0.0, 0.0};
+    return Vec3{1.0, 0.0, 0.0};
   });
   expect_error([&] { compute_displacement_map(wind, frame, {.lattice = {1, 4, 4}}); },
                ErrorCode::kInvalidArgument, {"lattice", "axis 0"});

@@ -130,7 +130,7 @@ TEST(GeopotentialHeightsTest, MeshesArePlacedAtZgAndInsideTheirWidenedBoxes) {
       const float zg = p[view::kVertexAttributes + 1];  // the attribute after "ta"
       ASSERT_TRUE(std::isfinite(zg));
       EXPECT_NEAR(p[2] * 1000.0, zg, 0.5) << "node " << node << " vertex " << v;
-      const lod::Vec3 world{p[0], p[1], p[2]};
+      const Vec3 world{p[0], p[1], p[2]};
       lod::WorldBox widened = box;
       for (int a = 0; a < 3; ++a) {
         widened.lo[a] -= 1e-6 * (1 + std::fabs(widened.lo[a]));

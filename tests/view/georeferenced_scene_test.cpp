@@ -133,7 +133,7 @@ TEST(GeoreferencedSceneTest, TracksAndTheSunStandAtTrueLongitudeLatitude) {
   ASSERT_EQ(lines.head_count(), 1u);
   const auto rotated = testing::cs2cs("+proj=longlat", testing::kEuroCordexRotatedPole, {{11.4, 47.27}});
   ASSERT_TRUE(rotated);
-  const lod::Vec3 data = frame.to_world({(*rotated)[0][0], (*rotated)[0][1], 10000.0});
+  const Vec3 data = frame.to_world({(*rotated)[0][0], (*rotated)[0][1], 10000.0});
   EXPECT_NEAR(lines.heads[0], data[0], 1e-3);
   EXPECT_NEAR(lines.heads[1], data[1], 1e-3);
   EXPECT_NEAR(lines.heads[2], 10.0, 1e-6);
@@ -246,14 +246,14 @@ TEST(GeoreferencedSceneTest, NodeBoxesHoldEveryPlacedVertexOfARotatedPoleStore) 
     }
     for (std::size_t v = 0; v < geometry->vertex_count(); ++v) {
       const float* p = &geometry->vertices[v * view::kVertexFloats];
-      ASSERT_TRUE(box.contains(lod::Vec3{p[0], p[1], p[2]})) << "node " << n << " vertex " << v;
+      ASSERT_TRUE(box.contains(Vec3{p[0], p[1], p[2]})) << "node " << n << " vertex " << v;
       // The normal is a unit vector.
       EXPECT_NEAR(std::hypot(p[3], p[4], p[5]), 1.0, 1e-5);
       ++vertices;
     }
     for (std::size_t v = 0; v < geometry->slice_vertex_count(); ++v) {
       const float* p = &geometry->slice_vertices[v * view::kSliceVertexFloats];
-      ASSERT_TRUE(box.contains(lod::Vec3{p[0], p[1], p[2]})) << "node " << n << " slice vertex " << v;
+      ASSERT_TRUE(box.contains(Vec3{p[0], p[1], p[2]})) << "node " << n << " slice vertex " << v;
       ++slice_vertices;
     }
   }

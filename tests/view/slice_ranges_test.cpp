@@ -27,15 +27,15 @@ Mesh slice_triangle(std::array<float, 3> values) {
   return m;
 }
 
-protocol::SliceResultWire slice(std::array<float, 3> values) {
-  protocol::SliceResultWire s;
+SliceResult slice(std::array<float, 3> values) {
+  SliceResult s;
   s.outcome = NodeOutcome::kMesh;
   s.mesh = slice_triangle(values);
   return s;
 }
 
 std::shared_ptr<const NodeGeometry> placed(NodeId node,
-                                           std::vector<protocol::SliceResultWire> slices) {
+                                           std::vector<SliceResult> slices) {
   static const GeometryPlacer placer(lod::testing::geographic_manifest(11, 8, {0.0, 12000.0}));
   protocol::NodeResult result;
   result.node = node;
@@ -52,7 +52,7 @@ TEST(ShownSliceRanges, SpanEveryShownNodePerSliceIgnoringMissingValues) {
   // Slice 0 spans 250..300 over nodes 1 and 2; slice 1 has only missing values; slice 2
   // only in node 2.
   ASSERT_TRUE(meshes.accept(1, placed(1, {slice({260, kNaN, 300}), slice({kNaN, kNaN, kNaN})})));
-  ASSERT_TRUE(meshes.accept(2, placed(2, {slice({250, 255, kNaN}), protocol::SliceResultWire{},
+  ASSERT_TRUE(meshes.accept(2, placed(2, {slice({250, 255, kNaN}), SliceResult{},
                                           slice({-5, 7, 1})})));
   // Node 3 has not answered: it shows nothing and adds nothing.
   const auto ranges = shown_slice_ranges(meshes, 4);

@@ -46,7 +46,7 @@ std::shared_ptr<const view::TerrainFrame> settle(view::TerrainTiles& t, const lo
   return frame;
 }
 
-lod::Camera camera_at(const lod::WorldFrame& f, lod::Vec3 eye, lod::Vec3 target) {
+lod::Camera camera_at(const lod::WorldFrame& f, Vec3 eye, Vec3 target) {
   return lod::look_at(eye, target, 45.0, 16.0 / 9.0, f.domain());
 }
 

@@ -30,11 +30,11 @@ namespace {
 using namespace std::chrono_literals;
 
 // Seen from the south, level with the sphere centres (world km, exaggeration 10).
-const lod::Vec3 kEye{5.0, -320.0, 55.0};
-const lod::Vec3 kTarget{5.0, 0.0, 55.0};
+const Vec3 kEye{5.0, -320.0, 55.0};
+const Vec3 kTarget{5.0, 0.0, 55.0};
 // Close enough that the frustum leaves out some nodes, and different ones at different
 // exaggerations.
-const lod::Vec3 kCloseEye{5.0, -100.0, 55.0};
+const Vec3 kCloseEye{5.0, -100.0, 55.0};
 
 SubVolume sphere(double radius) {
   SubVolume s;
@@ -64,8 +64,8 @@ struct Session {
   }
 };
 
-lod::Camera camera_of(const view::ViewController& controller, const lod::Vec3& eye = kEye,
-                      const lod::Vec3& target = kTarget) {
+lod::Camera camera_of(const view::ViewController& controller, const Vec3& eye = kEye,
+                      const Vec3& target = kTarget) {
   return lod::look_at(eye, target, 45.0, 1.0, controller.frame().domain());
 }
 
@@ -94,7 +94,7 @@ lod::Camera camera_of(const view::ViewController& controller, const lod::Vec3& e
   }
 }
 
-double distance_to_box(const lod::Vec3& p, const lod::WorldBox& box) {
+double distance_to_box(const Vec3& p, const lod::WorldBox& box) {
   double d2 = 0;
   for (int a = 0; a < 3; ++a) {
     const double d = std::max({box.lo[a] - p[a], 0.0, p[a] - box.hi[a]});
@@ -143,7 +143,7 @@ void expect_every_cut_node_current(const view::ViewController& controller) {
 }
 
 // The nodes of the cut whose box the ball of `radius` about `centre` reaches.
-std::set<NodeId> nodes_touched(const view::ViewController& controller, const lod::Vec3& centre,
+std::set<NodeId> nodes_touched(const view::ViewController& controller, const Vec3& centre,
                                double radius) {
   std::set<NodeId> out;
   for (const auto& n : controller.cut().nodes()) {
@@ -219,7 +219,7 @@ TEST_F(ViewControllerTest, ATimeStepChangeShowsTheOldMeshesStaleUntilReplaced) {
   }
   EXPECT_GT(changed, 0u);
   // In step 1 the sphere is 10 km further east.
-  const lod::Vec3 moved{kSphereCenter1[0] + kSphereStepShiftKm, kSphereCenter1[1],
+  const Vec3 moved{kSphereCenter1[0] + kSphereStepShiftKm, kSphereCenter1[1],
                         kSphereCenter1[2]};
   EXPECT_EQ(nodes_with_mesh(controller), nodes_touched(controller, moved, 30.0));
 }
@@ -352,7 +352,7 @@ TEST_F(ViewControllerTest, InvalidInputIsRefusedAndTheViewKeepsWorking) {
   ASSERT_TRUE(update_until_complete(controller, camera));
   expect_every_cut_node_current(controller);
   EXPECT_FALSE(controller.last_error().has_value()) << *controller.last_error();
-  const lod::Vec3 moved{kSphereCenter1[0] + kSphereStepShiftKm, kSphereCenter1[1],
+  const Vec3 moved{kSphereCenter1[0] + kSphereStepShiftKm, kSphereCenter1[1],
                         kSphereCenter1[2]};
   EXPECT_EQ(nodes_with_mesh(controller), nodes_touched(controller, moved, 30.0));
 }

@@ -63,10 +63,10 @@ TEST_F(WindSourceTest, TheFieldHoldsTheLevelsSamplesAtBothSteps) {
     for (std::size_t i = 0; i < u.sample_count(); i += 7) {
       const std::size_t x = i % u.dims[0], y = (i / u.dims[0]) % u.dims[1],
                         z = i / (u.dims[0] * u.dims[1]);
-      const advect::Vec3 p{m.x.values[layout.fine_index(level, 0, box.lo[0] + x)],
+      const Vec3 p{m.x.values[layout.fine_index(level, 0, box.lo[0] + x)],
                            m.y.values[layout.fine_index(level, 1, box.lo[1] + y)],
                            m.z.values[layout.fine_index(level, 2, box.lo[2] + z)]};
-      advect::Vec3 rate{};
+      Vec3 rate{};
       ASSERT_EQ(wind.field.rate(p, t * wind.seconds, rate), advect::Sample::kOk);
       const double deg = 180.0 / std::numbers::pi;
       const double cos_lat = std::cos(p[1] / deg);
