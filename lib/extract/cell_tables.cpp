@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "core/error.h"
-#include "extract/vec3.h"
+#include "core/vec3.h"
 
 namespace strielad {
 

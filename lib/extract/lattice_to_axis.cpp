@@ -6,6 +6,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "extract/mesh_metrics.h"
 #include "extract/tet_clipper.h"
 
 namespace strielad {
@@ -268,11 +269,7 @@ void face_normals_where_no_gradient(NodeMeshScratch& scratch, Mesh& mesh) {
     if (!scratch.needs_fallback[t[0]] && !scratch.needs_fallback[t[1]] && !scratch.needs_fallback[t[2]]) {
       continue;
     }
-    const auto& p0 = mesh.positions[t[0]];
-    const auto& p1 = mesh.positions[t[1]];
-    const auto& p2 = mesh.positions[t[2]];
-    const Vec3 n = cross(Vec3{p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
-                         Vec3{p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
+    const Vec3 n = area_normal(mesh, t);
     for (std::uint32_t v : t) {
       for (int a = 0; a < 3; ++a) scratch.fallback[v][a] += n[a];
     }

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 
+#include "core/vec3.h"
 #include "extract/mesh.h"
 
 namespace strielad {
@@ -31,6 +32,13 @@ struct MeshCheck {
 // its edges from a is exactly 0 in double (coincident or collinear points).
 bool zero_area(const std::array<double, 3>& a, const std::array<double, 3>& b,
                const std::array<double, 3>& c);
+
+// Triangle t's normal scaled by twice its area (the cross product of its edges from its
+// first vertex): outward for a counter-clockwise triangle.
+inline Vec3 area_normal(const Mesh& mesh, const std::array<std::uint32_t, 3>& t) {
+  const auto& p0 = mesh.positions[t[0]];
+  return cross(sub(mesh.positions[t[1]], p0), sub(mesh.positions[t[2]], p0));
+}
 
 // Vertices are identified by exact position (a mesh may duplicate a position with
 // different normals where surfaces meet at a crease).

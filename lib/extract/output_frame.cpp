@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/vec3.h"
+#include "extract/mesh_metrics.h"
 #include "geo/standard_atmosphere.h"
 #include "grid/units.h"
 
@@ -117,11 +118,7 @@ void transform_normal(const Vec3& cx, const Vec3& cy, const Vec3& cz, double det
 void placed_surface_normals(Mesh& mesh) {
   std::vector<Vec3> sum(mesh.positions.size(), Vec3{0, 0, 0});
   for (const auto& t : mesh.triangles) {
-    const auto& p0 = mesh.positions[t[0]];
-    const auto& p1 = mesh.positions[t[1]];
-    const auto& p2 = mesh.positions[t[2]];
-    const Vec3 n = cross(Vec3{p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]},
-                         Vec3{p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]});
+    const Vec3 n = area_normal(mesh, t);
     for (std::uint32_t i : t) {
       for (int a = 0; a < 3; ++a) sum[i][a] += n[a];
     }

@@ -264,8 +264,8 @@ std::vector<std::pair<double, const GpuMesh*>> meshes_nearest_first(const GpuMes
   std::vector<std::pair<double, const GpuMesh*>> order;
   order.reserve(meshes.meshes().size());
   for (const auto& [node, mesh] : meshes.meshes()) {
-    const lod::Vec3 c{mesh.center[0], mesh.center[1], mesh.center[2] * inputs.vertical_exaggeration};
-    order.emplace_back(lod::length(lod::sub(c, inputs.camera.eye)), &mesh);
+    const Vec3 c{mesh.center[0], mesh.center[1], mesh.center[2] * inputs.vertical_exaggeration};
+    order.emplace_back(length(sub(c, inputs.camera.eye)), &mesh);
   }
   std::sort(order.begin(), order.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -280,11 +280,11 @@ void bind_motion(GLuint g, const MotionBinding* motion) {
   const auto& map = *motion->map;
   set_float(g, "u_motion_weight", motion->weight);
   set_vec3(g, "u_motion_lo", map.box.lo);
-  lod::Vec3 size{};
+  Vec3 size{};
   for (int a = 0; a < 3; ++a) size[a] = std::max(map.box.hi[a] - map.box.lo[a], 1e-9);
   set_vec3(g, "u_motion_size", size);
   set_vec3(g, "u_motion_lattice",
-           lod::Vec3{double(map.lattice[0]), double(map.lattice[1]), double(map.lattice[2])});
+           Vec3{double(map.lattice[0]), double(map.lattice[1]), double(map.lattice[2])});
   glBindTextureUnit(2, motion->from);
   glBindTextureUnit(3, motion->to);
 }
@@ -429,7 +429,7 @@ std::uint64_t VolumeRenderer::draw_geometry_pass(const FrameInputs& inputs,
   set_mat4(g, "u_view", frame.view_matrix);
   set_float(g, "u_vertical_exaggeration", inputs.vertical_exaggeration);
   set_vec3(g, "u_eye", inputs.camera.eye);
-  set_vec3(g, "u_sun", lod::normalize(inputs.sun_direction));
+  set_vec3(g, "u_sun", normalize(inputs.sun_direction));
   set_float(g, "u_time", inputs.time_seconds);
   set_float(g, "u_near", inputs.camera.near_km);
   set_float(g, "u_far", inputs.camera.far_km);

@@ -220,14 +220,14 @@ std::vector<std::size_t> with_ring(const std::vector<std::size_t>& samples, std:
 // The terrain's gradient (dz/dx, dz/dy) at lattice point i by central differences in the
 // world frame: the plane through the neighbours in both directions (one-sided where the
 // ring around the tile was clamped). `wc`: the lattice's row length.
-std::array<double, 2> surface_gradient(const std::vector<lod::Vec3>& p, std::size_t i,
+std::array<double, 2> surface_gradient(const std::vector<Vec3>& p, std::size_t i,
                                        std::size_t wc) {
   const auto& pl = p[i - 1];
   const auto& pr = p[i + 1];
   const auto& pd = p[i - wc];
   const auto& pu = p[i + wc];
-  const lod::Vec3 a = lod::sub(pr, pl), b = lod::sub(pu, pd);
-  const lod::Vec3 n = lod::cross(a, b);
+  const Vec3 a = sub(pr, pl), b = sub(pu, pd);
+  const Vec3 n = cross(a, b);
   double gx = 0, gy = 0;
   if (std::fabs(n[2]) > 1e-12) {
     gx = -n[0] / n[2];
