@@ -46,7 +46,7 @@ struct VtpOptions {
   int compression_level = 5;
   // Text metadata as FieldData string arrays (name, value): the frame, the vertical
   // placement, the grid mapping.
-  std::vector<std::pair<std::string, std::string>> field_data;
+  std::vector<std::pair<std::string, std::string>> field_data{};
 };
 
 struct VtpSummary {

@@ -235,7 +235,7 @@ TEST(GeoreferencedSceneTest, NodeBoxesHoldEveryPlacedVertexOfARotatedPoleStore) 
     const NodeExtraction e = extract_node(*store, nullptr, scene, 0, n);
     protocol::NodeResult result;
     result.node = n;
-    for (const auto& r : e.results) result.subvolumes.push_back({r.subvolume_id, r.outcome, r.reason, r.mesh});
+    for (const auto& r : e.results) result.subvolumes.push_back({r.subvolume_id, r.outcome, r.reason, r.mesh, {}});
     for (const auto& s : e.slices) result.slices.push_back({s.slice_id, s.outcome, s.reason, s.mesh});
     const auto geometry = placer.place(result, 0, [](std::uint32_t id) { return id == 1 ? 0 : -1; });
     // The box, widened by the rounding of the float vertices (1e-6 relative).
