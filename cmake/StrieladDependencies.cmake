@@ -30,7 +30,7 @@ find_package(PROJ CONFIG REQUIRED)
 find_package(GDAL CONFIG REQUIRED)
 
 # Open MPI 4.1 (libopenmpi-dev): strielad-serve's MPI mode only (lib/serve/mpi_*.cpp, in
-# the strielad_mpi library; README "Running strielad-serve under MPI and Slurm"). Only
+# the strielad_serve_mpi library; docs/cluster.md). Only
 # the C API is used, so the deprecated C++ bindings are skipped.
 set(MPI_CXX_SKIP_MPICXX ON CACHE BOOL "Skip the MPI C++ bindings" FORCE)
 find_package(MPI REQUIRED COMPONENTS CXX)

@@ -22,7 +22,7 @@ void add_source_options(CLI::App& app, view_cmd::ViewerArgs& args) {
                  "where the store has clw, cli, qr");
   app.add_option("--time", args.time, "Time step to show first (overrides the scene's)");
   app.add_option("--shader", args.shader_file,
-                 "GLSL file with color() and alpha() (README \"User shaders\"); reloaded "
+                 "GLSL file with color() and alpha() (docs/view.md \"User shaders\"); reloaded "
                  "when it changes. Default: examples/shaders/clouds.glsl, built in");
 }
 
@@ -31,7 +31,7 @@ void add_view_options(CLI::App& app, view_cmd::ViewerArgs& args) {
   app.add_option("--exaggeration", args.exaggeration,
                  "Vertical exaggeration of the world frame (default: from the domain's "
                  "extents, 10 for the paper's grid, 200 for a global one; 10 under "
-                 "--camera; README \"Vertical exaggeration\")")
+                 "--camera; docs/view.md \"Defaults for any domain\")")
       ->check(CLI::PositiveNumber);
   app.add_option("--lod-threshold", args.lod_threshold_sr,
                  "Split a node covering more than this solid angle, sr (default 0.01)");
@@ -46,11 +46,11 @@ void add_view_options(CLI::App& app, view_cmd::ViewerArgs& args) {
                  "In-process server: brick cache budget, MiB (default 1024)");
 }
 
-// Wind advection between time steps (README "Advection").
+// Wind advection between time steps (docs/advection.md).
 void add_advection_options(CLI::App& app, view_cmd::ViewerArgs& args) {
   app.add_flag("--advect", args.advect,
                "Move the meshes with the wind between time steps (smooth playback; "
-               "README \"Advection\")");
+               "docs/advection.md)");
   app.add_option("--wind", args.wind, "Wind components U,V,W (default ua,va,wa)");
   app.add_option("--wind-store", args.wind_store,
                  "Store to read the wind from (default: STORE; with --connect, the "
@@ -83,14 +83,14 @@ void add_geography_options(CLI::App& app, view_cmd::ViewerArgs& args) {
                  "'fixed' (from the south-southeast, 54 degrees up, whatever the time)")
       ->check(CLI::IsMember({"time", "fixed"}));
   app.add_option("--tracks", args.tracks_file,
-                 "Flight tracks: CSV with columns id,time,lon,lat,altitude, or a CF trajectory NetCDF file (README "
-                 "\"Flight tracks\")");
+                 "Flight tracks: CSV with columns id,time,lon,lat,altitude, or a CF trajectory NetCDF file "
+                 "(docs/terrain-and-tracks.md)");
   app.add_option("--track-minutes", args.track_minutes,
                  "Draw the part of each track flown in the last N minutes (default 2)")
       ->check(CLI::Range(0.0, 1e6));
   app.add_option("--terrain", args.terrain_file,
                  "Terrain: a DEM as CF-NetCDF (lon/lat or rotated-pole grid) or any raster "
-                 "GDAL reads (GeoTIFF...), README \"Terrain\"");
+                 "GDAL reads (GeoTIFF...), docs/terrain-and-tracks.md");
   app.add_option("--terrain-var", args.terrain_var,
                  "NetCDF DEM variable (default: standard_name surface_altitude, or HSURF, "
                  "z_ifc, topography_c, orog, elevation)");
