@@ -263,17 +263,41 @@ Table whole_level_table(const ExtractSuiteReport& r) {
 }
 
 Table targets_table(const ExtractSuiteReport& r) {
-  Table t{"targets",
-          "Targets: kernel >= 50x paper, >= 2x vtkFlyingEdges3D, equal volumes",
-          {"target", "measured", "met"},
-          {},
-          {}};
+  Table t{"targets", "Targets: equal volumes", {"target", "measured", "met"}, {}, {}};
   for (const auto& g : r.targets) {
     t.add({g.name, g.measured, g.evaluated ? (g.met ? "yes" : "NO") : "not measured"});
   }
   t.notes.push_back(
-      "ratios of median ms per brick (one thread, same bricks); volumes equal = the kernel's "
-      "total enclosed volume over the bricks within 1% of the paper pipeline's");
+      "volumes equal = the kernel's total enclosed volume over the bricks within 1% of the "
+      "paper pipeline's");
+  return t;
+}
+
+// How fast the kernel is against the peers on the same bricks: reported as it is (the
+// earlier per-brick speed targets, 50x the paper's pipeline and 2x vtkFlyingEdges3D, are
+// withdrawn; speed goals are end to end).
+Table standing_table(const ExtractSuiteReport& r) {
+  Table t{"standing", "Standing: the kernel against the peers, per brick",
+          {"case", "against", "measured"}, {}, {}};
+  for (const BrickGroup& g : r.groups) {
+    if (g.runs.empty()) continue;
+    const ContenderSummary k = summarize_contender(g, g.index_of(kKernel));
+    const ContenderSummary p = summarize_contender(g, g.index_of(kPaper));
+    t.add({group_key(g), "paper VTK pipeline",
+           fmt::format("{:.1f}x ({:.3f} vs {:.3f} ms/brick; total time {:.1f}x)",
+                       ratio(p.p50_ms, k.p50_ms), k.p50_ms, p.p50_ms,
+                       ratio(p.total_s, k.total_s))});
+    if (const std::size_t ife = g.index_of(kFlyingEdges); ife != std::string::npos) {
+      const ContenderSummary fe = summarize_contender(g, ife);
+      t.add({group_key(g), "vtkFlyingEdges3D",
+             fmt::format("{:.2f}x ({:.3f} vs {:.3f} ms/brick; total time {:.2f}x)",
+                         ratio(fe.p50_ms, k.p50_ms), k.p50_ms, fe.p50_ms,
+                         ratio(fe.total_s, k.total_s))});
+    }
+  }
+  t.notes.push_back(
+      "peer's median ms per brick / the kernel's (one thread, same bricks); the kernel's meshes "
+      "are closed and multi-condition, vtkFlyingEdges3D's an open single iso-surface");
   return t;
 }
 
@@ -285,26 +309,12 @@ std::vector<Target> evaluate_extract_targets(const ExtractSuiteReport& r) {
     const std::string key = group_key(g);
     if (g.runs.empty()) {
       out.push_back(
-          {fmt::format("{}: kernel >= 50x paper pipeline", key), "no bricks", false, false});
+          {fmt::format("{}: kernel volume = paper volume within 1%", key), "no bricks", false,
+           false});
       continue;
     }
     const ContenderSummary k = summarize_contender(g, g.index_of(kKernel));
     const ContenderSummary p = summarize_contender(g, g.index_of(kPaper));
-    {
-      const double x = ratio(p.p50_ms, k.p50_ms);
-      out.push_back({fmt::format("{}: kernel >= 50x paper pipeline", key),
-                     fmt::format("{:.1f}x ({:.3f} vs {:.3f} ms/brick; total time {:.1f}x)", x,
-                                 k.p50_ms, p.p50_ms, ratio(p.total_s, k.total_s)),
-                     x >= 50, true});
-    }
-    if (const std::size_t ife = g.index_of(kFlyingEdges); ife != std::string::npos) {
-      const ContenderSummary fe = summarize_contender(g, ife);
-      const double x = ratio(fe.p50_ms, k.p50_ms);
-      out.push_back({fmt::format("{}: kernel >= 2x vtkFlyingEdges3D", key),
-                     fmt::format("{:.2f}x ({:.3f} vs {:.3f} ms/brick; total time {:.2f}x)", x,
-                                 k.p50_ms, fe.p50_ms, ratio(fe.total_s, k.total_s)),
-                     x >= 2, true});
-    }
     out.push_back(
         {fmt::format("{}: kernel volume = paper volume within 1%", key),
          fmt::format("{:+.3f}% (max per brick {:.3f}% of the node; vs the exact trilinear "
@@ -321,6 +331,7 @@ std::vector<Table> extract_report_tables(const ExtractSuiteReport& r) {
   for (const ExtractCase& c : r.options.cases) tables.push_back(brick_table(r, c));
   for (const LevelGroup& g : r.level_groups) tables.push_back(level_table(g));
   if (!r.whole_level.empty()) tables.push_back(whole_level_table(r));
+  tables.push_back(standing_table(r));
   tables.push_back(targets_table(r));
   return tables;
 }
