@@ -83,8 +83,8 @@ void add_geography_options(CLI::App& app, view_cmd::ViewerArgs& args) {
                  "'fixed' (from the south-southeast, 54 degrees up, whatever the time)")
       ->check(CLI::IsMember({"time", "fixed"}));
   app.add_option("--tracks", args.tracks_file,
-                 "Flight tracks: CSV with columns id,time,lon,lat,altitude, or a CF trajectory NetCDF file "
-                 "(docs/terrain-and-tracks.md)");
+                 "Flight tracks: CSV with columns id,time,lon,lat,altitude, or a CF "
+                 "trajectory NetCDF file (docs/terrain-and-tracks.md)");
   app.add_option("--track-minutes", args.track_minutes,
                  "Draw the part of each track flown in the last N minutes (default 2)")
       ->check(CLI::Range(0.0, 1e6));
