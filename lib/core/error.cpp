@@ -1,5 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/error.h"
+#include "core/io_error.h"
+
+#include <cerrno>
+#include <cstring>
 
 namespace strielad {
 
@@ -42,6 +46,15 @@ Error::Error(ErrorCode code, std::string message)
 
 Error Error::with_context(std::string_view context) const {
   return Error(code_, fmt::format("{}: {}", context, what()));
+}
+
+}  // namespace strielad
+
+namespace strielad {
+
+Error io_error(std::string_view action, const std::filesystem::path& path, int err) {
+  return make_error(err == ENOENT ? ErrorCode::kNotFound : ErrorCode::kIo, "{}: cannot {}: {}",
+                    path.string(), action, std::strerror(err));
 }
 
 }  // namespace strielad

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "extract/node_mesh_scratch.h"
+#include "extract/thread_scratch.h"
 
 #include <algorithm>
 
@@ -29,6 +30,15 @@ void NodeMeshScratch::begin(std::size_t samples, const std::array<std::size_t, 3
   next_stamp = stamp + used;
   corner_crossings = 0;
   builder.reset();
+}
+
+}  // namespace strielad
+
+namespace strielad {
+
+ExtractScratch& this_thread_scratch() {
+  thread_local ExtractScratch scratch;
+  return scratch;
 }
 
 }  // namespace strielad

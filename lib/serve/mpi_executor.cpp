@@ -200,33 +200,40 @@ std::shared_ptr<MpiMaster::Pending> MpiMaster::run_task(const NodeTask& task, bo
     outbox_.push_back({p->rank, mpi::kTask, mpi::encode(request)});
   }
   wake_.notify_one();
+  if (wait_for_reply(*p, task, should_yield)) return p;
+  return nullptr;
+}
 
-  // Declared before the lock, so destroyed after it is released (its callback locks).
-  std::stop_callback on_stop(task.stop, [&] {
+bool MpiMaster::wait_for_reply(Pending& p, const NodeTask& task, const YieldCheck* should_yield) {
+  // The callback may run on the thread that requests the stop until this callback's
+  // destructor returns, so it holds only what outlives this function: `p` is kept alive
+  // by the caller (never the caller's shared_ptr itself: `return p` moves it).
+  std::stop_callback on_stop(task.stop, [this, &p] {
     std::lock_guard lock(mutex_);
-    p->cv.notify_all();
+    p.cv.notify_all();
   });
+  // Declared after the callback, so released before the callback (which locks) is removed.
   std::unique_lock lock(mutex_);
-  const auto finished = [&] { return p->done || closed_ || task.stop.stop_requested(); };
+  const auto finished = [&] { return p.done || closed_ || task.stop.stop_requested(); };
   if (should_yield) {
-    while (!p->cv.wait_for(lock, 1ms, finished)) {
+    while (!p.cv.wait_for(lock, 1ms, finished)) {
       lock.unlock();
       const bool yield = (*should_yield)();  // takes the dispatcher's and sessions' locks
       lock.lock();
       if (yield) break;
     }
   } else {
-    p->cv.wait(lock, finished);
+    p.cv.wait(lock, finished);
   }
-  if (p->done) return p;
+  if (p.done) return true;
   // Stopped (or yielding, or shutting down): return now; the worker's late reply only
   // frees its slot.
-  p->abandoned = true;
+  p.abandoned = true;
   if (!closed_) {
-    outbox_.push_back({p->rank, mpi::kCancel, mpi::encode_cancel(p->id)});
+    outbox_.push_back({p.rank, mpi::kCancel, mpi::encode_cancel(p.id)});
     wake_.notify_one();
   }
-  return nullptr;
+  return false;
 }
 
 void MpiMaster::communicate_while(const std::function<void()>& body) {

@@ -77,6 +77,9 @@ class MpiMaster {
   // when given). Returns the finished Pending, or nullptr when abandoned.
   std::shared_ptr<Pending> run_task(const NodeTask& task, bool prefetch,
                                     const YieldCheck* should_yield);
+  // Waits for `p`'s reply, a stop of `task`, or `should_yield`; true when the reply came.
+  // On false the task is marked abandoned and its cancel queued.
+  bool wait_for_reply(Pending& p, const NodeTask& task, const YieldCheck* should_yield);
   int place_locked(const NodeTask& task, bool may_steal) const;
   // Queues the task's scene for `rank` unless the worker holds it already.
   void send_scene_locked(int rank, const NodeTask& task);
