@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
+// The subcommands that work on an existing store: info, verify and finalize.
 
 #include <iostream>
 #include <memory>
@@ -33,9 +34,6 @@ void register_info(CLI::App& app, cli::Action& action) {
   });
 }
 
-}  // namespace strielad::convert_cmd
-
-namespace strielad::convert_cmd {
 
 void register_verify(CLI::App& app, cli::Action& action) {
   auto* sub = app.add_subcommand(
@@ -66,9 +64,6 @@ void register_verify(CLI::App& app, cli::Action& action) {
   });
 }
 
-}  // namespace strielad::convert_cmd
-
-namespace strielad::convert_cmd {
 
 void register_finalize(CLI::App& app, cli::Action& action) {
   auto* sub = app.add_subcommand(

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
+// Parsers of flag values shared by the tools: image sizes (cli/image_size.h) and step
+// ranges (cli/step_range.h).
 #include "cli/image_size.h"
 #include "cli/step_range.h"
 
@@ -24,9 +26,6 @@ std::pair<int, int> parse_image_size(const std::string& text, std::string_view f
   return {w, h};
 }
 
-}  // namespace strielad::cli
-
-namespace strielad::cli {
 namespace {
 
 std::optional<std::uint32_t> parse_index(std::string_view s, std::string_view text,

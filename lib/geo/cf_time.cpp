@@ -244,9 +244,6 @@ double julian_day(int year, unsigned month, unsigned day, double seconds_of_day)
   return 2440587.5 + static_cast<double>(days) + seconds_of_day / 86400.0;
 }
 
-}  // namespace strielad::geo
-
-namespace strielad::geo {
 
 TimeAxisDates::TimeAxisDates(const TimeAxis& axis) {
   try {

@@ -9,6 +9,8 @@
 // ranges").
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace strielad {
@@ -17,6 +19,20 @@ inline constexpr double kFullTurn = 360.0;
 
 // The turns k, ascending; empty when the range misses the node (touching counts as
 // meeting, as for every domain range). `lo <= hi`, `hi - lo < 360`, all finite.
-std::vector<int> longitude_turns(double lo, double hi, double a, double b);
+inline std::vector<int> longitude_turns(double lo, double hi, double a, double b) {
+  const double node_lo = std::min(a, b), node_hi = std::max(a, b);
+  // [lo - 360 k, hi - 360 k] meets [node_lo, node_hi]: lo - 360 k <= node_hi and
+  // hi - 360 k >= node_lo.
+  const double first = std::ceil((lo - node_hi) / kFullTurn);
+  const double last = std::floor((hi - node_lo) / kFullTurn);
+  std::vector<int> turns;
+  for (double k = first - 1; k <= last + 1; k += 1.0) {
+    // The divisions above round; the test is exact.
+    if (lo - kFullTurn * k <= node_hi && hi - kFullTurn * k >= node_lo) {
+      turns.push_back(static_cast<int>(k));
+    }
+  }
+  return turns;
+}
 
 }  // namespace strielad

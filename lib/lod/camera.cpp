@@ -133,9 +133,6 @@ Camera look_at(const Vec3& eye, const Vec3& target, double fov_y_deg, double asp
   return c;
 }
 
-}  // namespace strielad::lod
-
-namespace strielad::lod {
 
 bool Frustum::contains(const Vec3& p) const {
   for (const Plane& plane : planes) {

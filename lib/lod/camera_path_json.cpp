@@ -103,9 +103,6 @@ std::string camera_path_to_json(const CameraPath& path) {
   return out.dump();
 }
 
-}  // namespace strielad::lod
-
-namespace strielad::lod {
 
 using path_detail::fail;
 using path_detail::index_path;

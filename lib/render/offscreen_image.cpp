@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
+// Images rendered off screen: the framebuffer they are drawn into
+// (render/offscreen_target.h) and the PNG file they are written to (render/png_file.h).
 #include "render/offscreen_target.h"
 #include "render/png_file.h"
 
@@ -25,9 +27,6 @@ OffscreenTarget::OffscreenTarget(int width, int height) : width_(width), height_
   }
 }
 
-}  // namespace strielad::render
-
-namespace strielad::render {
 
 void write_png(const std::filesystem::path& path, const RgbaImage& image) {
   if (image.width <= 0 || image.height <= 0 ||

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
+// What the viewer's legends show: the sub-volume palette entries (view/subvolume_palette.h)
+// and the value ranges of the shown slices (view/slice_ranges.h).
 #include "view/subvolume_palette.h"
 #include "view/slice_ranges.h"
 
@@ -25,9 +27,6 @@ std::vector<LegendEntry> subvolume_legend(const Scene& scene) {
   return legend;
 }
 
-}  // namespace strielad::view
-
-namespace strielad::view {
 
 std::vector<std::optional<SliceRange>> shown_slice_ranges(const ProgressiveMeshes& meshes,
                                                           std::size_t slice_count) {

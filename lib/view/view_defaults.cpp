@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
+// What the viewer chooses when the user does not: the default scene
+// (view/default_scene.h), the vertical exaggeration (view/default_exaggeration.h), and
+// the log lines that report both (view/view_choices.h).
 #include "view/default_scene.h"
 #include "view/default_exaggeration.h"
 #include "view/view_choices.h"
@@ -97,9 +100,6 @@ double seconds_since_first_step(const format::Manifest& manifest, std::uint32_t 
   return (t.values[step] - t.values.front()) * *factor;
 }
 
-}  // namespace strielad::view
-
-namespace strielad::view {
 namespace {
 
 // E before rounding; NaN when the extent has no usable size.
@@ -156,9 +156,6 @@ std::string describe_default_exaggeration(const DomainExtent& extent) {
                          : std::string());
 }
 
-}  // namespace strielad::view
-
-namespace strielad::view {
 
 std::vector<std::string> view_choice_lines(const ViewChoices& choices) {
   std::vector<std::string> lines;
