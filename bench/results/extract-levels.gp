@@ -8,9 +8,9 @@ set offsets graph 0.04, graph 0.08, graph 0.1, graph 0.1
 set key top right
 set xlabel 'extraction time of the whole level, one thread (s)'
 set ylabel '|enclosed-volume error| vs level 0 (%)'
-plot 'extract-levels.dat' index 0 using 2:4 with linespoints lw 2 pt 7 title 'clw >= 1e-05 (level 0: 0.26 s)', '' index 0 using 2:4:(sprintf('L%d', $1)) with labels offset 1.2,0.6 notitle, \
-     'extract-levels.dat' index 1 using 2:4 with linespoints lw 2 pt 7 title 'ta <= 260 (level 0: 0.25 s)', '' index 1 using 2:4:(sprintf('L%d', $1)) with labels offset 1.2,0.6 notitle
+plot 'extract-levels.dat' index 0 using 2:4 with linespoints lw 2 pt 7 title 'clw >= 1e-05 (level 0: 0.29 s)', '' index 0 using 2:4:(sprintf('L%d', $1)) with labels offset 1.2,0.6 notitle, \
+     'extract-levels.dat' index 1 using 2:4 with linespoints lw 2 pt 7 title 'ta <= 260 (level 0: 0.30 s)', '' index 1 using 2:4:(sprintf('L%d', $1)) with labels offset 1.2,0.6 notitle
 set ylabel 'mean surface distance to level 0 (level-0 cells)'
-plot 'extract-levels.dat' index 0 using 2:5 with linespoints lw 2 pt 7 title 'clw >= 1e-05 (level 0: 0.26 s)', '' index 0 using 2:5:(sprintf('L%d', $1)) with labels offset 1.2,0.6 notitle, \
-     'extract-levels.dat' index 1 using 2:5 with linespoints lw 2 pt 7 title 'ta <= 260 (level 0: 0.25 s)', '' index 1 using 2:5:(sprintf('L%d', $1)) with labels offset 1.2,0.6 notitle
+plot 'extract-levels.dat' index 0 using 2:5 with linespoints lw 2 pt 7 title 'clw >= 1e-05 (level 0: 0.29 s)', '' index 0 using 2:5:(sprintf('L%d', $1)) with labels offset 1.2,0.6 notitle, \
+     'extract-levels.dat' index 1 using 2:5 with linespoints lw 2 pt 7 title 'ta <= 260 (level 0: 0.30 s)', '' index 1 using 2:5:(sprintf('L%d', $1)) with labels offset 1.2,0.6 notitle
 unset multiplot
