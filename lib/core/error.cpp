@@ -48,7 +48,6 @@ Error Error::with_context(std::string_view context) const {
   return Error(code_, fmt::format("{}: {}", context, what()));
 }
 
-
 Error io_error(std::string_view action, const std::filesystem::path& path, int err) {
   return make_error(err == ENOENT ? ErrorCode::kNotFound : ErrorCode::kIo, "{}: cannot {}: {}",
                     path.string(), action, std::strerror(err));

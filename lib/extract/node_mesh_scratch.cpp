@@ -32,7 +32,6 @@ void NodeMeshScratch::begin(std::size_t samples, const std::array<std::size_t, 3
   builder.reset();
 }
 
-
 ExtractScratch& this_thread_scratch() {
   thread_local ExtractScratch scratch;
   return scratch;

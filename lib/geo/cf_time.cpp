@@ -244,7 +244,6 @@ double julian_day(int year, unsigned month, unsigned day, double seconds_of_day)
   return 2440587.5 + static_cast<double>(days) + seconds_of_day / 86400.0;
 }
 
-
 TimeAxisDates::TimeAxisDates(const TimeAxis& axis) {
   try {
     reference_ = parse_cf_time_reference(axis.units, axis.calendar);

@@ -133,7 +133,6 @@ Camera look_at(const Vec3& eye, const Vec3& target, double fov_y_deg, double asp
   return c;
 }
 
-
 bool Frustum::contains(const Vec3& p) const {
   for (const Plane& plane : planes) {
     if (plane.distance(p) < 0) return false;

@@ -103,7 +103,6 @@ std::string camera_path_to_json(const CameraPath& path) {
   return out.dump();
 }
 
-
 using path_detail::fail;
 using path_detail::index_path;
 using path_detail::key_path;

@@ -27,7 +27,6 @@ OffscreenTarget::OffscreenTarget(int width, int height) : width_(width), height_
   }
 }
 
-
 void write_png(const std::filesystem::path& path, const RgbaImage& image) {
   if (image.width <= 0 || image.height <= 0 ||
       image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * 4) {

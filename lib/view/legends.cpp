@@ -27,7 +27,6 @@ std::vector<LegendEntry> subvolume_legend(const Scene& scene) {
   return legend;
 }
 
-
 std::vector<std::optional<SliceRange>> shown_slice_ranges(const ProgressiveMeshes& meshes,
                                                           std::size_t slice_count) {
   std::vector<std::optional<SliceRange>> ranges(slice_count);

@@ -156,7 +156,6 @@ std::string describe_default_exaggeration(const DomainExtent& extent) {
                          : std::string());
 }
 
-
 std::vector<std::string> view_choice_lines(const ViewChoices& choices) {
   std::vector<std::string> lines;
   if (choices.default_scene) {
