@@ -16,6 +16,18 @@ pkg_check_modules(HDF5_SERIAL REQUIRED IMPORTED_TARGET hdf5-serial)
 pkg_check_modules(BLOSC REQUIRED IMPORTED_TARGET blosc)
 pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
 pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
+# GRIB input (ingest). Debian 12 builds ecCodes without thread support: one mutex
+# guards every call (ingest/eccodes_call.h).
+# Not through eccodes.pc (Debian 12's points at a missing include folder) nor its CMake
+# config (which requires the command-line tools to be installed).
+find_path(ECCODES_INCLUDE_DIR eccodes.h REQUIRED)
+find_library(ECCODES_LIBRARY eccodes REQUIRED)
+if(NOT TARGET strielad_deps::eccodes)
+  add_library(strielad_deps::eccodes INTERFACE IMPORTED)
+  set_target_properties(strielad_deps::eccodes PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES ${ECCODES_INCLUDE_DIR}
+    INTERFACE_LINK_LIBRARIES ${ECCODES_LIBRARY})
+endif()
 # fpzip: the lossless floating-point coder of store version 3 (formats/store.md).
 find_package(fpzip REQUIRED CONFIG)
 find_package(spdlog REQUIRED CONFIG)

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "ingest/grib_messages.h"
+
+#include <eccodes.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <memory>
+
+#include "core/error.h"
+#include "core/io_error.h"
+#include "ingest/eccodes_call.h"
+
+namespace strielad::ingest {
+namespace {
+
+struct FileCloser {
+  void operator()(std::FILE* file) const { std::fclose(file); }
+};
+
+GribMessageSummary summarise(const GribHandle& message, const std::string& where) {
+  GribMessageSummary s;
+  off_t offset = 0;
+  std::size_t size = 0;
+  eccodes_check(codes_get_message_offset(message.get(), &offset), where);
+  eccodes_check(codes_get_message_size(message.get(), &size), where);
+  s.offset = static_cast<std::uint64_t>(offset);
+  s.size = size;
+  s.edition = message.long_key("edition");
+  s.short_name = message.string_key("shortName");
+  s.type_of_level = message.string_key("typeOfLevel");
+  s.level = message.long_key("level");
+  s.grid_type = message.string_key("gridType");
+  return s;
+}
+
+}  // namespace
+
+std::vector<GribMessageSummary> list_grib_messages(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::lock_guard lock(eccodes_mutex());
+  take_eccodes_log();
+  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(name.c_str(), "rb"));
+  if (!file) throw io_error("open", path, errno);
+  std::vector<GribMessageSummary> messages;
+  for (;;) {
+    const long before = std::ftell(file.get());
+    int status = 0;
+    GribHandle message(
+        codes_handle_new_from_file(codes_context_get_default(), file.get(), PRODUCT_GRIB, &status));
+    const std::string where =
+        fmt::format("{}: GRIB message {} (after byte {})", name, messages.size() + 1, before);
+    if (!message) {
+      eccodes_check(status, where);
+      const std::string log = take_eccodes_log();
+      if (!log.empty()) throw make_error(ErrorCode::kInvalidInput, "{}: {}", where, log);
+      break;  // end of file
+    }
+    const std::string log = take_eccodes_log();
+    if (!log.empty()) throw make_error(ErrorCode::kInvalidInput, "{}: {}", where, log);
+    messages.push_back(summarise(message, where));
+  }
+  if (messages.empty()) {
+    throw make_error(ErrorCode::kInvalidInput, "{}: no GRIB message in the file", name);
+  }
+  return messages;
+}
+
+}  // namespace strielad::ingest

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: Apache-2.0
+// The messages of a GRIB file (edition 1 or 2, mixed, with WMO headers between them), as
+// ecCodes reads them: where each one is and what it holds.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace strielad::ingest {
+
+struct GribMessageSummary {
+  std::uint64_t offset = 0;  // of "GRIB" in the file
+  std::uint64_t size = 0;    // bytes, "GRIB" to "7777"
+  long edition = 0;
+  std::string short_name;     // ecCodes' shortName ("t", "gh"; "unknown" when not in its tables)
+  std::string type_of_level;  // "isobaricInhPa", "hybrid", "surface" ...
+  long level = 0;
+  std::string grid_type;  // "regular_ll", "lambert", "reduced_gg" ...
+};
+
+// Every message, in file order. \error kNotFound, kIo; kInvalidInput naming the file, the
+// message's number and byte offset and what ecCodes said, for a message it cannot decode
+// (a truncated one, a GRIB 1 grid without its description section ...).
+std::vector<GribMessageSummary> list_grib_messages(const std::filesystem::path& path);
+
+}  // namespace strielad::ingest
