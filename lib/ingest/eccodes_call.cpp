@@ -71,4 +71,22 @@ long GribHandle::long_key(const char* key, long fallback) const {
   return codes_get_long(handle_, key, &value) == 0 ? value : fallback;
 }
 
+std::optional<double> GribHandle::double_key(const char* key) const {
+  int status = 0;
+  if (codes_is_missing(handle_, key, &status) == 1 && status == 0) return std::nullopt;
+  double value = 0;
+  if (codes_get_double(handle_, key, &value) != 0) return std::nullopt;
+  return value;
+}
+
+std::vector<double> GribHandle::double_array_key(const char* key, std::string_view what) const {
+  std::size_t size = 0;
+  eccodes_check(codes_get_size(handle_, key, &size), fmt::format("{}: key '{}'", what, key));
+  std::vector<double> values(size);
+  eccodes_check(codes_get_double_array(handle_, key, values.data(), &size),
+                fmt::format("{}: key '{}'", what, key));
+  values.resize(size);
+  return values;
+}
+
 }  // namespace strielad::ingest

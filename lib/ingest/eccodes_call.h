@@ -5,8 +5,10 @@
 #pragma once
 
 #include <mutex>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 struct grib_handle;
 
@@ -22,7 +24,8 @@ std::string take_eccodes_log();
 // status != 0.
 void eccodes_check(int status, std::string_view context);
 
-// Owns a codes_handle (a decoded GRIB message); closes it under the caller's lock.
+// Owns a codes_handle (a decoded GRIB message). Every call, the destructor included, is
+// made with eccodes_mutex() held by the caller.
 class GribHandle {
  public:
   GribHandle() = default;
@@ -40,6 +43,11 @@ class GribHandle {
   // such key.
   std::string string_key(const char* key) const;
   long long_key(const char* key, long fallback = 0) const;
+  // A numeric key; nothing when the message has no such key (or it is "missing").
+  std::optional<double> double_key(const char* key) const;
+  // A numeric array key ("distinctLatitudes", "latitudes", "values"). \error
+  // kInvalidInput naming `what` and the key when the message has none.
+  std::vector<double> double_array_key(const char* key, std::string_view what) const;
 
  private:
   grib_handle* handle_ = nullptr;

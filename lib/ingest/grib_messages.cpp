@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "core/file_io.h"
 #include "core/io_error.h"
 #include "ingest/eccodes_call.h"
 
@@ -64,6 +65,21 @@ std::vector<GribMessageSummary> list_grib_messages(const std::filesystem::path& 
     throw make_error(ErrorCode::kInvalidInput, "{}: no GRIB message in the file", name);
   }
   return messages;
+}
+
+GribHandle read_grib_message(const std::filesystem::path& path, const GribMessageSummary& summary) {
+  const ReadOnlyFile file(path);
+  std::vector<std::byte> bytes(static_cast<std::size_t>(summary.size));
+  file.read_at(summary.offset, bytes);
+  take_eccodes_log();
+  GribHandle message(
+      codes_handle_new_from_message_copy(codes_context_get_default(), bytes.data(), bytes.size()));
+  const std::string log = take_eccodes_log();
+  if (!message || !log.empty()) {
+    throw make_error(ErrorCode::kInvalidInput, "{}: GRIB message at byte {}: {}", path.string(),
+                     summary.offset, log.empty() ? "ecCodes cannot decode it" : log);
+  }
+  return message;
 }
 
 }  // namespace strielad::ingest

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "ingest/eccodes_call.h"
+
 namespace strielad::ingest {
 
 struct GribMessageSummary {
@@ -24,5 +26,9 @@ struct GribMessageSummary {
 // message's number and byte offset and what ecCodes said, for a message it cannot decode
 // (a truncated one, a GRIB 1 grid without its description section ...).
 std::vector<GribMessageSummary> list_grib_messages(const std::filesystem::path& path);
+
+// The message `summary` (from list_grib_messages) of `path`, decoded. The caller holds
+// eccodes_mutex() while it uses the handle. \error kIo, kTruncated, kInvalidInput.
+GribHandle read_grib_message(const std::filesystem::path& path, const GribMessageSummary& summary);
 
 }  // namespace strielad::ingest

@@ -58,14 +58,4 @@ InputKindGuess detect_input_kind(const std::filesystem::path& path) {
   return detect_input_kind(head);
 }
 
-std::string_view input_kind_name(InputKind kind) {
-  switch (kind) {
-    case InputKind::kNetcdfClassic: return "netCDF classic";
-    case InputKind::kNetcdf4: return "netCDF-4/HDF5";
-    case InputKind::kGrib: return "GRIB";
-    case InputKind::kUnknown: return "unknown";
-  }
-  return "unknown";
-}
-
 }  // namespace strielad::ingest

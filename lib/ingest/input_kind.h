@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
-#include <string_view>
 
 namespace strielad::ingest {
 
@@ -15,8 +14,8 @@ enum class InputKind { kNetcdfClassic, kNetcdf4, kGrib, kUnknown };
 
 struct InputKindGuess {
   InputKind kind = InputKind::kUnknown;
-  int grib_edition = 0;             // kGrib: 1 or 2
-  std::uint64_t grib_offset = 0;    // kGrib: where the first message starts
+  int grib_edition = 0;           // kGrib: 1 or 2
+  std::uint64_t grib_offset = 0;  // kGrib: where the first message starts
 };
 
 // The bytes looked at: a GRIB message may follow a WMO header, and HDF5 allows its
@@ -27,7 +26,5 @@ inline constexpr std::size_t kInputKindHeadBytes = 64 * 1024;
 InputKindGuess detect_input_kind(std::span<const std::byte> head);
 // From the file itself. \error kNotFound, kIo.
 InputKindGuess detect_input_kind(const std::filesystem::path& path);
-
-std::string_view input_kind_name(InputKind kind);
 
 }  // namespace strielad::ingest

@@ -15,12 +15,15 @@ using namespace strielad;
 
 namespace {
 
-std::vector<std::uint8_t> seed(const std::string& bytes) { return {bytes.begin(), bytes.end()}; }
+std::vector<std::uint8_t> seed(const std::string& bytes) {
+  return {bytes.begin(), bytes.end()};
+}
 
 }  // namespace
 
 std::vector<std::vector<std::uint8_t>> strielad_fuzz_seeds() {
-  return {seed(std::string("CDF\x01\0\0\0\0", 8)), seed(std::string("CDF\x05", 4)),
+  return {seed(std::string("CDF\x01\0\0\0\0", 8)),
+          seed(std::string("CDF\x05", 4)),
           seed(std::string("\x89HDF\r\n\x1a\n\0\0", 10)),
           seed(std::string("GRIB\0\0\0\x02\0\0\0\0\0\0\0\0", 16)),
           seed(std::string("\x01\r\r\n123\r\r\nYTPB85 KWBC\r\r\nGRIB\0\0\0\x01", 31)),

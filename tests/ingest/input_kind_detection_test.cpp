@@ -25,13 +25,11 @@ std::vector<std::byte> bytes(std::string_view text) {
 
 TEST(InputKindDetectionTest, RealFilesOfEachKind) {
   EXPECT_EQ(detect_input_kind(ncarg_file("cdf/contour.cdf")).kind, InputKind::kNetcdfClassic);
-  EXPECT_EQ(detect_input_kind(ncarg_file("cdf/nc4uvt.nc")).kind,
-            InputKind::kNetcdf4);
+  EXPECT_EQ(detect_input_kind(ncarg_file("cdf/nc4uvt.nc")).kind, InputKind::kNetcdf4);
   const InputKindGuess grib1 = detect_input_kind(ncarg_file("grb/ced1.lf00.t00z.eta.grb"));
   EXPECT_EQ(grib1.kind, InputKind::kGrib);
   EXPECT_EQ(grib1.grib_edition, 1);
-  const InputKindGuess grib2 =
-      detect_input_kind(ncarg_file("grb/fh.0012_tl.press_gr.awp211.grb2"));
+  const InputKindGuess grib2 = detect_input_kind(ncarg_file("grb/fh.0012_tl.press_gr.awp211.grb2"));
   EXPECT_EQ(grib2.kind, InputKind::kGrib);
   EXPECT_EQ(grib2.grib_edition, 2);
   EXPECT_EQ(grib2.grib_offset, 0u);
@@ -60,7 +58,7 @@ TEST(InputKindDetectionTest, HdfSignatureAfterAUserBlock) {
 TEST(InputKindDetectionTest, LookalikesAreUnknown) {
   EXPECT_EQ(detect_input_kind(bytes("CDF\x03")).kind, InputKind::kUnknown);  // no such version
   EXPECT_EQ(detect_input_kind(bytes(std::string("GRIB\0\0\0\x07", 8))).kind,
-            InputKind::kUnknown);  // no such edition
+            InputKind::kUnknown);                                         // no such edition
   EXPECT_EQ(detect_input_kind(bytes("GRIB")).kind, InputKind::kUnknown);  // cut before it
   EXPECT_EQ(detect_input_kind(bytes("netcdf x {\n}\n")).kind, InputKind::kUnknown);  // CDL
   EXPECT_EQ(detect_input_kind(std::vector<std::byte>{}).kind, InputKind::kUnknown);
