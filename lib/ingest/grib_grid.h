@@ -9,7 +9,9 @@
 // - lambert, polar_stereographic, mercator: projection axes in metres with the CF
 //   mapping (lambert_conformal_conic, polar_stereographic, mercator); the first grid
 //   point projected by PROJ, then DxInMetres and DyInMetres steps from it.
-// The Earth's figure is the message's (GRIB 2 shapeOfTheEarth, GRIB 1 earthIsOblate),
+// Scanning follows the GRIB specification on every grid type (ecCodes 2.28 ignores it on
+// polar stereographic grids). The Earth's figure is the message's (GRIB 2
+// shapeOfTheEarth, GRIB 1 earthIsOblate),
 // written into the mapping. Axes follow the message's scanning (x along i, y along j),
 // so values are stored in the order they come.
 #pragma once

@@ -17,6 +17,7 @@
 #include "ingest/grib_grid.h"
 #include "ingest/grib_messages.h"
 #include "support/expect_error.h"
+#include "support/grib_fixture.h"
 #include "support/temp_dir.h"
 
 namespace strielad::ingest {
@@ -115,6 +116,60 @@ INSTANTIATE_TEST_SUITE_P(EcCodesSamples, GribTemplateTest,
                          ::testing::Values("regular_ll_pl_grib2.tmpl", "regular_ll_pl_grib1.tmpl",
                                            "regular_gg_pl_grib2.tmpl", "regular_gg_pl_grib1.tmpl",
                                            "rotated_ll_pl_grib2.tmpl", "rotated_ll_pl_grib1.tmpl"));
+
+// NCEP-like polar stereographic grids, north and south, and a Mercator grid, written
+// from ecCodes' templates with real-looking keys (no libncarg-data file has them). The
+// polar grids scan +i, +j as NCEP's do: ecCodes 2.28 ignores the scanning flags of polar
+// stereographic grids (it places -j scanning as +j), where this code follows the GRIB
+// specification as for every other grid type.
+TEST(GribGridTest, PolarStereographicGridsMatchEcCodesAtEverySample) {
+  const testing::TempDir dir;
+  for (const bool south : {false, true}) {
+    const auto path = dir / (south ? "south.grb2" : "north.grb2");
+    testing::write_grib_file(path, {{"polar_stereographic_pl_grib2",
+                                     {{"Nx", 25L},
+                                      {"Ny", 20L},
+                                      {"latitudeOfFirstGridPointInDegrees", south ? -20.0 : 20.0},
+                                      {"longitudeOfFirstGridPointInDegrees", 230.0},
+                                      {"LaDInDegrees", south ? -60.0 : 60.0},
+                                      {"orientationOfTheGridInDegrees", 255.0},
+                                      {"DxInMetres", 190500.0},
+                                      {"DyInMetres", 190500.0},
+                                      {"projectionCentreFlag", south ? 128L : 0L},
+                                      {"shapeOfTheEarth", 6L},
+                                      {"jScansPositively", 1L}},
+                                     std::vector<double>(500, 1.0)}});
+    const GribGrid g = grib_grid(decode(path).keys, path.string());
+    ASSERT_TRUE(g.placement.mapping);
+    EXPECT_EQ(g.placement.mapping->name, "polar_stereographic");
+    expect_every_sample_placed(path, 1e-4);
+  }
+}
+
+TEST(GribGridTest, MercatorGridMatchesEcCodesAtEverySample) {
+  const testing::TempDir dir;
+  const auto path = dir / "mercator.grb2";
+  testing::write_grib_file(path, {{"regular_ll_pl_grib2",
+                                   {{"gridDefinitionTemplateNumber", 10L},
+                                    {"Ni", 30L},
+                                    {"Nj", 24L},
+                                    {"latitudeOfFirstGridPointInDegrees", -10.0},
+                                    {"longitudeOfFirstGridPointInDegrees", 120.0},
+                                    {"LaDInDegrees", 20.0},
+                                    {"orientationOfTheGridInDegrees", 0.0},
+                                    {"DiInMetres", 50000.0},
+                                    {"DjInMetres", 50000.0},
+                                    {"iScansNegatively", 0L},
+                                    {"jScansPositively", 1L},
+                                    {"shapeOfTheEarth", 6L}},
+                                   std::vector<double>(720, 1.0)}});
+  const Decoded d = decode(path);
+  ASSERT_EQ(d.keys.grid_type, "mercator");
+  const GribGrid g = grib_grid(d.keys, path.string());
+  ASSERT_TRUE(g.placement.mapping);
+  EXPECT_EQ(g.placement.mapping->name, "mercator");
+  expect_every_sample_placed(path, 1e-4);
+}
 
 TEST(GribGridTest, GlobalRegularGridIsPeriodic) {
   const auto path = std::filesystem::path("/usr/share/eccodes/samples/regular_gg_pl_grib2.tmpl");
