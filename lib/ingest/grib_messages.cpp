@@ -4,6 +4,7 @@
 #include <eccodes.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -31,7 +32,23 @@ GribMessageSummary summarise(const GribHandle& message, const std::string& where
   s.short_name = message.string_key("shortName");
   s.type_of_level = message.string_key("typeOfLevel");
   s.level = message.long_key("level");
+  s.level_value = static_cast<double>(s.level);
+  if (s.edition == 2) {
+    const auto scaled = message.double_key("scaledValueOfFirstFixedSurface");
+    const auto factor = message.double_key("scaleFactorOfFirstFixedSurface");
+    if (scaled && factor) {
+      const double si = *scaled * std::pow(10.0, -*factor);  // Pa, m or a number
+      s.level_value = s.type_of_level == "isobaricInhPa" ? si / 100.0 : si;
+    }
+  }
   s.grid_type = message.string_key("gridType");
+  s.name = message.string_key("name");
+  s.units = message.string_key("units");
+  s.grid_md5 = message.string_key("md5GridSection");
+  s.validity_date = message.long_key("validityDate");
+  s.validity_time = message.long_key("validityTime");
+  s.number_of_values = message.long_key("numberOfValues");
+  take_eccodes_log();  // a key some messages lack is not an error of the message
   return s;
 }
 

@@ -18,8 +18,15 @@ struct GribMessageSummary {
   long edition = 0;
   std::string short_name;     // ecCodes' shortName ("t", "gh"; "unknown" when not in its tables)
   std::string type_of_level;  // "isobaricInhPa", "hybrid", "surface" ...
-  long level = 0;
-  std::string grid_type;  // "regular_ll", "lambert", "reduced_gg" ...
+  long level = 0;             // ecCodes' level: whole units, rounded
+  double level_value = 0;     // exact (GRIB 2: scaled value and factor), in the level type's
+                              // units (hPa for isobaricInhPa, Pa, m, a level number)
+  std::string grid_type;      // "regular_ll", "lambert", "reduced_gg" ...
+  std::string name, units;    // ecCodes' name ("Temperature") and units ("K")
+  std::string grid_md5;       // md5GridSection: equal for messages on one grid
+  long validity_date = 0;     // YYYYMMDD
+  long validity_time = 0;     // HHMM
+  long number_of_values = 0;
 };
 
 // Every message, in file order. \error kNotFound, kIo; kInvalidInput naming the file, the
