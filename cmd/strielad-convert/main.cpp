@@ -6,7 +6,7 @@ int main(int argc, char** argv) {
   using namespace strielad;
   const cli::ToolSpec spec{
       "strielad-convert",
-      "Convert CF-NetCDF output into a STRIELAD sparse-brick octree store, and inspect stores",
+      "Convert CF-NetCDF or GRIB output into a STRIELAD sparse-brick octree store, and inspect stores",
       [](CLI::App& app, cli::Action& action) {
         convert_cmd::register_convert(app, action);
         convert_cmd::register_info(app, action);

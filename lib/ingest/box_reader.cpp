@@ -17,6 +17,8 @@
 #include "ingest/netcdf_call.h"
 #include "ingest/netcdf_file.h"
 #include "ingest/sample_conversion.h"
+#include "ingest/grib_catalog.h"
+#include "ingest/input_kind.h"
 #include "ingest/variable_meta.h"
 
 namespace strielad::build {
@@ -38,12 +40,17 @@ struct BoxReader::Impl {
   // Samples per row in the file when the catalog repeats the first meridian at the end
   // (column source_nx of a box is column 0 of the file); 0 otherwise.
   std::size_t repeated_from = 0;
+  // GRIB input: the file's scan and the variable in it (every read decodes whole levels).
+  std::shared_ptr<const ingest::GribScan> grib;
+  const ingest::GribVariable* grib_variable = nullptr;
   // Raw samples of the last read; grown on demand, never zero-filled (netCDF fills it).
   std::unique_ptr<std::byte[]> buffer;
   std::size_t buffer_size = 0;
 
   template <typename Out>
   void read(const IndexBox& box, std::span<Out> out);
+  template <typename Out>
+  void read_grib(const IndexBox& box, std::span<Out> out);
 
   ~Impl() {
     if (prefetch_fd >= 0) ::close(prefetch_fd);
@@ -96,6 +103,17 @@ BoxReader::BoxReader(const ingest::InputCatalog& catalog, const ingest::ScanOpti
   m.nan_as_fill = scan.nan_as_fill;
 
   if (catalog.repeats_first_column()) m.repeated_from = catalog.source_nx;
+  if (ingest::detect_input_kind(m.path).kind == ingest::InputKind::kGrib) {
+    auto scan = std::make_shared<const ingest::GribScan>(ingest::scan_grib_file(m.path));
+    m.grib_variable = ingest::find_grib_variable(*scan, m.name);
+    if (!m.grib_variable) {
+      throw make_error(ErrorCode::kInvalidInput, "{}: no longer in the file", m.context);
+    }
+    m.grib = std::move(scan);
+    m.dims = catalog.as_in_files().dims();
+    m.filtered = true;
+    return;
+  }
   std::lock_guard lock(ingest::netcdf_mutex());
   try {
     open_variable(m, catalog.as_in_files().dims());
@@ -192,10 +210,29 @@ BoxReader::~BoxReader() {
 bool BoxReader::filtered() const { return impl_->filtered; }
 
 template <typename Out>
+void BoxReader::Impl::read_grib(const IndexBox& box, std::span<Out> out) {
+  const std::size_t plane = dims.x * dims.y;
+  std::vector<Out> level(plane);
+  Out* dst = out.data();
+  for (std::size_t z = box.lo[2]; z <= box.hi[2]; ++z) {
+    ingest::read_grib_levels(path, *grib_variable, time_index, z, z + 1, plane,
+                             std::span<Out>(level));
+    for (std::size_t y = box.lo[1]; y <= box.hi[1]; ++y) {
+      const Out* row = level.data() + y * dims.x;
+      dst = std::copy(row + box.lo[0], row + box.hi[0] + 1, dst);
+    }
+  }
+}
+
+template <typename Out>
 void BoxReader::Impl::read(const IndexBox& box, std::span<Out> out) {
   if (out.size() != box.count()) {
     throw make_error(ErrorCode::kInternal, "box reader: {} samples for a box of {}", out.size(),
                      box.count());
+  }
+  if (grib) {
+    read_grib(box, out);
+    return;
   }
   {
     std::lock_guard lock(ingest::netcdf_mutex());

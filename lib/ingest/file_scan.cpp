@@ -2,7 +2,6 @@
 #include "ingest/file_scan.h"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 #include <netcdf.h>
 #include <spdlog/spdlog.h>
 
@@ -16,10 +15,8 @@
 
 #include "ingest/cf_attributes.h"
 #include "ingest/cf_axis_detection.h"
-#include "ingest/grib_messages.h"
 #include "ingest/grid_mapping_reader.h"
 #include "ingest/horizontal_axes.h"
-#include "ingest/input_kind.h"
 #include "ingest/netcdf_call.h"
 #include "ingest/netcdf_file.h"
 #include "ingest/source_file.h"
@@ -599,40 +596,12 @@ ScannedVariable FileScanner::scan_variable(int grpid, int varid, const std::stri
   return sv;
 }
 
-// GRIB is recognised (and each message checked) but not yet read: say so, with what the
-// file holds and how to convert it, rather than netCDF-C's "Unknown file format".
-[[noreturn]] void refuse_grib_file(const std::string& display) {
-  const std::vector<GribMessageSummary> messages = list_grib_messages(display);
-  std::set<long> editions;
-  std::set<std::string> grids;
-  std::vector<std::string> names;
-  for (const auto& m : messages) {
-    editions.insert(m.edition);
-    grids.insert(m.grid_type);
-    if (std::find(names.begin(), names.end(), m.short_name) == names.end()) {
-      names.push_back(m.short_name);
-    }
-  }
-  constexpr std::size_t kNamesShown = 8;
-  const std::size_t shown = std::min(names.size(), kNamesShown);
-  throw make_error(
-      ErrorCode::kUnsupported,
-      "{}: a GRIB file (edition {}, {} message{}, {} grid; {}{}): GRIB input is not read yet; "
-      "convert it to CF-NetCDF first, e.g. `cdo -f nc4 copy FILE OUT.nc` (or `grib_to_netcdf "
-      "-o OUT.nc FILE` for regular latitude/longitude grids)",
-      display, fmt::join(editions, " and "), messages.size(), messages.size() == 1 ? "" : "s",
-      fmt::join(grids, ", "),
-      fmt::join(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(shown), ", "),
-      names.size() > shown ? fmt::format(" and {} more", names.size() - shown) : "");
-}
-
 }  // namespace
 
 ScannedFile scan_file(const std::filesystem::path& path) {
   ScannedFile out;
   out.source = describe_source_file(path);
   const std::string& display = out.source.path;
-  if (detect_input_kind(path).kind == InputKind::kGrib) refuse_grib_file(display);
   try {
     std::lock_guard lock(netcdf_mutex());
     NcFile file{std::filesystem::path(display)};

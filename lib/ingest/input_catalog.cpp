@@ -4,6 +4,9 @@
 // every step found in exactly one file), and consistent CF attributes per variable.
 #include "ingest/input_catalog.h"
 
+#include "ingest/grib_catalog.h"
+#include "ingest/input_kind.h"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
@@ -262,6 +265,30 @@ std::vector<double> common_time_steps(const SelectedInputs& in,
   return std::vector<double>(all_times.begin(), all_times.end());
 }
 
+struct InputKinds {
+  std::size_t grib = 0;
+  std::string a_grib, a_netcdf;  // one of each, for messages
+};
+
+// Files that do not exist are left to the netCDF scan, which names them.
+InputKinds grib_inputs(const std::vector<std::filesystem::path>& inputs) {
+  InputKinds k;
+  for (const auto& path : inputs) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+      k.a_netcdf = path.string();
+      continue;
+    }
+    if (detect_input_kind(path).kind == InputKind::kGrib) {
+      ++k.grib;
+      k.a_grib = path.string();
+    } else {
+      k.a_netcdf = path.string();
+    }
+  }
+  return k;
+}
+
 struct StepRange {
   std::size_t first = 0;
   std::size_t last = 0;
@@ -327,6 +354,16 @@ std::size_t InputCatalog::variable_index(std::string_view name) const {
 InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
                          const ScanOptions& options) {
   if (inputs.empty()) throw make_error(ErrorCode::kInvalidArgument, "no input files given");
+  if (const auto kinds = grib_inputs(inputs); kinds.grib > 0) {
+    if (kinds.grib < inputs.size()) {
+      throw make_error(ErrorCode::kUnsupported,
+                       "{} is GRIB and {} is not: GRIB and netCDF inputs cannot be mixed in one "
+                       "conversion; convert the GRIB files to CF-NetCDF first (e.g. `cdo -f nc4 "
+                       "copy`)",
+                       kinds.a_grib, kinds.a_netcdf);
+    }
+    return grib_catalog(inputs, options);
+  }
 
   SelectedInputs in;
   in.files = scan_distinct_files(inputs);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// GRIB files (libncarg-data) are recognised and listed through ecCodes; until GRIB is
-// read, a conversion refuses them with what they hold and how to convert them, and a
-// damaged one with the message at fault. ecCodes' own messages never reach stderr.
+// GRIB files (libncarg-data) are recognised and listed through ecCodes; what a conversion
+// cannot take (mixed with netCDF, a reduced grid, no 3-D field, a damaged message) is
+// refused by name. ecCodes' own messages never reach stderr.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -34,13 +34,35 @@ TEST(GribInputTest, ListsEveryMessageOfARealGrib2File) {
             std::filesystem::file_size(ncarg_file("grb/fh.0012_tl.press_gr.awp211.grb2")));
 }
 
-TEST(GribInputTest, ConversionRefusesGribWithWhatItHoldsAndHowToConvertIt) {
+TEST(GribInputTest, MixingGribAndNetcdfInputsIsRefused) {
+  expect_error(
+      [] {
+        scan_inputs(
+            {ncarg_file("grb/fh.0012_tl.press_gr.awp211.grb2"), ncarg_file("cdf/contour.cdf")}, {});
+      },
+      ErrorCode::kUnsupported,
+      {"fh.0012_tl.press_gr.awp211.grb2 is GRIB", "contour.cdf is not", "cannot be mixed"});
+}
+
+TEST(GribInputTest, ReducedGridIsRefusedWithHowToRegridIt) {
   ::testing::internal::CaptureStderr();
-  expect_error([] { scan_inputs({ncarg_file("grb/fh.0012_tl.press_gr.awp211.grb2")}, {}); },
+  expect_error([] { scan_inputs({ncarg_file("grb/wafsgfs_L_t06z_intdsk60.grib2")}, {}); },
                ErrorCode::kUnsupported,
-               {"fh.0012_tl.press_gr.awp211.grb2", "a GRIB file (edition 2, 181 messages",
-                "lambert grid", "mslet", "GRIB input is not read yet", "cdo -f nc4 copy"});
+               {"wafsgfs_L_t06z_intdsk60.grib2", "reduced_ll", "cdo setgridtype,regular"});
   EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+}
+
+TEST(GribInputTest, SatelliteImageWithNoLevelsIsNot3D) {
+  expect_error([] { scan_inputs({ncarg_file("grb/MET9_IR108_cosmode_0909210000.grb2")}, {}); },
+               ErrorCode::kInvalidInput,
+               {"MET9_IR108_cosmode_0909210000.grb2", "no 3-D field", "OBSMSG_BT_IR10.8"});
+}
+
+TEST(GribInputTest, AVariableNoInputHasIsNamedWithThoseThereAre) {
+  ScanOptions o;
+  o.variables = {"q"};
+  expect_error([&] { scan_inputs({ncarg_file("grb/fh.0012_tl.press_gr.awp211.grb2")}, o); },
+               ErrorCode::kNotFound, {"no GRIB variable 'q'", "gh", "absv"});
 }
 
 TEST(GribInputTest, DamagedGrib1NamesTheMessageAndWhatEcCodesSaid) {

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: Apache-2.0
+// The catalog of GRIB inputs (one file or several, every one GRIB): the 3-D variables of
+// their scans (ingest/grib_scan.h) on the grid and levels of the first one (or of those
+// asked for), the grid placed from its GRIB definition (ingest/grib_grid.h), and the
+// validity times merged across files as "seconds since 1970-01-01 00:00:00" (proleptic
+// Gregorian). Values are read as ecCodes decodes them; bitmap points become NaN, which
+// the variable's NaN fill value makes missing.
+#pragma once
+
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ingest/grib_scan.h"
+#include "ingest/input_catalog.h"
+
+namespace strielad::ingest {
+
+// \error kNotFound for a variable asked for that no input has (listing those there are);
+// kInvalidInput for variables on other levels or grids than the first, a validity time
+// in two files, time steps that differ between variables; what scan_grib_file and
+// grib_grid throw.
+InputCatalog grib_catalog(const std::vector<std::filesystem::path>& inputs,
+                          const ScanOptions& options);
+
+// The store name of `v`: its shortName, or "shortName_typeOfLevel" when another 3-D
+// variable of the scan has the same shortName.
+std::string grib_variable_name(const GribScan& scan, const GribVariable& v);
+const GribVariable* find_grib_variable(const GribScan& scan, std::string_view name);
+
+// Levels [z0, z1) of `v` at its time index `t`, as ecCodes decodes them, into `out`
+// (plane after plane, i fastest); bitmap points NaN. `plane` = samples per level.
+// \error kInvalidInput naming the message when its size is not `plane`; kUnsupported when
+// float output cannot hold the packed values apart (packing finer than float32).
+void read_grib_levels(const std::filesystem::path& path, const GribVariable& v, std::size_t t,
+                      std::size_t z0, std::size_t z1, std::size_t plane, std::span<float> out);
+void read_grib_levels(const std::filesystem::path& path, const GribVariable& v, std::size_t t,
+                      std::size_t z0, std::size_t z1, std::size_t plane, std::span<double> out);
+
+}  // namespace strielad::ingest
