@@ -4,7 +4,8 @@
 # EURO-CORDEX file is placed by its grid mapping (info shows the corners where cs2cs puts
 # them), a global forecast on integer pressure levels extracts a longitude range across
 # its seam into every output frame (the standard atmosphere named as the vertical), and
-# grids that cannot be placed, or flags that make no sense, fail with one clear line.
+# NCEP's Lambert GRIB 2 forecast is placed where NCEP's grid table puts it, and grids that
+# cannot be placed, or flags that make no sense, fail with one clear line.
 # Usage: georeference_cli_test.sh STRIELAD_CONVERT WORK_DIR
 set -uo pipefail
 convert=$1
@@ -57,6 +58,20 @@ expect_convert 5 "curvilinear grid" -- "$data/cdf/ced1.lf00.t00z.eta.nc" -o "$wo
 grep -q "gridlat_6 gridlon_6" "$work/err" || fail "the curvilinear error does not name the coordinates"
 expect_convert 5 "unstructured grid" -- "$data/nug/triangular_grid_ICON.nc" -o "$work/icon"
 for store in eta icon; do [[ -e $work/$store ]] && fail "a refused conversion left $store behind"; done
+
+# GRIB 2, NCEP's AWIPS grid 211 (Lambert): placed where NCEP's grid table puts its corners
+# (first point 12.190 N 133.459 W, last 57.290 N 49.385 W), extracted into true positions.
+"$convert" "$data/grb/fh.0012_tl.press_gr.awp211.grb2" -o "$work/awp211" -q || fail "GRIB conversion"
+"$convert" info "$work/awp211" >"$work/grib.info" || fail "GRIB info"
+grep -q "(lambert_conformal_conic)" "$work/grib.info" || fail "GRIB info lacks the Lambert mapping"
+grep -q "at lon -133.459000, lat 12.190000" "$work/grib.info" || fail "GRIB first point misplaced"
+grep -q "at lon -49.3850.., lat 57.2894" "$work/grib.info" || fail "GRIB last point misplaced"
+echo '{"subvolumes": [{"id": 1, "limits": [{"var": "t", "max": 250}]}]}' >"$work/cold.json"
+"$serve" extract --store "$work/awp211" --scene "$work/cold.json" -o "$work/cold.vtp" \
+  --frame lonlat --json >"$work/cold.json.out" || fail "GRIB extract"
+grep -q "height from variable 'gh'" "$work/cold.json.out" || fail "GRIB heights not from gh"
+expect_convert 4 "GRIB message 1" -- "$data/grb/ced1.lf00.t00z.eta.grb" -o "$work/eta-grib"
+expect_convert 5 "cdo setgridtype,regular" -- "$data/grb/wafsgfs_L_t06z_intdsk60.grib2" -o "$work/wafs"
 
 # Gaussian T42 with coordinates named unlike their dimensions: paired, converted.
 "$convert" "$data/cdf/ex01B1_uv300.hs.nc" -o "$work/t42" 2>"$work/t42.err" || fail "ex01B1 conversion"
