@@ -187,7 +187,10 @@ bool needs_georeference_version(const Manifest& m) {
          is_projection_kind(m.y.kind);
 }
 
+bool needs_geometry_version(const Manifest& m) { return m.geometry.has_value(); }
+
 std::uint32_t version_for_plan(const Manifest& m) {
+  if (needs_geometry_version(m)) return kManifestVersionGeometry;
   return needs_georeference_version(m) ? kManifestVersionGeoreference : version_for_codecs(m);
 }
 
@@ -217,12 +220,30 @@ void check_plan_version(const Manifest& m) {
                      "a version {} manifest {} codecs with fpzip (version {} is for those)", version,
                      version < kManifestVersionFpzip ? "cannot hold" : "needs", kManifestVersionFpzip);
   }
-  if ((version >= kManifestVersionGeoreference) != needs_georeference_version(m)) {
+  if ((version >= kManifestVersionGeometry) != needs_geometry_version(m)) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "a version {} manifest {} a grid geometry (version {} is for one)", version,
+                     version < kManifestVersionGeometry ? "cannot hold" : "needs",
+                     kManifestVersionGeometry);
+  }
+  if (version < kManifestVersionGeometry &&
+      (version >= kManifestVersionGeoreference) != needs_georeference_version(m)) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "a version {} manifest {} a grid mapping, projection axes or a periodic "
                      "longitude (version {} is for those)",
                      version, version < kManifestVersionGeoreference ? "cannot hold" : "needs",
                      kManifestVersionGeoreference);
+  }
+}
+
+// A curvilinear grid is placed by its coordinate arrays, not by a grid mapping.
+void check_curvilinear_grid(const Manifest& m, ErrorCode code, std::string_view what) {
+  if (m.geometry && m.grid_mapping &&
+      m.geometry->horizontal.kind == HorizontalGeometry::Kind::kCurvilinear) {
+    throw make_error(code,
+                     "{}: geometry.horizontal is curvilinear but the grid has a mapping ('{}'): "
+                     "one of them places x and y",
+                     what, m.grid_mapping->variable);
   }
 }
 
@@ -280,7 +301,8 @@ json manifest_plan_json(const Manifest& m) {
         json{{"path", s.path}, {"size", s.size}, {"header_checksum", hex64(s.header_checksum)}});
   }
   const OctreeLayout layout(m.dims(), m.brick);
-  return json{
+  check_curvilinear_grid(m, ErrorCode::kInvalidArgument, "manifest");
+  json plan{
       {"format", "strielad-store"},
       {"format_version", version},
       {"grid", grid_json(m)},
@@ -296,6 +318,8 @@ json manifest_plan_json(const Manifest& m) {
       {"nan_as_fill", m.nan_as_fill},
       {"sources", std::move(sources)},
   };
+  if (m.geometry) plan["geometry"] = geometry_json(*m.geometry, m.z.size());
+  return plan;
 }
 
 std::uint64_t compute_store_id(const Manifest& m) {
@@ -396,9 +420,29 @@ StoreVariable variable_from_json(const json& jv, std::uint32_t version, std::str
   return v;
 }
 
+// The geometry object: in version 5 and only there.
+void read_geometry(const json& j, std::uint32_t version, std::string_view what, Manifest& m) {
+  const auto it = j.find("geometry");
+  if (version < kManifestVersionGeometry) {
+    if (it != j.end()) {
+      throw make_error(ErrorCode::kCorrupt, "{}: key 'geometry' needs format version {} (this is {})",
+                       what, kManifestVersionGeometry, version);
+    }
+    return;
+  }
+  if (it == j.end()) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: format version {} but no key 'geometry' (a writer uses version {} or "
+                     "below then)",
+                     what, version, kManifestVersionGeoreference);
+  }
+  m.geometry = geometry_from_json(*it, m.z.size(), what);
+  check_curvilinear_grid(m, ErrorCode::kCorrupt, what);
+}
+
 // A writer picks the lowest version that holds the content: a higher one is corrupt.
 void check_version_needed(const Manifest& m, std::uint32_t version, std::string_view what) {
-  if (version >= kManifestVersionGeoreference && !needs_georeference_version(m)) {
+  if (version == kManifestVersionGeoreference && !needs_georeference_version(m)) {
     throw make_error(ErrorCode::kCorrupt,
                      "{}: format version {} but the grid has no grid mapping, projection axis or "
                      "periodic longitude (a writer uses version {} or below then)",
@@ -462,6 +506,7 @@ Manifest manifest_from_json(const json& j, std::string_view what) {
   }
   m.complete = state == "complete";
   read_grid(get<json>(j, "grid", what), version, what, m);
+  read_geometry(j, version, what, m);
   m.time = time_from_json(get<json>(j, "time", what), what);
   for (const json& jv : get<json>(j, "variables", what)) {
     m.variables.push_back(variable_from_json(jv, version, what));
