@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "grid/axis.h"
+#include "format/codec_spec.h"
 #include "format/manifest_geometry.h"
 #include "grid/grid_mapping.h"
 
@@ -22,37 +23,12 @@ namespace strielad::format {
 // when the grid is placed by a grid mapping or goes round the Earth; 5 when it records a
 // grid geometry): formats/store.md.
 inline constexpr std::uint32_t kManifestFormatVersion = 5;
-// The first version with predictors and per-variable codecs.
-inline constexpr std::uint32_t kManifestVersionPredictors = 2;
-// The first version with fpzip chunks (CodecSpec::fpzip, IndexEntry::coding).
-inline constexpr std::uint32_t kManifestVersionFpzip = 3;
 // The first version with georeferencing: a grid mapping (Manifest::grid_mapping),
 // projection axis kinds and periodic longitude axes (Axis::periodic).
 inline constexpr std::uint32_t kManifestVersionGeoreference = 4;
 // The first version with a grid geometry (Manifest::geometry): curvilinear horizontal
 // coordinates, terrain-following vertical levels, the model's surface height.
 inline constexpr std::uint32_t kManifestVersionGeometry = 5;
-
-// Predictors (formats/store.md, "Predictors").
-inline constexpr std::string_view kPredictorNone = "none";
-inline constexpr std::string_view kPredictorLorenzo3 = "lorenzo3";
-
-// Defaults from the strielad-bench io codec sweep (BENCHMARKS.md): Blosc level 1 (zstd
-// level 1) converts 2.4x faster than level 5 (zstd 9) for 9% more bytes; byte shuffle
-// beats bit shuffle by 1.5x in size on dense fields. The converter chooses the predictor
-// per variable (build/predictor_choice.h); "none" is what a version-1 store used.
-struct CodecSpec {
-  std::string name = "zstd";       // blosclz, lz4, lz4hc, zlib, zstd
-  int level = 1;                   // 0..9
-  std::string shuffle = "byte";    // none, byte, bit
-  std::string predictor = "none";  // none, lorenzo3 (format version 2)
-  // Data bricks may be fpzip chunks where those are smaller (format version 3).
-  bool fpzip = false;
-  friend bool operator==(const CodecSpec&, const CodecSpec&) = default;
-};
-
-// Throws kInvalidArgument naming the bad field (an unknown predictor included).
-void validate_codec(const CodecSpec& codec);
 
 struct StoreVariable {
   std::string name, units, long_name, standard_name;

@@ -5,6 +5,7 @@
 #include <initializer_list>
 
 #include "core/error.h"
+#include "format/manifest.h"
 
 namespace strielad::format {
 namespace {
@@ -78,6 +79,11 @@ void check_geometry(const GridGeometry& g, std::size_t z_size, std::string_view 
         throw make_error(code, "{}: geometry.vertical.terms: empty name in '{}': '{}'", what, term,
                          variable);
       }
+    }
+    try {
+      validate_codec(v.codec);
+    } catch (const Error& e) {
+      throw make_error(code, "{}: geometry.vertical.codec: {}", what, e.what());
     }
     for (const std::string& source : v.sources) {
       if (source.empty()) {
@@ -185,7 +191,7 @@ VerticalGeometry vertical_from_json(const json& j, std::string_view what) {
     v.levels = get<std::vector<double>>(j, "levels", where);
   } else if (kind == "field") {
     only_keys(j, {"kind", "quantity", "units", "formula", "terms", "sources", "varies_in_time",
-                  "dtype"},
+                  "dtype", "codec"},
               where);
     v.kind = VerticalGeometry::Kind::kField;
     v.terms = get<std::map<std::string, std::string>>(j, "terms", where);
@@ -196,6 +202,8 @@ VerticalGeometry vertical_from_json(const json& j, std::string_view what) {
     } catch (const Error& e) {
       throw make_error(ErrorCode::kCorrupt, "{}: key 'dtype': {}", where, e.what());
     }
+    v.codec = codec_from_json(get<json>(j, "codec", where), kManifestVersionGeometry,
+                              fmt::format("{}.codec", where));
   } else {
     throw make_error(ErrorCode::kCorrupt, "{}: unknown kind '{}' (axis, levels, field)", where,
                      kind);
@@ -247,6 +255,7 @@ json geometry_json(const GridGeometry& g, std::size_t z_size) {
     vertical["sources"] = v.sources;
     vertical["varies_in_time"] = v.varies_in_time;
     vertical["dtype"] = dtype_name(v.dtype);
+    vertical["codec"] = codec_json(v.codec, kManifestVersionGeometry);
   }
   json j{{"horizontal", std::move(horizontal)},
          {"vertical", std::move(vertical)},

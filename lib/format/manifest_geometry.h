@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "format/codec_spec.h"
 #include "grid/axis.h"
 
 namespace strielad::format {
@@ -45,6 +46,7 @@ struct VerticalGeometry {
   std::vector<std::string> sources;           // field: source variables read
   bool varies_in_time = false;                // field
   DType dtype = DType::kFloat32;              // field: its stored type
+  CodecSpec codec;                            // field: how its bricks are compressed
   friend bool operator==(const VerticalGeometry&, const VerticalGeometry&) = default;
 };
 

@@ -52,6 +52,8 @@ Manifest curvilinear_field() {
   g.vertical.sources = {"PH", "PHB"};
   g.vertical.varies_in_time = true;
   g.vertical.dtype = DType::kFloat64;
+  g.vertical.codec.predictor = "lorenzo3";
+  g.vertical.codec.fpzip = true;
   g.surface = SurfaceGeometry{"HGT", "m"};
   g.orientation = -1;
   m.geometry = g;
@@ -206,6 +208,13 @@ TEST(ManifestGeometryTest, ReadersRejectUnknownKindsAndQuantities) {
   expect_error([] {
     decode_edited(hybrid_height(), [](Json& j) { j["geometry"]["vertical"]["dtype"] = "int8"; });
   }, ErrorCode::kCorrupt, {"geometry.vertical", "'dtype'"});
+  expect_error([] {
+    decode_edited(hybrid_height(), [](Json& j) { j["geometry"]["vertical"].erase("codec"); });
+  }, ErrorCode::kCorrupt, {"geometry.vertical", "missing key 'codec'"});
+  expect_error([] {
+    decode_edited(hybrid_height(),
+                  [](Json& j) { j["geometry"]["vertical"]["codec"]["predictor"] = "delta"; });
+  }, ErrorCode::kCorrupt, {"geometry.vertical.codec", "predictor 'delta'"});
   expect_error([] {
     decode_edited(hybrid_height(), [](Json& j) { j["geometry"]["vertical"]["extra"] = 1; });
   }, ErrorCode::kCorrupt, {"geometry.vertical", "unknown key 'extra'"});
