@@ -139,6 +139,26 @@ std::uint32_t version_for_plan(const Manifest& m) {
 
 std::string step_file_name(std::uint32_t step) { return fmt::format("steps/step-{:06d}.bricks", step); }
 
+bool has_geometry_file(const Manifest& m) {
+  return m.geometry && (m.geometry->surface ||
+                        m.geometry->horizontal.kind == HorizontalGeometry::Kind::kCurvilinear);
+}
+
+namespace {
+
+bool has_field(const Manifest& m, bool varies_in_time) {
+  return m.geometry && m.geometry->vertical.kind == VerticalGeometry::Kind::kField &&
+         m.geometry->vertical.varies_in_time == varies_in_time;
+}
+
+}  // namespace
+
+bool has_geometry_bricks(const Manifest& m) { return has_field(m, false); }
+
+std::uint32_t step_section_count(const Manifest& m) {
+  return static_cast<std::uint32_t>(m.variables.size()) + (has_field(m, true) ? 1 : 0);
+}
+
 namespace {
 
 // The format version a plan names must be able to hold what the plan holds, and need it.

@@ -104,6 +104,17 @@ std::uint32_t version_for_plan(const Manifest& manifest);
 
 // Path of a step file relative to the store directory: "steps/step-000042.bricks".
 std::string step_file_name(std::uint32_t step);
+// Files of a store with a geometry (formats/store.md): the 2-D coordinates and surface
+// height, and the time-invariant geometry field in the step-file layout.
+inline constexpr std::string_view kGeometryFileName = "GEOMETRY";
+inline constexpr std::string_view kGeometryBricksFileName = "geometry.bricks";
+// Whether the store has a GEOMETRY file: a curvilinear grid or a surface height.
+bool has_geometry_file(const Manifest& manifest);
+// Whether the store has geometry.bricks: a vertical field that does not vary in time.
+bool has_geometry_bricks(const Manifest& manifest);
+// The sections of each step file: one per variable, plus the vertical field when it
+// varies in time (section V, after the variables).
+std::uint32_t step_section_count(const Manifest& manifest);
 
 // The plan: everything that defines the store's content (formats/store.md), as the
 // manifest's format_version writes it. Throws kInvalidArgument when a version-1

@@ -124,6 +124,26 @@ TEST(ManifestGeometryTest, GeometryIsPartOfThePlan) {
             "0123456789abcdef");
 }
 
+TEST(ManifestGeometryTest, GeometryDecidesTheStoreFilesAndStepSections) {
+  const Manifest plain = sealed(base()), wrf = curvilinear_field(), icon = hybrid_height(),
+                 levels = pressure_levels();
+  EXPECT_EQ(step_section_count(plain), 1u);
+  EXPECT_FALSE(has_geometry_file(plain));
+  EXPECT_FALSE(has_geometry_bricks(plain));
+  // Time-varying field: one more section per step file; coordinates and surface in GEOMETRY.
+  EXPECT_EQ(step_section_count(wrf), 2u);
+  EXPECT_TRUE(has_geometry_file(wrf));
+  EXPECT_FALSE(has_geometry_bricks(wrf));
+  // Time-invariant field: geometry.bricks; axes place x and y, no surface: no GEOMETRY.
+  EXPECT_EQ(step_section_count(icon), 1u);
+  EXPECT_FALSE(has_geometry_file(icon));
+  EXPECT_TRUE(has_geometry_bricks(icon));
+  // Levels: in the manifest only.
+  EXPECT_EQ(step_section_count(levels), 1u);
+  EXPECT_FALSE(has_geometry_file(levels));
+  EXPECT_FALSE(has_geometry_bricks(levels));
+}
+
 TEST(ManifestGeometryTest, VersionFiveOnlyWithAGeometry) {
   Manifest m = base();
   EXPECT_FALSE(needs_geometry_version(m));
