@@ -66,6 +66,10 @@ Axis axis_from_json(const json& j, std::string_view what, std::uint32_t version)
     throw make_error(ErrorCode::kCorrupt, "{}: axis kind '{}' needs format version {} (this is {})",
                      what, axis_kind_name(a.kind), kManifestVersionGeoreference, version);
   }
+  if (a.kind == AxisKind::kIndex && version < kManifestVersionGeometry) {
+    throw make_error(ErrorCode::kCorrupt, "{}: axis kind 'index' needs format version {} (this is {})",
+                     what, kManifestVersionGeometry, version);
+  }
   if (const auto it = j.find("periodic"); it != j.end()) {
     if (version < kManifestVersionGeoreference) {
       throw make_error(ErrorCode::kCorrupt, "{}: key 'periodic' needs format version {} (this is {})",
@@ -199,10 +203,29 @@ void check_plan_version(const Manifest& m) {
   }
 }
 
-// A curvilinear grid is placed by its coordinate arrays, not by a grid mapping.
+// A curvilinear grid is placed by its coordinate arrays, not by a grid mapping, and its x
+// and y are index axes (0 .. n-1); index axes belong to curvilinear grids only.
 void check_curvilinear_grid(const Manifest& m, ErrorCode code, std::string_view what) {
-  if (m.geometry && m.grid_mapping &&
-      m.geometry->horizontal.kind == HorizontalGeometry::Kind::kCurvilinear) {
+  const bool curvilinear =
+      m.geometry && m.geometry->horizontal.kind == HorizontalGeometry::Kind::kCurvilinear;
+  if (m.z.kind == AxisKind::kIndex) {
+    throw make_error(code, "{}: grid.z '{}' has kind 'index' (only x and y can)", what, m.z.name);
+  }
+  if ((m.x.kind == AxisKind::kIndex) != curvilinear || (m.y.kind == AxisKind::kIndex) != curvilinear) {
+    throw make_error(code,
+                     "{}: axes x '{}' ({}) and y '{}' ({}): index axes go with a curvilinear "
+                     "geometry.horizontal, and only with one",
+                     what, m.x.name, axis_kind_name(m.x.kind), m.y.name, axis_kind_name(m.y.kind));
+  }
+  for (const Axis* a : {&m.x, &m.y}) {
+    for (std::size_t i = 0; curvilinear && i < a->values.size(); ++i) {
+      if (a->values[i] != static_cast<double>(i)) {
+        throw make_error(code, "{}: index axis '{}' holds {} at {} (must be 0, 1, ..., n-1)", what,
+                         a->name, a->values[i], i);
+      }
+    }
+  }
+  if (curvilinear && m.grid_mapping) {
     throw make_error(code,
                      "{}: geometry.horizontal is curvilinear but the grid has a mapping ('{}'): "
                      "one of them places x and y",

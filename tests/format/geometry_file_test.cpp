@@ -214,8 +214,8 @@ TEST(GeometryFileTest, ValuesAreChecked) {
 Manifest manifest_for(const HorizontalCoordinates& c) {
   Manifest m;
   m.tool_version = "test";
-  m.x = Axis{"west_east", AxisKind::kOther, "1", "", "", "", {0, 1, 2, 3}};
-  m.y = Axis{"south_north", AxisKind::kOther, "1", "", "", "", {0, 1, 2}};
+  m.x = Axis{"west_east", AxisKind::kIndex, "1", "", "", "", {0, 1, 2, 3}};
+  m.y = Axis{"south_north", AxisKind::kIndex, "1", "", "", "", {0, 1, 2}};
   m.z = Axis{"lev", AxisKind::kModelLevel, "1", "", "", "", {1, 2}};
   m.time = TimeAxis{"time", "hours since 2000-01-01", "standard", {0}};
   StoreVariable v;

@@ -40,6 +40,7 @@ Manifest sealed(Manifest m) {
 // A WRF-like grid: curvilinear, time-varying heights from PH and PHB, the terrain.
 Manifest curvilinear_field() {
   Manifest m = base();
+  m.x.kind = m.y.kind = AxisKind::kIndex;
   GridGeometry g;
   g.horizontal.kind = HorizontalGeometry::Kind::kCurvilinear;
   g.horizontal.lon_variable = "XLONG";
@@ -268,6 +269,33 @@ TEST(ManifestGeometryTest, ReadersRejectBadLevels) {
   m.geometry->vertical.levels[1] = std::numeric_limits<double>::infinity();
   expect_error([&] { compute_store_id(m); }, ErrorCode::kInvalidArgument,
                {"geometry.vertical.levels[1] is not finite"});
+}
+
+TEST(ManifestGeometryTest, IndexAxesGoWithCurvilinearGridsOnly) {
+  EXPECT_EQ(curvilinear_field().x.kind, AxisKind::kIndex);
+  expect_error([] {
+    decode_edited(curvilinear_field(), [](Json& j) { j["grid"]["y"]["kind"] = "other"; });
+  }, ErrorCode::kCorrupt, {"MANIFEST", "index axes go with a curvilinear geometry.horizontal"});
+  expect_error([] {
+    decode_edited(hybrid_height(), [](Json& j) {
+      j["grid"]["x"]["kind"] = "index";
+      j["grid"]["y"]["kind"] = "index";
+      j["grid"]["x"]["values"] = {0, 1, 2};
+      j["grid"]["y"]["values"] = {0, 1};
+    });
+  }, ErrorCode::kCorrupt, {"axes x 'lon' (index)", "only with one"});
+  expect_error([] {
+    decode_edited(curvilinear_field(), [](Json& j) { j["grid"]["x"]["values"] = {0, 1, 3}; });
+  }, ErrorCode::kCorrupt, {"index axis 'west_east' holds 3 at 2"});
+  expect_error([] {
+    decode_edited(curvilinear_field(), [](Json& j) { j["grid"]["z"]["kind"] = "index"; });
+  }, ErrorCode::kCorrupt, {"grid.z 'height' has kind 'index'"});
+  expect_error([] {
+    decode_edited(curvilinear_field(), [](Json& j) {
+      j["format_version"] = 4;
+      j.erase("geometry");
+    });
+  }, ErrorCode::kCorrupt, {"axis kind 'index' needs format version 5"});
 }
 
 TEST(ManifestGeometryTest, ReadersRejectCurvilinearGridsWithoutNames) {

@@ -37,6 +37,8 @@ std::vector<std::vector<std::uint8_t>> strielad_fuzz_seeds() {
   const auto version1 = encode_manifest(v1);
   // Version 5: a curvilinear grid with a time-varying height field and a surface.
   Manifest v5 = m;
+  v5.x = Axis{"west_east", AxisKind::kIndex, "1", "", "", "", {0, 1, 2}};
+  v5.y = Axis{"south_north", AxisKind::kIndex, "1", "", "", "", {0, 1}};
   GridGeometry g;
   g.horizontal = HorizontalGeometry{HorizontalGeometry::Kind::kCurvilinear, "XLONG", "XLAT", 7};
   g.vertical.kind = VerticalGeometry::Kind::kField;
