@@ -66,6 +66,10 @@ Axis axis_from_json(const json& j, std::string_view what, std::uint32_t version)
     throw make_error(ErrorCode::kCorrupt, "{}: axis kind '{}' needs format version {} (this is {})",
                      what, axis_kind_name(a.kind), kManifestVersionGeoreference, version);
   }
+  if (a.kind == AxisKind::kIndex && version < kManifestVersionGeometry) {
+    throw make_error(ErrorCode::kCorrupt, "{}: axis kind 'index' needs format version {} (this is {})",
+                     what, kManifestVersionGeometry, version);
+  }
   if (const auto it = j.find("periodic"); it != j.end()) {
     if (version < kManifestVersionGeoreference) {
       throw make_error(ErrorCode::kCorrupt, "{}: key 'periodic' needs format version {} (this is {})",
@@ -84,42 +88,6 @@ Axis axis_from_json(const json& j, std::string_view what, std::uint32_t version)
     throw Error(ErrorCode::kCorrupt, e.what());
   }
   return a;
-}
-
-// A codec object as `version` writes it: version 1 had no predictor.
-json codec_json(const CodecSpec& c, std::uint32_t version) {
-  json j{{"name", c.name}, {"level", c.level}, {"shuffle", c.shuffle}};
-  if (version >= kManifestVersionPredictors) j["predictor"] = c.predictor;
-  if (c.fpzip) j["fpzip"] = true;
-  return j;
-}
-
-CodecSpec codec_from_json(const json& j, std::uint32_t version, std::string_view what) {
-  if (!j.is_object()) throw make_error(ErrorCode::kCorrupt, "{}: codec is not an object", what);
-  CodecSpec c;
-  c.name = get<std::string>(j, "name", what);
-  c.level = get<int>(j, "level", what);
-  c.shuffle = get<std::string>(j, "shuffle", what);
-  if (version >= kManifestVersionPredictors) {
-    c.predictor = get<std::string>(j, "predictor", what);
-  } else if (j.contains("predictor")) {
-    throw make_error(ErrorCode::kCorrupt, "{}: key 'predictor' needs format version {} (this is {})",
-                     what, kManifestVersionPredictors, version);
-  }
-  if (const auto it = j.find("fpzip"); it != j.end()) {
-    if (version < kManifestVersionFpzip) {
-      throw make_error(ErrorCode::kCorrupt, "{}: key 'fpzip' needs format version {} (this is {})",
-                       what, kManifestVersionFpzip, version);
-    }
-    if (!it->is_boolean()) throw make_error(ErrorCode::kCorrupt, "{}: key 'fpzip' is not a bool", what);
-    c.fpzip = it->get<bool>();
-  }
-  try {
-    validate_codec(c);
-  } catch (const Error& e) {
-    throw make_error(ErrorCode::kCorrupt, "{}: {}", what, e.what());
-  }
-  return c;
 }
 
 void check_version(std::uint32_t version, std::string_view what) {
@@ -145,27 +113,6 @@ json levels_json(const OctreeLayout& layout) {
 
 }  // namespace
 
-void validate_codec(const CodecSpec& codec) {
-  static const char* kNames[] = {"blosclz", "lz4", "lz4hc", "zlib", "zstd"};
-  bool known = false;
-  for (const char* n : kNames) known = known || codec.name == n;
-  if (!known) {
-    throw make_error(ErrorCode::kInvalidArgument,
-                     "codec '{}' is not one of blosclz, lz4, lz4hc, zlib, zstd", codec.name);
-  }
-  if (codec.level < 0 || codec.level > 9) {
-    throw make_error(ErrorCode::kInvalidArgument, "codec level {} is not in 0..9", codec.level);
-  }
-  if (codec.shuffle != "none" && codec.shuffle != "byte" && codec.shuffle != "bit") {
-    throw make_error(ErrorCode::kInvalidArgument, "shuffle '{}' is not one of none, byte, bit",
-                     codec.shuffle);
-  }
-  if (codec.predictor != kPredictorNone && codec.predictor != kPredictorLorenzo3) {
-    throw make_error(ErrorCode::kInvalidArgument, "predictor '{}' is not one of none, lorenzo3",
-                     codec.predictor);
-  }
-}
-
 std::size_t Manifest::variable_index(std::string_view name) const {
   std::string names;
   for (std::size_t i = 0; i < variables.size(); ++i) {
@@ -187,11 +134,34 @@ bool needs_georeference_version(const Manifest& m) {
          is_projection_kind(m.y.kind);
 }
 
+bool needs_geometry_version(const Manifest& m) { return m.geometry.has_value(); }
+
 std::uint32_t version_for_plan(const Manifest& m) {
+  if (needs_geometry_version(m)) return kManifestVersionGeometry;
   return needs_georeference_version(m) ? kManifestVersionGeoreference : version_for_codecs(m);
 }
 
 std::string step_file_name(std::uint32_t step) { return fmt::format("steps/step-{:06d}.bricks", step); }
+
+bool has_geometry_file(const Manifest& m) {
+  return m.geometry && (m.geometry->surface ||
+                        m.geometry->horizontal.kind == HorizontalGeometry::Kind::kCurvilinear);
+}
+
+namespace {
+
+bool has_field(const Manifest& m, bool varies_in_time) {
+  return m.geometry && m.geometry->vertical.kind == VerticalGeometry::Kind::kField &&
+         m.geometry->vertical.varies_in_time == varies_in_time;
+}
+
+}  // namespace
+
+bool has_geometry_bricks(const Manifest& m) { return has_field(m, false); }
+
+std::uint32_t step_section_count(const Manifest& m) {
+  return static_cast<std::uint32_t>(m.variables.size()) + (has_field(m, true) ? 1 : 0);
+}
 
 namespace {
 
@@ -217,12 +187,49 @@ void check_plan_version(const Manifest& m) {
                      "a version {} manifest {} codecs with fpzip (version {} is for those)", version,
                      version < kManifestVersionFpzip ? "cannot hold" : "needs", kManifestVersionFpzip);
   }
-  if ((version >= kManifestVersionGeoreference) != needs_georeference_version(m)) {
+  if ((version >= kManifestVersionGeometry) != needs_geometry_version(m)) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "a version {} manifest {} a grid geometry (version {} is for one)", version,
+                     version < kManifestVersionGeometry ? "cannot hold" : "needs",
+                     kManifestVersionGeometry);
+  }
+  if (version < kManifestVersionGeometry &&
+      (version >= kManifestVersionGeoreference) != needs_georeference_version(m)) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "a version {} manifest {} a grid mapping, projection axes or a periodic "
                      "longitude (version {} is for those)",
                      version, version < kManifestVersionGeoreference ? "cannot hold" : "needs",
                      kManifestVersionGeoreference);
+  }
+}
+
+// A curvilinear grid is placed by its coordinate arrays, not by a grid mapping, and its x
+// and y are index axes (0 .. n-1); index axes belong to curvilinear grids only.
+void check_curvilinear_grid(const Manifest& m, ErrorCode code, std::string_view what) {
+  const bool curvilinear =
+      m.geometry && m.geometry->horizontal.kind == HorizontalGeometry::Kind::kCurvilinear;
+  if (m.z.kind == AxisKind::kIndex) {
+    throw make_error(code, "{}: grid.z '{}' has kind 'index' (only x and y can)", what, m.z.name);
+  }
+  if ((m.x.kind == AxisKind::kIndex) != curvilinear || (m.y.kind == AxisKind::kIndex) != curvilinear) {
+    throw make_error(code,
+                     "{}: axes x '{}' ({}) and y '{}' ({}): index axes go with a curvilinear "
+                     "geometry.horizontal, and only with one",
+                     what, m.x.name, axis_kind_name(m.x.kind), m.y.name, axis_kind_name(m.y.kind));
+  }
+  for (const Axis* a : {&m.x, &m.y}) {
+    for (std::size_t i = 0; curvilinear && i < a->values.size(); ++i) {
+      if (a->values[i] != static_cast<double>(i)) {
+        throw make_error(code, "{}: index axis '{}' holds {} at {} (must be 0, 1, ..., n-1)", what,
+                         a->name, a->values[i], i);
+      }
+    }
+  }
+  if (curvilinear && m.grid_mapping) {
+    throw make_error(code,
+                     "{}: geometry.horizontal is curvilinear but the grid has a mapping ('{}'): "
+                     "one of them places x and y",
+                     what, m.grid_mapping->variable);
   }
 }
 
@@ -280,7 +287,8 @@ json manifest_plan_json(const Manifest& m) {
         json{{"path", s.path}, {"size", s.size}, {"header_checksum", hex64(s.header_checksum)}});
   }
   const OctreeLayout layout(m.dims(), m.brick);
-  return json{
+  check_curvilinear_grid(m, ErrorCode::kInvalidArgument, "manifest");
+  json plan{
       {"format", "strielad-store"},
       {"format_version", version},
       {"grid", grid_json(m)},
@@ -296,6 +304,8 @@ json manifest_plan_json(const Manifest& m) {
       {"nan_as_fill", m.nan_as_fill},
       {"sources", std::move(sources)},
   };
+  if (m.geometry) plan["geometry"] = geometry_json(*m.geometry, m.z.size());
+  return plan;
 }
 
 std::uint64_t compute_store_id(const Manifest& m) {
@@ -396,9 +406,29 @@ StoreVariable variable_from_json(const json& jv, std::uint32_t version, std::str
   return v;
 }
 
+// The geometry object: in version 5 and only there.
+void read_geometry(const json& j, std::uint32_t version, std::string_view what, Manifest& m) {
+  const auto it = j.find("geometry");
+  if (version < kManifestVersionGeometry) {
+    if (it != j.end()) {
+      throw make_error(ErrorCode::kCorrupt, "{}: key 'geometry' needs format version {} (this is {})",
+                       what, kManifestVersionGeometry, version);
+    }
+    return;
+  }
+  if (it == j.end()) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: format version {} but no key 'geometry' (a writer uses version {} or "
+                     "below then)",
+                     what, version, kManifestVersionGeoreference);
+  }
+  m.geometry = geometry_from_json(*it, m.z.size(), what);
+  check_curvilinear_grid(m, ErrorCode::kCorrupt, what);
+}
+
 // A writer picks the lowest version that holds the content: a higher one is corrupt.
 void check_version_needed(const Manifest& m, std::uint32_t version, std::string_view what) {
-  if (version >= kManifestVersionGeoreference && !needs_georeference_version(m)) {
+  if (version == kManifestVersionGeoreference && !needs_georeference_version(m)) {
     throw make_error(ErrorCode::kCorrupt,
                      "{}: format version {} but the grid has no grid mapping, projection axis or "
                      "periodic longitude (a writer uses version {} or below then)",
@@ -462,6 +492,7 @@ Manifest manifest_from_json(const json& j, std::string_view what) {
   }
   m.complete = state == "complete";
   read_grid(get<json>(j, "grid", what), version, what, m);
+  read_geometry(j, version, what, m);
   m.time = time_from_json(get<json>(j, "time", what), what);
   for (const json& jv : get<json>(j, "variables", what)) {
     m.variables.push_back(variable_from_json(jv, version, what));

@@ -13,41 +13,22 @@
 #include <vector>
 
 #include "grid/axis.h"
+#include "format/codec_spec.h"
+#include "format/manifest_geometry.h"
 #include "grid/grid_mapping.h"
 
 namespace strielad::format {
 
-// Manifest versions this code reads (1 to 4) and writes (2; 3 when a codec has fpzip; 4
-// when the grid is placed by a grid mapping or goes round the Earth): formats/store.md.
-inline constexpr std::uint32_t kManifestFormatVersion = 4;
-// The first version with predictors and per-variable codecs.
-inline constexpr std::uint32_t kManifestVersionPredictors = 2;
-// The first version with fpzip chunks (CodecSpec::fpzip, IndexEntry::coding).
-inline constexpr std::uint32_t kManifestVersionFpzip = 3;
+// Manifest versions this code reads (1 to 5) and writes (2; 3 when a codec has fpzip; 4
+// when the grid is placed by a grid mapping or goes round the Earth; 5 when it records a
+// grid geometry): formats/store.md.
+inline constexpr std::uint32_t kManifestFormatVersion = 5;
 // The first version with georeferencing: a grid mapping (Manifest::grid_mapping),
 // projection axis kinds and periodic longitude axes (Axis::periodic).
 inline constexpr std::uint32_t kManifestVersionGeoreference = 4;
-
-// Predictors (formats/store.md, "Predictors").
-inline constexpr std::string_view kPredictorNone = "none";
-inline constexpr std::string_view kPredictorLorenzo3 = "lorenzo3";
-
-// Defaults from the strielad-bench io codec sweep (BENCHMARKS.md): Blosc level 1 (zstd
-// level 1) converts 2.4x faster than level 5 (zstd 9) for 9% more bytes; byte shuffle
-// beats bit shuffle by 1.5x in size on dense fields. The converter chooses the predictor
-// per variable (build/predictor_choice.h); "none" is what a version-1 store used.
-struct CodecSpec {
-  std::string name = "zstd";       // blosclz, lz4, lz4hc, zlib, zstd
-  int level = 1;                   // 0..9
-  std::string shuffle = "byte";    // none, byte, bit
-  std::string predictor = "none";  // none, lorenzo3 (format version 2)
-  // Data bricks may be fpzip chunks where those are smaller (format version 3).
-  bool fpzip = false;
-  friend bool operator==(const CodecSpec&, const CodecSpec&) = default;
-};
-
-// Throws kInvalidArgument naming the bad field (an unknown predictor included).
-void validate_codec(const CodecSpec& codec);
+// The first version with a grid geometry (Manifest::geometry): curvilinear horizontal
+// coordinates, terrain-following vertical levels, the model's surface height.
+inline constexpr std::uint32_t kManifestVersionGeometry = 5;
 
 struct StoreVariable {
   std::string name, units, long_name, standard_name;
@@ -90,6 +71,9 @@ struct Manifest {
   // How x and y are placed on the Earth when they are map-projection coordinates
   // (format version 4); absent for longitude/latitude axes and for Cartesian grids.
   std::optional<GridMapping> grid_mapping;
+  // Where the samples lie when the axes alone do not say (format version 5); absent for
+  // every store the axes (and grid mapping) place.
+  std::optional<GridGeometry> geometry;
   TimeAxis time;
   std::vector<StoreVariable> variables;
   std::uint32_t brick = 24;
@@ -113,11 +97,24 @@ struct Manifest {
 std::uint32_t version_for_codecs(const Manifest& manifest);
 // Whether the plan needs version 4: a grid mapping, a projection axis or a periodic axis.
 bool needs_georeference_version(const Manifest& manifest);
-// The version a new plan is written as: 4 when it needs it, else version_for_codecs.
+// Whether the plan needs version 5: a grid geometry.
+bool needs_geometry_version(const Manifest& manifest);
+// The version a new plan is written as: 5 or 4 when it needs it, else version_for_codecs.
 std::uint32_t version_for_plan(const Manifest& manifest);
 
 // Path of a step file relative to the store directory: "steps/step-000042.bricks".
 std::string step_file_name(std::uint32_t step);
+// Files of a store with a geometry (formats/store.md): the 2-D coordinates and surface
+// height, and the time-invariant geometry field in the step-file layout.
+inline constexpr std::string_view kGeometryFileName = "GEOMETRY";
+inline constexpr std::string_view kGeometryBricksFileName = "geometry.bricks";
+// Whether the store has a GEOMETRY file: a curvilinear grid or a surface height.
+bool has_geometry_file(const Manifest& manifest);
+// Whether the store has geometry.bricks: a vertical field that does not vary in time.
+bool has_geometry_bricks(const Manifest& manifest);
+// The sections of each step file: one per variable, plus the vertical field when it
+// varies in time (section V, after the variables).
+std::uint32_t step_section_count(const Manifest& manifest);
 
 // The plan: everything that defines the store's content (formats/store.md), as the
 // manifest's format_version writes it. Throws kInvalidArgument when a version-1
@@ -130,9 +127,9 @@ nlohmann::json manifest_to_json(const Manifest& manifest);
 // the key, kVersionTooNew for a format_version above kManifestFormatVersion.
 Manifest manifest_from_json(const nlohmann::json& json, std::string_view what);
 
-// Writes the frame and JSON with manifest.format_version (1 or 2).
+// Writes the frame and JSON with manifest.format_version (1 to 5).
 std::vector<std::byte> encode_manifest(const Manifest& manifest);
-// Reads versions 1 and 2; the frame's and the JSON's format_version must agree.
+// Reads versions 1 to 5; the frame's and the JSON's format_version must agree.
 Manifest decode_manifest(std::span<const std::byte> bytes, std::string_view what);
 
 }  // namespace strielad::format

@@ -20,6 +20,9 @@ namespace strielad::format {
 // reject as a non-zero reserved byte), so they are still version 1.
 inline constexpr std::uint32_t kStepFileFormatVersion = 1;
 inline constexpr std::size_t kStepHeaderSize = 64;
+// The header and footer `step` of geometry.bricks, the step-file-layout file holding a
+// time-invariant geometry field (formats/store.md, "Geometry bricks"): never a time step.
+inline constexpr std::uint32_t kGeometryStep = 0xFFFFFFFF;
 inline constexpr std::size_t kStepFooterSize = 64;
 inline constexpr std::size_t kSectionEntrySize = 48;
 inline constexpr std::size_t kIndexEntrySize = 56;

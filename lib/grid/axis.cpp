@@ -17,6 +17,7 @@ std::string_view axis_kind_name(AxisKind kind) noexcept {
     case AxisKind::kOther: return "other";
     case AxisKind::kProjectionX: return "projection_x";
     case AxisKind::kProjectionY: return "projection_y";
+    case AxisKind::kIndex: return "index";
   }
   return "other";
 }
@@ -24,7 +25,7 @@ std::string_view axis_kind_name(AxisKind kind) noexcept {
 AxisKind axis_kind_from_name(std::string_view name) {
   for (AxisKind k : {AxisKind::kLongitude, AxisKind::kLatitude, AxisKind::kHeight,
                      AxisKind::kPressure, AxisKind::kModelLevel, AxisKind::kOther,
-                     AxisKind::kProjectionX, AxisKind::kProjectionY}) {
+                     AxisKind::kProjectionX, AxisKind::kProjectionY, AxisKind::kIndex}) {
     if (axis_kind_name(k) == name) return k;
   }
   throw make_error(ErrorCode::kCorrupt, "unknown axis kind '{}'", name);

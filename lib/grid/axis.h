@@ -24,6 +24,9 @@ enum class AxisKind {
   // plain Cartesian coordinates in metres with no place on the Earth.
   kProjectionX,
   kProjectionY,
+  // The x or y index of a curvilinear grid (store format version 5): values 0 .. n-1; the
+  // store's 2-D longitudes and latitudes place each column.
+  kIndex,
 };
 
 std::string_view axis_kind_name(AxisKind kind) noexcept;

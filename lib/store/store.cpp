@@ -33,6 +33,14 @@ std::shared_ptr<const Store> Store::open(const std::filesystem::path& dir,
   }
   format::Manifest manifest =
       format::decode_manifest(read_file_bytes(manifest_path), manifest_path.string());
+  if (manifest.geometry) {
+    // Format 5 records where samples of a curvilinear or terrain-following grid lie; the
+    // readers and tools of this build would place them on the index lattice instead.
+    throw make_error(ErrorCode::kUnsupported,
+                     "{}: the store records a grid geometry (format version 5); this build "
+                     "cannot place its samples yet, so it does not open it",
+                     dir.string());
+  }
   if (!manifest.complete && !options.allow_incomplete) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "{}: conversion has not been finalized (state 'converting'); finish it by "

@@ -22,6 +22,13 @@ TEST(StepFileFormatTest, HeaderRoundTrip) {
   EXPECT_EQ(decode_step_header(bytes, "h"), sample_header());
 }
 
+TEST(StepFileFormatTest, GeometryBricksHeaderAndFooterCarryTheGeometryStep) {
+  const StepHeader header{0x1234567890abcdefull, kGeometryStep, 1, 51393};
+  EXPECT_EQ(decode_step_header(encode_step_header(header), "geometry.bricks"), header);
+  const StepFooter footer{64, 1, 51393, 0x1234567890abcdefull, kGeometryStep, 5, 6};
+  EXPECT_EQ(decode_step_footer(encode_step_footer(footer), "geometry.bricks").step, kGeometryStep);
+}
+
 TEST(StepFileFormatTest, HeaderCorruptMagic) {
   auto bytes = encode_step_header(sample_header());
   bytes[0] = std::byte{'X'};

@@ -35,12 +35,28 @@ std::vector<std::vector<std::uint8_t>> strielad_fuzz_seeds() {
   v1.format_version = 1;
   v1.store_id = compute_store_id(v1);
   const auto version1 = encode_manifest(v1);
+  // Version 5: a curvilinear grid with a time-varying height field and a surface.
+  Manifest v5 = m;
+  v5.x = Axis{"west_east", AxisKind::kIndex, "1", "", "", "", {0, 1, 2}};
+  v5.y = Axis{"south_north", AxisKind::kIndex, "1", "", "", "", {0, 1}};
+  GridGeometry g;
+  g.horizontal = HorizontalGeometry{HorizontalGeometry::Kind::kCurvilinear, "XLONG", "XLAT", 7};
+  g.vertical.kind = VerticalGeometry::Kind::kField;
+  g.vertical.units = "m";
+  g.vertical.formula = std::string(kGeometryFormulaVariable);
+  g.vertical.sources = {"PH", "PHB"};
+  g.vertical.varies_in_time = true;
+  g.surface = SurfaceGeometry{"HGT", "m"};
+  v5.geometry = g;
+  v5.format_version = version_for_plan(v5);
+  v5.store_id = compute_store_id(v5);
+  const auto geometry = encode_manifest(v5);
   m.complete = true;
   m.steps = {StepRecord{0, step_file_name(0), 10, 1}};
   m.summary = {{"ratio", 2.0}};
   const auto complete = encode_manifest(m);
   std::vector<std::vector<std::uint8_t>> seeds;
-  for (const auto* b : {&plain, &complete, &predictors, &version1}) {
+  for (const auto* b : {&plain, &complete, &predictors, &version1, &geometry}) {
     seeds.emplace_back(reinterpret_cast<const std::uint8_t*>(b->data()),
                        reinterpret_cast<const std::uint8_t*>(b->data()) + b->size());
   }
