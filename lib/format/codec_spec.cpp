@@ -2,23 +2,13 @@
 #include "format/codec_spec.h"
 
 #include "core/error.h"
+#include "format/json_fields.h"
 
 namespace strielad::format {
 namespace {
 
 using nlohmann::json;
-
-template <typename T>
-T get(const json& j, std::string_view key, std::string_view what) {
-  const auto it = j.find(std::string(key));
-  if (it == j.end()) throw make_error(ErrorCode::kCorrupt, "{}: missing key '{}'", what, key);
-  try {
-    return it->get<T>();
-  } catch (const json::exception& e) {
-    throw make_error(ErrorCode::kCorrupt, "{}: key '{}' has the wrong type: {}", what, key,
-                     e.what());
-  }
-}
+using json_fields::get;
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include "core/byte_io.h"
 #include "core/checksum.h"
 #include "core/error.h"
+#include "format/json_fields.h"
 #include "format/step_file_format.h"
 #include "octree/octree_layout.h"
 
@@ -17,28 +18,9 @@ using nlohmann::json;
 constexpr std::string_view kManifestMagic = "STRLDMAN";
 constexpr std::size_t kFrameHeader = 24, kFrameTrailer = 8;
 
-std::string hex64(std::uint64_t v) { return fmt::format("{:016x}", v); }
-
-std::uint64_t parse_hex64(const std::string& s, std::string_view key, std::string_view what) {
-  if (s.size() != 16 || s.find_first_not_of("0123456789abcdef") != std::string::npos) {
-    throw make_error(ErrorCode::kCorrupt, "{}: key '{}' must be 16 lowercase hex digits, got '{}'",
-                     what, key, s);
-  }
-  return std::stoull(s, nullptr, 16);
-}
-
-// Typed access to a required key with errors naming it.
-template <typename T>
-T get(const json& j, std::string_view key, std::string_view what) {
-  const auto it = j.find(std::string(key));
-  if (it == j.end()) throw make_error(ErrorCode::kCorrupt, "{}: missing key '{}'", what, key);
-  try {
-    return it->get<T>();
-  } catch (const json::exception& e) {
-    throw make_error(ErrorCode::kCorrupt, "{}: key '{}' has the wrong type: {}", what, key,
-                     e.what());
-  }
-}
+using json_fields::get;
+using json_fields::hex64;
+using json_fields::parse_hex64;
 
 std::optional<double> get_optional(const json& j, std::string_view key, std::string_view what) {
   if (!j.contains(std::string(key))) return std::nullopt;

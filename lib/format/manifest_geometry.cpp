@@ -5,16 +5,18 @@
 #include <initializer_list>
 
 #include "core/error.h"
+#include "format/json_fields.h"
 #include "format/manifest.h"
 
 namespace strielad::format {
 namespace {
 
 using nlohmann::json;
+using json_fields::get;
 
 constexpr std::string_view kCurvilinear = "curvilinear", kAxes = "axes";
 
-std::string hex64(std::uint64_t v) { return fmt::format("{:016x}", v); }
+using json_fields::hex64;
 
 // The rules a geometry must follow, for writers (kInvalidArgument) and readers (kCorrupt).
 void check_geometry(const GridGeometry& g, std::size_t z_size, std::string_view what,
@@ -112,19 +114,6 @@ void check_geometry(const GridGeometry& g, std::size_t z_size, std::string_view 
   }
 }
 
-// Typed access to a required key, errors naming the object and the key.
-template <typename T>
-T get(const json& j, std::string_view key, std::string_view where) {
-  const auto it = j.find(std::string(key));
-  if (it == j.end()) throw make_error(ErrorCode::kCorrupt, "{}: missing key '{}'", where, key);
-  try {
-    return it->get<T>();
-  } catch (const json::exception& e) {
-    throw make_error(ErrorCode::kCorrupt, "{}: key '{}' has the wrong type: {}", where, key,
-                     e.what());
-  }
-}
-
 const json& object(const json& j, std::string_view key, std::string_view where) {
   const auto it = j.find(std::string(key));
   if (it == j.end()) throw make_error(ErrorCode::kCorrupt, "{}: missing key '{}'", where, key);
@@ -144,15 +133,6 @@ void only_keys(const json& j, std::initializer_list<std::string_view> allowed,
   }
 }
 
-std::uint64_t parse_checksum(const std::string& s, std::string_view where) {
-  if (s.size() != 16 || s.find_first_not_of("0123456789abcdef") != std::string::npos) {
-    throw make_error(ErrorCode::kCorrupt,
-                     "{}: key 'coordinates_checksum' must be 16 lowercase hex digits, got '{}'",
-                     where, s);
-  }
-  return std::stoull(s, nullptr, 16);
-}
-
 HorizontalGeometry horizontal_from_json(const json& j, std::string_view what) {
   const std::string where = fmt::format("{}: geometry.horizontal", what);
   HorizontalGeometry h;
@@ -164,7 +144,8 @@ HorizontalGeometry horizontal_from_json(const json& j, std::string_view what) {
     h.kind = HorizontalGeometry::Kind::kCurvilinear;
     h.lon_variable = get<std::string>(j, "lon_variable", where);
     h.lat_variable = get<std::string>(j, "lat_variable", where);
-    h.coordinates_checksum = parse_checksum(get<std::string>(j, "coordinates_checksum", where), where);
+    h.coordinates_checksum = json_fields::parse_hex64(
+        get<std::string>(j, "coordinates_checksum", where), "coordinates_checksum", where);
   } else {
     throw make_error(ErrorCode::kCorrupt, "{}: unknown kind '{}' (axes, curvilinear)", where, kind);
   }
