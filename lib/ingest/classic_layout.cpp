@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "ingest/input_kind.h"
 
 namespace strielad::ingest {
 namespace {
@@ -90,14 +91,6 @@ void skip_attributes(Cursor& c, int version) {
     const std::uint64_t n = c.non_neg();
     c.skip(pad4(mul(n, external_type_size(type, version))));
   }
-}
-
-// "CDF" and version 1 (classic), 2 (64-bit offset) or 5 (64-bit data).
-bool has_classic_magic(std::span<const std::byte> bytes) {
-  if (bytes.size() < 4) return false;
-  const int version = std::to_integer<int>(bytes[3]);
-  return bytes[0] == std::byte{'C'} && bytes[1] == std::byte{'D'} && bytes[2] == std::byte{'F'} &&
-         (version == 1 || version == 2 || version == 5);
 }
 
 // The dimension list: each dimension's length (0 for the record dimension).

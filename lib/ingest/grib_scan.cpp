@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "geo/cf_calendar.h"
 
 namespace strielad::ingest {
 namespace {
@@ -28,16 +29,6 @@ std::optional<VerticalType> vertical_type(const std::string& type_of_level) {
     return VerticalType{AxisKind::kModelLevel, "1", "down"};
   }
   return std::nullopt;
-}
-
-// Days since 1970-01-01 of a proleptic Gregorian date (H. Hinnant's algorithm).
-std::int64_t days_from_civil(std::int64_t y, unsigned m, unsigned d) {
-  y -= m <= 2;
-  const std::int64_t era = (y >= 0 ? y : y - 399) / 400;
-  const auto yoe = static_cast<unsigned>(y - era * 400);
-  const unsigned doy = (153 * (m + (m > 2 ? -3 : 9)) + 2) / 5 + d - 1;
-  const unsigned doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
-  return era * 146097 + static_cast<std::int64_t>(doe) - 719468;
 }
 
 using Key = std::pair<std::string, std::string>;  // (shortName, typeOfLevel)
@@ -65,7 +56,12 @@ GribVariable build_variable(const Key& key, const Group& group, const VerticalTy
                        "{}: its messages lie on different grids (at bytes {} and {})", what,
                        first.offset, m.offset);
     }
-    const std::int64_t t = grib_validity_seconds(m.validity_date, m.validity_time);
+    std::int64_t t = 0;
+    try {
+      t = grib_validity_seconds(m.validity_date, m.validity_time);
+    } catch (const Error& e) {
+      throw e.with_context(fmt::format("{} (message at byte {})", what, m.offset));
+    }
     const auto [it, inserted] = at.emplace(std::pair{t, m.level_value}, &m);
     if (!inserted) {
       throw make_error(ErrorCode::kInvalidInput,
@@ -102,10 +98,15 @@ GribVariable build_variable(const Key& key, const Group& group, const VerticalTy
 }  // namespace
 
 std::int64_t grib_validity_seconds(long date, long time) {
-  const std::int64_t y = date / 10000;
-  const auto m = static_cast<unsigned>(date / 100 % 100);
-  const auto d = static_cast<unsigned>(date % 100);
-  return days_from_civil(y, m, d) * 86400 + (time / 100) * 3600 + (time % 100) * 60;
+  const geo::CfDate day{date / 10000, static_cast<unsigned>(date / 100 % 100),
+                        static_cast<unsigned>(date % 100)};
+  if (!geo::cf_date_exists(geo::CfCalendar::kProlepticGregorian, day) || time < 0 ||
+      time / 100 > 23 || time % 100 > 59) {
+    throw make_error(ErrorCode::kInvalidInput, "GRIB validity {} {:04d} is not a date and time",
+                     date, time);
+  }
+  return geo::cf_day_number(geo::CfCalendar::kProlepticGregorian, day) * 86400 +
+         (time / 100) * 3600 + (time % 100) * 60;
 }
 
 GribScan scan_grib_file(const std::filesystem::path& path) {

@@ -16,12 +16,6 @@ bool starts_with(std::span<const std::byte> bytes, std::size_t at, std::string_v
          std::memcmp(bytes.data() + at, text.data(), text.size()) == 0;
 }
 
-bool is_classic(std::span<const std::byte> head) {
-  if (!starts_with(head, 0, "CDF") || head.size() < 4) return false;
-  const auto version = std::to_integer<int>(head[3]);
-  return version == 1 || version == 2 || version == 5;
-}
-
 bool is_hdf5(std::span<const std::byte> head) {
   static constexpr std::string_view kSignature{"\x89HDF\r\n\x1a\n", 8};
   if (starts_with(head, 0, kSignature)) return true;
@@ -43,9 +37,16 @@ InputKindGuess find_grib(std::span<const std::byte> head) {
 
 }  // namespace
 
+bool has_classic_magic(std::span<const std::byte> bytes) {
+  if (bytes.size() < 4) return false;
+  const int version = std::to_integer<int>(bytes[3]);
+  return bytes[0] == std::byte{'C'} && bytes[1] == std::byte{'D'} && bytes[2] == std::byte{'F'} &&
+         (version == 1 || version == 2 || version == 5);
+}
+
 InputKindGuess detect_input_kind(std::span<const std::byte> head) {
   head = head.first(std::min(head.size(), kInputKindHeadBytes));
-  if (is_classic(head)) return {InputKind::kNetcdfClassic};
+  if (has_classic_magic(head)) return {InputKind::kNetcdfClassic};
   if (is_hdf5(head)) return {InputKind::kNetcdf4};
   return find_grib(head);
 }

@@ -22,6 +22,9 @@ struct InputKindGuess {
 // superblock at 0, 512, 1024, ... (powers of two).
 inline constexpr std::size_t kInputKindHeadBytes = 64 * 1024;
 
+// "CDF" and version 1 (classic), 2 (64-bit offset) or 5 (64-bit data).
+bool has_classic_magic(std::span<const std::byte> bytes);
+
 // From the first bytes of a file (at most kInputKindHeadBytes are looked at).
 InputKindGuess detect_input_kind(std::span<const std::byte> head);
 // From the file itself. \error kNotFound, kIo.

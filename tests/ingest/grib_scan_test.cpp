@@ -109,6 +109,10 @@ TEST(GribScanTest, ValiditySecondsAreUtcSinceTheEpoch) {
   EXPECT_EQ(grib_validity_seconds(19700101, 0), 0);
   EXPECT_EQ(grib_validity_seconds(20070124, 1200), 1169640000);
   EXPECT_EQ(grib_validity_seconds(20000301, 2359), 951868800 + 23 * 3600 + 59 * 60);
+  expect_error([] { grib_validity_seconds(20070229, 0); }, ErrorCode::kInvalidInput,
+               {"20070229", "not a date"});
+  expect_error([] { grib_validity_seconds(20070101, 2460); }, ErrorCode::kInvalidInput,
+               {"2460", "not a date"});
 }
 
 }  // namespace
