@@ -14,11 +14,10 @@
 #include <vector>
 
 #include "core/error.h"
+#include "ingest/grib_catalog.h"
 #include "ingest/netcdf_call.h"
 #include "ingest/netcdf_file.h"
 #include "ingest/sample_conversion.h"
-#include "ingest/grib_catalog.h"
-#include "ingest/input_kind.h"
 #include "ingest/variable_meta.h"
 
 namespace strielad::build {
@@ -40,9 +39,8 @@ struct BoxReader::Impl {
   // Samples per row in the file when the catalog repeats the first meridian at the end
   // (column source_nx of a box is column 0 of the file); 0 otherwise.
   std::size_t repeated_from = 0;
-  // GRIB input: the file's scan and the variable in it (every read decodes whole levels).
-  std::shared_ptr<const ingest::GribScan> grib;
-  const ingest::GribVariable* grib_variable = nullptr;
+  // GRIB input: each level's message (every read decodes whole levels); empty for netCDF.
+  std::vector<ingest::GribMessageRef> grib_levels;
   // Raw samples of the last read; grown on demand, never zero-filled (netCDF fills it).
   std::unique_ptr<std::byte[]> buffer;
   std::size_t buffer_size = 0;
@@ -94,7 +92,7 @@ BoxReader::BoxReader(const ingest::InputCatalog& catalog, const ingest::ScanOpti
     throw make_error(ErrorCode::kInvalidArgument, "box reader: no variable {} at time step {}",
                      variable, step);
   }
-  const ingest::VariableLocation loc = catalog.locations[variable][step];
+  const ingest::VariableLocation& loc = catalog.locations[variable][step];
   Impl& m = *impl_;
   m.path = catalog.files.at(loc.file).path;
   m.name = catalog.variables[variable].name;
@@ -103,13 +101,8 @@ BoxReader::BoxReader(const ingest::InputCatalog& catalog, const ingest::ScanOpti
   m.nan_as_fill = scan.nan_as_fill;
 
   if (catalog.repeats_first_column()) m.repeated_from = catalog.source_nx;
-  if (ingest::detect_input_kind(m.path).kind == ingest::InputKind::kGrib) {
-    auto scan = std::make_shared<const ingest::GribScan>(ingest::scan_grib_file(m.path));
-    m.grib_variable = ingest::find_grib_variable(*scan, m.name);
-    if (!m.grib_variable) {
-      throw make_error(ErrorCode::kInvalidInput, "{}: no longer in the file", m.context);
-    }
-    m.grib = std::move(scan);
+  if (!loc.grib_levels.empty()) {
+    m.grib_levels = loc.grib_levels;
     m.dims = catalog.as_in_files().dims();
     m.filtered = true;
     return;
@@ -215,7 +208,7 @@ void BoxReader::Impl::read_grib(const IndexBox& box, std::span<Out> out) {
   std::vector<Out> level(plane);
   Out* dst = out.data();
   for (std::size_t z = box.lo[2]; z <= box.hi[2]; ++z) {
-    ingest::read_grib_levels(path, *grib_variable, time_index, z, z + 1, plane,
+    ingest::read_grib_levels(path, std::span(grib_levels).subspan(z, 1), plane, context,
                              std::span<Out>(level));
     for (std::size_t y = box.lo[1]; y <= box.hi[1]; ++y) {
       const Out* row = level.data() + y * dims.x;
@@ -230,7 +223,7 @@ void BoxReader::Impl::read(const IndexBox& box, std::span<Out> out) {
     throw make_error(ErrorCode::kInternal, "box reader: {} samples for a box of {}", out.size(),
                      box.count());
   }
-  if (grib) {
+  if (!grib_levels.empty()) {
     read_grib(box, out);
     return;
   }

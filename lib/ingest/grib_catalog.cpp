@@ -13,7 +13,9 @@
 #include <spdlog/spdlog.h>
 
 #include "core/error.h"
+#include "core/file_io.h"
 #include "ingest/grib_grid.h"
+#include "ingest/requested_steps.h"
 #include "ingest/source_file.h"
 
 namespace strielad::ingest {
@@ -60,10 +62,6 @@ GribGrid grid_of(const std::filesystem::path& path, const GribVariable& v) {
   return grib_grid(keys, what);
 }
 
-std::size_t first_step(const ScanOptions& o) {
-  return o.first_step.value_or(0);
-}
-
 }  // namespace
 
 std::string grib_variable_name(const GribScan& scan, const GribVariable& v) {
@@ -71,13 +69,6 @@ std::string grib_variable_name(const GribScan& scan, const GribVariable& v) {
       std::count_if(scan.variables.begin(), scan.variables.end(),
                     [&](const GribVariable& w) { return w.short_name == v.short_name; });
   return same > 1 ? v.short_name + "_" + v.type_of_level : v.short_name;
-}
-
-const GribVariable* find_grib_variable(const GribScan& scan, std::string_view name) {
-  for (const auto& v : scan.variables) {
-    if (grib_variable_name(scan, v) == name) return &v;
-  }
-  return nullptr;
 }
 
 InputCatalog grib_catalog(const std::vector<std::filesystem::path>& inputs,
@@ -161,8 +152,9 @@ InputCatalog grib_catalog(const std::vector<std::filesystem::path>& inputs,
   for (std::size_t v = 0; v < chosen.size(); ++v) {
     for (const Found& f : all[chosen[v]].second) {
       for (std::size_t t = 0; t < f.variable->times.size(); ++t) {
-        const auto [it, inserted] =
-            at[v].emplace(f.variable->times[t], VariableLocation{f.file, t});
+        VariableLocation loc{f.file, t, {}};
+        for (const auto& m : f.variable->messages[t]) loc.grib_levels.push_back({m.offset, m.size});
+        const auto [it, inserted] = at[v].emplace(f.variable->times[t], std::move(loc));
         if (!inserted) {
           throw make_error(ErrorCode::kInvalidInput,
                            "GRIB variable '{}' at {} s since 1970 is in two files: {} and {}",
@@ -189,18 +181,13 @@ InputCatalog grib_catalog(const std::vector<std::filesystem::path>& inputs,
     }
   }
   const std::size_t n = at[0].size();
-  const std::size_t first = first_step(options), last = options.last_step.value_or(n - 1);
-  if (first >= n || last >= n || first > last) {
-    throw make_error(ErrorCode::kInvalidArgument,
-                     "time steps {} to {} requested but the inputs have {} (0..{})", first, last, n,
-                     n - 1);
-  }
+  const StepRange range = requested_steps(options, n);
   c.time.name = "time";
   c.time.units = "seconds since 1970-01-01 00:00:00";
   c.time.calendar = "proleptic_gregorian";
   std::size_t step = 0;
   for (const auto& [t, loc] : at[0]) {
-    if (step >= first && step <= last) c.time.values.push_back(static_cast<double>(t));
+    if (step >= range.first && step <= range.last) c.time.values.push_back(static_cast<double>(t));
     ++step;
   }
   c.locations.resize(chosen.size());
@@ -261,47 +248,48 @@ void check_float_resolves(const GribHandle& h, const std::string& what) {
 }
 
 template <typename Out>
-void read_levels(const std::filesystem::path& path, const GribVariable& v, std::size_t t,
-                 std::size_t z0, std::size_t z1, std::size_t plane, std::span<Out> out) {
-  if (t >= v.messages.size() || z1 > v.messages[t].size() || out.size() < (z1 - z0) * plane) {
-    throw make_error(ErrorCode::kInvalidInput,
-                     "{}: GRIB variable '{}' has no time index {} or levels {}..{} (file changed "
-                     "since it was scanned?)",
-                     path.string(), v.short_name, t, z0, z1);
+void read_levels(const std::filesystem::path& path, std::span<const GribMessageRef> levels,
+                 std::size_t plane, std::string_view what, std::span<Out> out) {
+  if (out.size() < levels.size() * plane) {
+    throw make_error(ErrorCode::kInternal, "{}: {} samples for {} levels of {}", what, out.size(),
+                     levels.size(), plane);
   }
-  std::lock_guard lock(eccodes_mutex());
-  for (std::size_t k = z0; k < z1; ++k) {
-    const GribMessageSummary& m = v.messages[t][k];
-    const std::string what = fmt::format("{}: GRIB variable '{}' level {} (message at byte {})",
-                                         path.string(), v.short_name, m.level_value, m.offset);
-    const GribHandle h = read_grib_message(path, m);
-    if (sizeof(Out) == 4) check_float_resolves(h, what);
-    const std::vector<double> values = h.double_array_key("values", what);
+  const ReadOnlyFile file(path);
+  std::vector<std::byte> bytes;
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    const GribMessageRef& m = levels[k];
+    const std::string where = fmt::format("{}: GRIB message at byte {}", what, m.offset);
+    bytes.resize(static_cast<std::size_t>(m.size));
+    file.read_at(m.offset, bytes);
+    std::lock_guard lock(eccodes_mutex());
+    const GribHandle h = decode_grib_message(bytes, where);
+    if (sizeof(Out) == 4) check_float_resolves(h, where);
+    const std::vector<double> values = h.double_array_key("values", where);
     if (values.size() != plane) {
-      throw make_error(ErrorCode::kInvalidInput, "{}: {} values, the grid has {}", what,
+      throw make_error(ErrorCode::kInvalidInput, "{}: {} values, the grid has {}", where,
                        values.size(), plane);
     }
     std::vector<double> bitmap;
-    if (h.long_key("bitmapPresent") != 0) bitmap = h.double_array_key("bitmap", what);
-    Out* dst = out.data() + (k - z0) * plane;
+    if (h.long_key("bitmapPresent") != 0) bitmap = h.double_array_key("bitmap", where);
+    Out* dst = out.data() + k * plane;
     for (std::size_t i = 0; i < plane; ++i) {
       dst[i] = !bitmap.empty() && bitmap[i] == 0 ? std::numeric_limits<Out>::quiet_NaN()
                                                  : static_cast<Out>(values[i]);
     }
+    take_eccodes_log();
   }
-  take_eccodes_log();
 }
 
 }  // namespace
 
-void read_grib_levels(const std::filesystem::path& path, const GribVariable& v, std::size_t t,
-                      std::size_t z0, std::size_t z1, std::size_t plane, std::span<float> out) {
-  read_levels(path, v, t, z0, z1, plane, out);
+void read_grib_levels(const std::filesystem::path& path, std::span<const GribMessageRef> levels,
+                      std::size_t plane, std::string_view what, std::span<float> out) {
+  read_levels(path, levels, plane, what, out);
 }
 
-void read_grib_levels(const std::filesystem::path& path, const GribVariable& v, std::size_t t,
-                      std::size_t z0, std::size_t z1, std::size_t plane, std::span<double> out) {
-  read_levels(path, v, t, z0, z1, plane, out);
+void read_grib_levels(const std::filesystem::path& path, std::span<const GribMessageRef> levels,
+                      std::size_t plane, std::string_view what, std::span<double> out) {
+  read_levels(path, levels, plane, what, out);
 }
 
 }  // namespace strielad::ingest

@@ -21,22 +21,24 @@ namespace strielad::ingest {
 // \error kNotFound for a variable asked for that no input has (listing those there are);
 // kInvalidInput for variables on other levels or grids than the first, a validity time
 // in two files, time steps that differ between variables; what scan_grib_file and
-// grib_grid throw.
+// grib_grid throw. Every location names its levels' messages (VariableLocation::
+// grib_levels), so reading needs no second scan.
 InputCatalog grib_catalog(const std::vector<std::filesystem::path>& inputs,
                           const ScanOptions& options);
 
 // The store name of `v`: its shortName, or "shortName_typeOfLevel" when another 3-D
 // variable of the scan has the same shortName.
 std::string grib_variable_name(const GribScan& scan, const GribVariable& v);
-const GribVariable* find_grib_variable(const GribScan& scan, std::string_view name);
 
-// Levels [z0, z1) of `v` at its time index `t`, as ecCodes decodes them, into `out`
-// (plane after plane, i fastest); bitmap points NaN. `plane` = samples per level.
+// The messages `levels` of `path` (consecutive levels of one variable and time), as
+// ecCodes decodes them, into `out` (plane after plane, i fastest); bitmap points NaN.
+// `plane` = samples per level; `what` names file, variable and step in messages. The
+// file is read outside eccodes_mutex(), which only decoding holds.
 // \error kInvalidInput naming the message when its size is not `plane`; kUnsupported when
 // float output cannot hold the packed values apart (packing finer than float32).
-void read_grib_levels(const std::filesystem::path& path, const GribVariable& v, std::size_t t,
-                      std::size_t z0, std::size_t z1, std::size_t plane, std::span<float> out);
-void read_grib_levels(const std::filesystem::path& path, const GribVariable& v, std::size_t t,
-                      std::size_t z0, std::size_t z1, std::size_t plane, std::span<double> out);
+void read_grib_levels(const std::filesystem::path& path, std::span<const GribMessageRef> levels,
+                      std::size_t plane, std::string_view what, std::span<float> out);
+void read_grib_levels(const std::filesystem::path& path, std::span<const GribMessageRef> levels,
+                      std::size_t plane, std::string_view what, std::span<double> out);
 
 }  // namespace strielad::ingest

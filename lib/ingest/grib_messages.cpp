@@ -84,19 +84,24 @@ std::vector<GribMessageSummary> list_grib_messages(const std::filesystem::path& 
   return messages;
 }
 
-GribHandle read_grib_message(const std::filesystem::path& path, const GribMessageSummary& summary) {
-  const ReadOnlyFile file(path);
-  std::vector<std::byte> bytes(static_cast<std::size_t>(summary.size));
-  file.read_at(summary.offset, bytes);
+GribHandle decode_grib_message(std::span<const std::byte> bytes, std::string_view what) {
   take_eccodes_log();
   GribHandle message(
       codes_handle_new_from_message_copy(codes_context_get_default(), bytes.data(), bytes.size()));
   const std::string log = take_eccodes_log();
   if (!message || !log.empty()) {
-    throw make_error(ErrorCode::kInvalidInput, "{}: GRIB message at byte {}: {}", path.string(),
-                     summary.offset, log.empty() ? "ecCodes cannot decode it" : log);
+    throw make_error(ErrorCode::kInvalidInput, "{}: {}", what,
+                     log.empty() ? "ecCodes cannot decode it" : log);
   }
   return message;
+}
+
+GribHandle read_grib_message(const std::filesystem::path& path, const GribMessageSummary& summary) {
+  const ReadOnlyFile file(path);
+  std::vector<std::byte> bytes(static_cast<std::size_t>(summary.size));
+  file.read_at(summary.offset, bytes);
+  return decode_grib_message(
+      bytes, fmt::format("{}: GRIB message at byte {}", path.string(), summary.offset));
 }
 
 }  // namespace strielad::ingest

@@ -5,7 +5,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ingest/eccodes_call.h"
@@ -34,8 +36,12 @@ struct GribMessageSummary {
 // (a truncated one, a GRIB 1 grid without its description section ...).
 std::vector<GribMessageSummary> list_grib_messages(const std::filesystem::path& path);
 
-// The message `summary` (from list_grib_messages) of `path`, decoded. The caller holds
-// eccodes_mutex() while it uses the handle. \error kIo, kTruncated, kInvalidInput.
+// A message's bytes, decoded. The caller holds eccodes_mutex() while it uses the handle.
+// \error kInvalidInput naming `what` and what ecCodes said.
+GribHandle decode_grib_message(std::span<const std::byte> bytes, std::string_view what);
+
+// The message `summary` (from list_grib_messages) of `path`, read and decoded; the caller
+// holds eccodes_mutex(). \error kIo, kTruncated, kInvalidInput.
 GribHandle read_grib_message(const std::filesystem::path& path, const GribMessageSummary& summary);
 
 }  // namespace strielad::ingest

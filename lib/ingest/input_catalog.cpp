@@ -6,6 +6,7 @@
 
 #include "ingest/grib_catalog.h"
 #include "ingest/input_kind.h"
+#include "ingest/requested_steps.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -221,7 +222,7 @@ std::vector<std::map<double, VariableLocation>> locate_time_steps(const Selected
       }
       const std::vector<double> values = sv.time ? sv.time->values : std::vector<double>{0.0};
       for (std::size_t i = 0; i < values.size(); ++i) {
-        auto [it, inserted] = steps[v].emplace(values[i], VariableLocation{occ.file, i});
+        auto [it, inserted] = steps[v].emplace(values[i], VariableLocation{occ.file, i, {}});
         if (inserted) continue;
         if (!sv.time) {
           throw make_error(ErrorCode::kInvalidInput,
@@ -287,28 +288,6 @@ InputKinds grib_inputs(const std::vector<std::filesystem::path>& inputs) {
     }
   }
   return k;
-}
-
-struct StepRange {
-  std::size_t first = 0;
-  std::size_t last = 0;
-};
-
-StepRange requested_steps(const ScanOptions& options, std::size_t n) {
-  const std::size_t first = options.first_step.value_or(0);
-  const std::size_t last = options.last_step.value_or(n - 1);
-  auto out_of_range = [&](std::string_view which, std::size_t step) {
-    return make_error(ErrorCode::kInvalidArgument,
-                      "{} time step {} requested but the inputs have {} time step{} (0..{})",
-                      which, step, n, n == 1 ? "" : "s", n - 1);
-  };
-  if (first >= n) throw out_of_range("first", first);
-  if (last >= n) throw out_of_range("last", last);
-  if (first > last) {
-    throw make_error(ErrorCode::kInvalidArgument, "first time step {} is after last time step {}",
-                     first, last);
-  }
-  return {first, last};
 }
 
 // The grid, placement and variable descriptions, all taken from the reference variable.

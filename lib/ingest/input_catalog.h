@@ -48,9 +48,17 @@ struct VariableMeta {
   std::vector<double> missing_values;
 };
 
+// Where a GRIB message lies in its file.
+struct GribMessageRef {
+  std::uint64_t offset = 0;  // of "GRIB"
+  std::uint64_t size = 0;    // bytes, "GRIB" to "7777"
+};
+
 struct VariableLocation {
   std::size_t file = 0;            // index into InputCatalog::files
   std::size_t time_in_file = 0;    // index along the variable's time dimension (0 if none)
+  // GRIB inputs: the message of each level, in the order of z (empty for netCDF).
+  std::vector<GribMessageRef> grib_levels;
 };
 
 struct InputCatalog {

@@ -24,7 +24,6 @@
 #include "ingest/slab_reader.h"
 
 #include "ingest/grib_catalog.h"
-#include "ingest/input_kind.h"
 #include "ingest/netcdf_call.h"
 #include "ingest/netcdf_file.h"
 #include "ingest/sample_conversion.h"
@@ -84,11 +83,6 @@ struct SlabReader::Impl {
   std::uint64_t clock = 0;
   std::atomic<std::uint64_t> direct_bytes{0};
   std::set<std::size_t> direct_failed{};  // files whose direct reads failed: netCDF only
-  // GRIB inputs: each file's scan, made on first use (nullptr: the file is not GRIB).
-  std::mutex grib_mutex{};
-  std::map<std::size_t, std::shared_ptr<const GribScan>> grib_scans{};
-
-  const GribScan* grib_scan(std::size_t file);
 
   OpenFile& open_file(std::size_t index);
   const VariableHandle& variable(OpenFile& of, std::size_t file, std::size_t v);
@@ -424,34 +418,19 @@ void SlabReader::Impl::stop_direct_reads(std::size_t file, const Error& e) {
   if (auto it = open.find(file); it != open.end()) it->second.direct.reset();
 }
 
-const GribScan* SlabReader::Impl::grib_scan(std::size_t file) {
-  std::lock_guard lock(grib_mutex);
-  auto it = grib_scans.find(file);
-  if (it == grib_scans.end()) {
-    const std::string& path = catalog.files[file].path;
-    std::shared_ptr<const GribScan> scan;
-    if (detect_input_kind(path).kind == InputKind::kGrib) {
-      scan = std::make_shared<const GribScan>(scan_grib_file(path));
-    }
-    it = grib_scans.emplace(file, std::move(scan)).first;
-  }
-  return it->second.get();
-}
-
 template <typename Out>
 void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::size_t z1,
                             std::span<Out> out) {
   const std::size_t count = checked_slab_size(v, t, z0, z1, out.size());
   if (count == 0) return;
 
-  const VariableLocation loc = catalog.locations[v][t];
+  const VariableLocation& loc = catalog.locations[v][t];
   const std::string& path = catalog.files[loc.file].path;
   const std::string& name = catalog.variables[v].name;
   const std::string context = fmt::format("{}: variable '{}' time step {}", path, name, t);
-  if (const GribScan* scan = grib_scan(loc.file)) {
-    const GribVariable* g = find_grib_variable(*scan, name);
-    if (!g) throw make_error(ErrorCode::kInvalidInput, "{}: no longer in the file", context);
-    read_grib_levels(path, *g, loc.time_in_file, z0, z1, count / (z1 - z0), out.first(count));
+  if (!loc.grib_levels.empty()) {
+    read_grib_levels(path, std::span(loc.grib_levels).subspan(z0, z1 - z0), count / (z1 - z0),
+                     context, out.first(count));
     return;
   }
 
