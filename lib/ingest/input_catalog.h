@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +28,37 @@ struct ScanOptions {
   // SlabReader reads netCDF-4 planes that HDF5 keeps as raw bytes (Hdf5PlaneLayout)
   // with O_DIRECT, bypassing the page cache; false: every read through netCDF.
   bool direct_input = true;
+  // The source variable holding every sample's height or geopotential (3-D, on the
+  // variables' levels or on half levels), instead of the automatic choice (z_mc, z_ifc,
+  // HHL, PH+PHB, a CF formula). Empty: automatic.
+  std::optional<std::string> height_var;
+  // Values of CF formula terms the files lack, e.g. {"P0", 100000} for the CCM
+  // attribute P0_var or a formula_terms `p0:` variable that is absent (in the term
+  // variable's units as the formula expects them).
+  std::map<std::string, double> formula_constants;
+};
+
+// Where every sample lies vertically when the z axis alone does not say (terrain-
+// following levels): a height above mean sea level (m) or a pressure (Pa) per sample,
+// computed by a CF formula or read from source variables. SlabReader evaluates it.
+struct VerticalGeometrySource {
+  enum class Quantity { kHeight, kPressure };
+  Quantity quantity = Quantity::kHeight;
+  // The CF standard_name of the formula (atmosphere_hybrid_height_coordinate,
+  // atmosphere_hybrid_sigma_pressure_coordinate, atmosphere_sigma_coordinate), or
+  // "variable" when read from source variables.
+  std::string formula;
+  std::map<std::string, std::string> terms;  // formula term -> source variable
+  std::vector<std::string> sources;          // source variables read, in order
+  bool varies_in_time = false;               // differs between time steps
+  friend bool operator==(const VerticalGeometrySource&, const VerticalGeometrySource&) = default;
+};
+
+// The model's own surface height (HSURF, HGT, topography_c, orog): 2-D, metres above
+// mean sea level, time-invariant.
+struct SurfaceSource {
+  std::string variable;
+  friend bool operator==(const SurfaceSource&, const SurfaceSource&) = default;
 };
 
 struct SourceFile {
@@ -76,6 +108,10 @@ struct InputCatalog {
   std::vector<VariableMeta> variables;
   // locations[v][t]: where variable v at time step t lives.
   std::vector<std::vector<VariableLocation>> locations;
+  // Terrain-following levels: how each sample's height or pressure is found (none: the z
+  // axis places every sample).
+  std::optional<VerticalGeometrySource> vertical_geometry;
+  std::optional<SurfaceSource> surface;
 
   Dims3 dims() const { return Dims3{x.size(), y.size(), z.size()}; }
   std::size_t variable_index(std::string_view name) const;  // throws kNotFound

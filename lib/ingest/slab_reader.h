@@ -35,6 +35,17 @@ class SlabReader {
   void read(std::size_t variable, std::size_t step, std::size_t z0, std::size_t z1,
             std::span<double> out);
 
+  // The catalog's vertical geometry at `step` for levels [z0, z1): height above mean sea
+  // level in m, or pressure in Pa, per sample, x fastest (the order of read()). Half-
+  // level sources are averaged onto the variables' levels, staggered ones destaggered.
+  // \error kInvalidInput naming the source variable, the sample (i, j, k) and the step
+  // for a missing or non-finite value; kInvalidArgument without a vertical geometry.
+  void read_vertical_geometry(std::size_t step, std::size_t z0, std::size_t z1,
+                              std::span<double> out);
+  // The catalog's surface height, y.size() * x.size() values in m, x fastest.
+  // \error as read_vertical_geometry; kInvalidArgument without a surface.
+  void read_surface(std::span<double> out);
+
   // Direct reads go in pieces of at most this many bytes: the per-thread aligned buffer
   // stays small, and each piece is converted while it is still in cache.
   static constexpr std::size_t kDirectPieceBytes = std::size_t{16} << 20;
