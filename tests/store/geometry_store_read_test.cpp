@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "convert/geometry_writer.h"
 #include "store/brick_cache.h"
 #include "store/store.h"
 #include "support/expect_error.h"
@@ -198,6 +199,32 @@ TEST(GeometryStoreReadTest, GeometryBricksOfAnotherStoreAreRefusedByName) {
   expect_error([&] { store->geometry_index(0); }, ErrorCode::kCorrupt,
                {"geometry.bricks", "header store_id"});
   EXPECT_NO_THROW(store->read_brick(0, 0, 0));
+}
+
+TEST(GeometryStoreReadTest, GeometryBrickWithMissingSamplesFailsForThatNodeOnly) {
+  const testing::TempDir dir;
+  const format::Manifest m = testing::write_geometry_store(dir / "store");
+  const OctreeLayout layout(m.dims(), m.brick);
+  // Constant bricks of every sample, but node 0 counts one valid sample too few and node 1
+  // is empty.
+  std::vector<build::EncodedBrick> bricks(layout.node_count());
+  for (NodeId n = 0; n < bricks.size(); ++n) {
+    auto& e = bricks[n].entry;
+    e.kind = format::BrickKind::kConstant;
+    e.min = e.max = e.constant = 500;
+    e.valid_count = layout.owned_fine_box(layout.key(n)).count() - (n == 0 ? 1 : 0);
+  }
+  bricks[1].entry = format::IndexEntry{};
+  bricks[1].entry.kind = format::BrickKind::kEmpty;
+  bricks[1].entry.min = bricks[1].entry.max = NAN;
+  std::filesystem::remove(dir / "store" / "geometry.bricks");
+  build::write_geometry_bricks(dir / "store", m.store_id, std::move(bricks));
+  const auto store = Store::open(dir / "store");
+  expect_error([&] { store->read_geometry_brick(0, 0); }, ErrorCode::kCorrupt,
+               {"geometry.bricks", "geometry field node 0 ", "must have every sample"});
+  expect_error([&] { store->read_geometry_brick(1, 1); }, ErrorCode::kCorrupt,
+               {"geometry.bricks", "geometry field node 1 ", "empty"});
+  EXPECT_EQ(store->read_geometry_brick(0, 2).sample(0), 500);
 }
 
 }  // namespace
