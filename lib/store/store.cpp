@@ -23,7 +23,7 @@ struct Store::StepState {
   std::unique_ptr<DirectReadFile> direct;  // chunk reads, when opened with direct_reads
   format::StepFooter footer;
   std::vector<format::SectionEntry> sections;
-  std::vector<std::unique_ptr<const std::vector<IndexEntry>>> indexes;  // per variable, lazy
+  std::vector<std::unique_ptr<const std::vector<IndexEntry>>> indexes;  // per section, lazy
 };
 
 std::shared_ptr<const Store> Store::open(const std::filesystem::path& dir,
@@ -81,9 +81,10 @@ std::filesystem::path Store::geometry_bricks_path() const {
 
 std::string Store::describe_node(std::uint32_t variable, NodeId node) const {
   const NodeKey k = octree_.key(node);
-  const std::string what = variable == variable_count() && has_geometry_field()
-                               ? std::string("geometry field")
-                               : fmt::format("variable '{}'", manifest_.variables.at(variable).name);
+  const bool field = variable == variable_count() && has_geometry_field();
+  const std::string what =
+      field ? std::string("geometry field")
+            : fmt::format("variable '{}'", manifest_.variables.at(variable).name);
   return fmt::format("{} node {} (level {}, index {},{},{})", what, node, k.level, k.index[0],
                      k.index[1], k.index[2]);
 }

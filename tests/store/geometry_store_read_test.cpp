@@ -30,8 +30,9 @@ void expect_brick_samples(const OctreeLayout& layout, const Brick& b, const At& 
   for (std::size_t z = b.box.lo[2]; z <= b.box.hi[2]; ++z) {
     for (std::size_t y = b.box.lo[1]; y <= b.box.hi[1]; ++y) {
       for (std::size_t x = b.box.lo[0]; x <= b.box.hi[0]; ++x, ++i) {
-        const double want = at(layout.fine_index(key.level, 0, x), layout.fine_index(key.level, 1, y),
-                               layout.fine_index(key.level, 2, z));
+        const double want =
+            at(layout.fine_index(key.level, 0, x), layout.fine_index(key.level, 1, y),
+               layout.fine_index(key.level, 2, z));
         ASSERT_EQ(b.sample(i), want) << "node " << b.node << " sample " << i;
       }
     }
@@ -182,7 +183,8 @@ TEST(GeometryStoreReadTest, GeometryFilesTheGeometryDoesNotCallForAreRefused) {
   testing::write_geometry_store(dir / "store", varying);
   const testing::TempDir other;
   testing::write_geometry_store(other / "store");
-  std::filesystem::copy_file(other / "store" / "geometry.bricks", dir / "store" / "geometry.bricks");
+  std::filesystem::copy_file(other / "store" / "geometry.bricks",
+                             dir / "store" / "geometry.bricks");
   expect_error([&] { Store::open(dir / "store"); }, ErrorCode::kCorrupt,
                {"geometry.bricks", "no time-invariant vertical field"});
 }

@@ -60,8 +60,9 @@ TEST(GeometryStoreVerifyTest, IntactStoresVerifyWithEveryGeometryBrick) {
     EXPECT_TRUE(report.ok()) << problems_of(report);
     const std::uint64_t nodes = Store::open(dir / "store")->octree().node_count();
     // The variable's bricks of every step, then the field's once or at every step.
-    EXPECT_EQ(report.bricks_checked,
-              spec.steps * nodes + (field == GeometryField::kInvariant ? nodes : spec.steps * nodes));
+    const std::uint64_t field_bricks =
+        field == GeometryField::kInvariant ? nodes : spec.steps * nodes;
+    EXPECT_EQ(report.bricks_checked, spec.steps * nodes + field_bricks);
   }
 }
 
@@ -122,7 +123,8 @@ TEST(GeometryStoreVerifyTest, FlippedByteInAFieldChunkOfAStepFileIsNamed) {
   const auto path = dir / "store" / format::step_file_name(0);
   flip_byte(path, e.chunk_offset + e.chunk_size / 2);
   const auto report = verify_store(dir / "store");
-  EXPECT_TRUE(has_problem(report, {path.string(), "step 0", fmt::format("geometry field node {} ", victim)}))
+  EXPECT_TRUE(has_problem(
+      report, {path.string(), "step 0", fmt::format("geometry field node {} ", victim)}))
       << problems_of(report);
 }
 

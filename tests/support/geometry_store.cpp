@@ -30,8 +30,9 @@ std::vector<build::EncodedBrick> encode_all_nodes(const OctreeLayout& layout, co
     for (std::size_t z = 0; z < n[2]; ++z) {
       for (std::size_t y = 0; y < n[1]; ++y) {
         for (std::size_t x = 0; x < n[0]; ++x) {
-          level[(z * n[1] + y) * n[0] + x] = static_cast<T>(
-              at(layout.fine_index(l, 0, x), layout.fine_index(l, 1, y), layout.fine_index(l, 2, z)));
+          level[(z * n[1] + y) * n[0] + x] =
+              static_cast<T>(at(layout.fine_index(l, 0, x), layout.fine_index(l, 1, y),
+                                layout.fine_index(l, 2, z)));
         }
       }
     }
@@ -105,7 +106,8 @@ format::Manifest geometry_manifest(const GeometryStoreSpec& spec) {
     g.horizontal.kind = format::HorizontalGeometry::Kind::kCurvilinear;
     g.horizontal.lon_variable = "XLONG";
     g.horizontal.lat_variable = "XLAT";
-    g.horizontal.coordinates_checksum = format::coordinates_checksum(geometry_store_coordinates(spec));
+    g.horizontal.coordinates_checksum =
+        format::coordinates_checksum(geometry_store_coordinates(spec));
   }
   if (spec.field != GeometryField::kNone) {
     g.vertical.kind = format::VerticalGeometry::Kind::kField;
@@ -160,7 +162,8 @@ format::Manifest write_geometry_store(const std::filesystem::path& dir,
   const OctreeLayout layout(m.dims(), m.brick);
   const auto node_count = static_cast<std::uint32_t>(layout.node_count());
   if (format::has_geometry_file(m)) {
-    build::write_geometry_file(dir, format::GeometryFile{m.store_id, geometry_store_coordinates(spec)});
+    build::write_geometry_file(dir,
+                               format::GeometryFile{m.store_id, geometry_store_coordinates(spec)});
   }
   const auto height_at = [&](std::size_t step) -> Sample {
     return [&spec, step](std::size_t x, std::size_t y, std::size_t z) {
@@ -168,8 +171,9 @@ format::Manifest write_geometry_store(const std::filesystem::path& dir,
     };
   };
   if (format::has_geometry_bricks(m)) {
-    build::write_geometry_bricks(dir, m.store_id,
-                                 encode_all_nodes<double>(layout, height_at(0), m.geometry->vertical.codec));
+    build::write_geometry_bricks(
+        dir, m.store_id,
+        encode_all_nodes<double>(layout, height_at(0), m.geometry->vertical.codec));
   }
   const std::uint32_t sections = format::step_section_count(m);
   for (std::uint32_t s = 0; s < spec.steps; ++s) {
