@@ -117,7 +117,7 @@ VerifyReport verify_store(const std::filesystem::path& dir,
       };
     };
     bool damaged = false;
-    for (std::uint32_t v = 0; v < store->variable_count() && !damaged; ++v) {
+    for (std::uint32_t v = 0; v < store->variable_count(); ++v) {
       std::span<const format::IndexEntry> entries;
       try {
         entries = store->index(s, v);
