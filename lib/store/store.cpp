@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "store/store.h"
 
+#include <cmath>
+
 #include "core/checksum.h"
 #include "core/direct_read_file.h"
 #include "core/error.h"
@@ -21,7 +23,7 @@ struct Store::StepState {
   std::unique_ptr<DirectReadFile> direct;  // chunk reads, when opened with direct_reads
   format::StepFooter footer;
   std::vector<format::SectionEntry> sections;
-  std::vector<std::unique_ptr<const std::vector<IndexEntry>>> indexes;  // per variable, lazy
+  std::vector<std::unique_ptr<const std::vector<IndexEntry>>> indexes;  // per section, lazy
 };
 
 std::shared_ptr<const Store> Store::open(const std::filesystem::path& dir,
@@ -34,12 +36,18 @@ std::shared_ptr<const Store> Store::open(const std::filesystem::path& dir,
   format::Manifest manifest =
       format::decode_manifest(read_file_bytes(manifest_path), manifest_path.string());
   if (manifest.geometry) {
-    // Format 5 records where samples of a curvilinear or terrain-following grid lie; the
-    // readers and tools of this build would place them on the index lattice instead.
-    throw make_error(ErrorCode::kUnsupported,
-                     "{}: the store records a grid geometry (format version 5); this build "
-                     "cannot place its samples yet, so it does not open it",
-                     dir.string());
+    // A GEOMETRY or geometry.bricks that the geometry does not call for (a missing one is
+    // reported when it is read, naming the file).
+    const auto stray = [&](std::string_view name, bool expected, std::string_view needs) {
+      if (!expected && std::filesystem::exists(dir / name)) {
+        throw make_error(ErrorCode::kCorrupt, "{}: present, but the store's geometry has no {}",
+                         (dir / name).string(), needs);
+      }
+    };
+    stray(format::kGeometryFileName, format::has_geometry_file(manifest),
+          "curvilinear coordinates and no surface");
+    stray(format::kGeometryBricksFileName, format::has_geometry_bricks(manifest),
+          "time-invariant vertical field");
   }
   if (!manifest.complete && !options.allow_incomplete) {
     throw make_error(ErrorCode::kInvalidArgument,
@@ -56,6 +64,7 @@ Store::Store(std::filesystem::path dir, format::Manifest manifest)
     : dir_(std::move(dir)), manifest_(std::move(manifest)), octree_(manifest_.dims(), manifest_.brick) {
   steps_.reserve(step_count());
   for (std::size_t i = 0; i < step_count(); ++i) steps_.push_back(std::make_unique<StepState>());
+  geometry_bricks_ = std::make_unique<StepState>();
 }
 
 Store::~Store() = default;
@@ -64,22 +73,35 @@ std::filesystem::path Store::step_path(std::uint32_t step) const {
   return dir_ / format::step_file_name(step);
 }
 
+std::filesystem::path Store::geometry_path() const { return dir_ / format::kGeometryFileName; }
+
+std::filesystem::path Store::geometry_bricks_path() const {
+  return dir_ / format::kGeometryBricksFileName;
+}
+
 std::string Store::describe_node(std::uint32_t variable, NodeId node) const {
   const NodeKey k = octree_.key(node);
-  return fmt::format("variable '{}' node {} (level {}, index {},{},{})",
-                     manifest_.variables.at(variable).name, node, k.level, k.index[0], k.index[1],
-                     k.index[2]);
+  const bool field = variable == variable_count() && has_geometry_field();
+  const std::string what =
+      field ? std::string("geometry field")
+            : fmt::format("variable '{}'", manifest_.variables.at(variable).name);
+  return fmt::format("{} node {} (level {}, index {},{},{})", what, node, k.level, k.index[0],
+                     k.index[1], k.index[2]);
 }
 
 bool Store::has_step(std::uint32_t step) const {
   return step < step_count() && std::filesystem::exists(step_path(step));
 }
 
-void Store::check_step_and_variable(std::uint32_t step, std::uint32_t variable) const {
+void Store::check_step(std::uint32_t step) const {
   if (step >= step_count()) {
     throw make_error(ErrorCode::kNotFound, "{}: time step {} does not exist (the store has {})",
                      dir_.string(), step, step_count());
   }
+}
+
+void Store::check_step_and_variable(std::uint32_t step, std::uint32_t variable) const {
+  check_step(step);
   if (variable >= variable_count()) {
     throw make_error(ErrorCode::kNotFound, "{}: variable index {} does not exist (the store has {})",
                      dir_.string(), variable, variable_count());
@@ -91,21 +113,46 @@ Store::StepState& Store::step_state(std::uint32_t step) const {
   std::lock_guard lock(s.mutex);
   if (s.opened) return s;
   const auto path = step_path(step);
-  const std::string what = path.string();
   if (!std::filesystem::exists(path)) {
     throw make_error(ErrorCode::kNotFound, "{}: time step {} not converted ({} is missing)",
                      dir_.string(), step, format::step_file_name(step));
   }
+  open_step_file(s, path, step, format::step_section_count(manifest_));
+  return s;
+}
+
+Store::StepState& Store::geometry_bricks_state() const {
+  StepState& s = *geometry_bricks_;
+  std::lock_guard lock(s.mutex);
+  if (s.opened) return s;
+  const auto path = geometry_bricks_path();
+  if (!std::filesystem::exists(path)) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: missing; the store's vertical geometry field does not vary in time "
+                     "and is stored there",
+                     path.string());
+  }
+  open_step_file(s, path, format::kGeometryStep, 1);
+  return s;
+}
+
+void Store::open_step_file(StepState& s, const std::filesystem::path& path, std::uint32_t step,
+                           std::uint32_t sections) const {
+  const std::string what = path.string();
+  // Only time steps are recorded in the manifest (not geometry.bricks).
+  const format::StepRecord* record =
+      step != format::kGeometryStep && manifest_.complete && step < manifest_.steps.size()
+          ? &manifest_.steps[step]
+          : nullptr;
   ReadOnlyFile file(path);
   constexpr std::uint64_t kFixed = format::kStepHeaderSize + format::kStepFooterSize;
   if (file.size() < kFixed) {
     throw make_error(ErrorCode::kTruncated, "{}: file is {} bytes, shorter than header and footer",
                      what, file.size());
   }
-  if (manifest_.complete && step < manifest_.steps.size() &&
-      manifest_.steps[step].size != file.size()) {
+  if (record && record->size != file.size()) {
     throw make_error(ErrorCode::kCorrupt, "{}: file is {} bytes but the manifest recorded {}", what,
-                     file.size(), manifest_.steps[step].size);
+                     file.size(), record->size);
   }
   std::vector<std::byte> header(format::kStepHeaderSize), footer_bytes(format::kStepFooterSize);
   file.read_at(0, header);
@@ -122,8 +169,8 @@ Store::StepState& Store::step_state(std::uint32_t step) const {
   expect(f.store_id, manifest_.store_id, "footer store_id");
   expect(h.step, step, "header step");
   expect(f.step, step, "footer step");
-  expect(h.variable_count, variable_count(), "header variable_count");
-  expect(f.variable_count, variable_count(), "footer variable_count");
+  expect(h.variable_count, sections, "header variable_count");
+  expect(f.variable_count, sections, "footer variable_count");
   expect(h.node_count, octree_.node_count(), "header node_count");
   expect(f.node_count, octree_.node_count(), "footer node_count");
   const std::uint64_t table_size = std::uint64_t{f.variable_count} * format::kSectionEntrySize;
@@ -139,8 +186,7 @@ Store::StepState& Store::step_state(std::uint32_t step) const {
   s.sections = format::decode_section_table(table, f.variable_count, f.node_count,
                                             f.section_table_checksum, format::kStepHeaderSize,
                                             f.section_table_offset, what);
-  if (manifest_.complete && step < manifest_.steps.size() &&
-      manifest_.steps[step].footer_checksum != checksum64(std::span(footer_bytes).first(48))) {
+  if (record && record->footer_checksum != checksum64(std::span(footer_bytes).first(48))) {
     throw make_error(ErrorCode::kCorrupt, "{}: footer differs from the one the manifest recorded",
                      what);
   }
@@ -148,30 +194,33 @@ Store::StepState& Store::step_state(std::uint32_t step) const {
   s.footer = f;
   s.file = std::move(file);
   if (direct_reads_) s.direct = DirectReadFile::open(path);  // null: buffered after all
-  s.indexes.resize(variable_count());
+  s.indexes.resize(sections);
   s.opened = true;
-  return s;
 }
 
-std::span<const IndexEntry> Store::index(std::uint32_t step, std::uint32_t variable) const {
-  check_step_and_variable(step, variable);
-  StepState& s = step_state(step);
+std::span<const IndexEntry> Store::section_index(StepState& s, std::uint32_t section,
+                                                 std::string_view label) const {
   std::lock_guard lock(s.mutex);
-  auto& slot = s.indexes[variable];
+  auto& slot = s.indexes.at(section);
   if (!slot) {
-    const format::SectionEntry& section = s.sections[variable];
-    std::vector<std::byte> stored(section.stored_size);
-    s.file.read_at(section.offset, stored);
+    const format::SectionEntry& entry = s.sections[section];
+    std::vector<std::byte> stored(entry.stored_size);
+    s.file.read_at(entry.offset, stored);
     index_bytes_ += stored.size();
     // Chunks lie between the header and the first index section.
     std::uint64_t first_section = s.footer.section_table_offset;
     for (const auto& sec : s.sections) first_section = std::min(first_section, sec.offset);
     slot = std::make_unique<const std::vector<IndexEntry>>(format::decode_index_section(
-        stored, section, s.footer.node_count, format::kStepHeaderSize, first_section,
-        fmt::format("{}: variable '{}'", s.file.path().string(),
-                    manifest_.variables[variable].name)));
+        stored, entry, s.footer.node_count, format::kStepHeaderSize, first_section,
+        fmt::format("{}: {}", s.file.path().string(), label)));
   }
   return *slot;
+}
+
+std::span<const IndexEntry> Store::index(std::uint32_t step, std::uint32_t variable) const {
+  check_step_and_variable(step, variable);
+  return section_index(step_state(step), variable,
+                       fmt::format("variable '{}'", manifest_.variables[variable].name));
 }
 
 const IndexEntry& Store::node_entry(std::uint32_t step, std::uint32_t variable, NodeId node) const {
@@ -183,18 +232,18 @@ const IndexEntry& Store::node_entry(std::uint32_t step, std::uint32_t variable, 
   return entries[node];
 }
 
-Brick Store::read_brick(std::uint32_t step, std::uint32_t variable, NodeId node) const {
-  const IndexEntry& e = node_entry(step, variable, node);
+Brick Store::decode_brick(StepState& s, const IndexEntry& e, NodeId node, DType dtype,
+                          const format::CodecSpec& codec,
+                          const std::function<std::string()>& what) const {
   Brick b;
   b.node = node;
   b.box = octree_.level_box(octree_.key(node));
   for (int a = 0; a < 3; ++a) b.dims[a] = b.box.extent(a);
-  b.dtype = manifest_.variables[variable].dtype;
+  b.dtype = dtype;
   b.kind = e.kind;
   b.constant = e.constant;
   if (e.kind != BrickKind::kData) return b;
 
-  StepState& s = step_state(step);
   std::vector<std::byte> chunk(e.chunk_size);
   if (s.direct) {
     device_bytes_ += s.direct->read_at(e.chunk_offset, chunk);
@@ -203,21 +252,16 @@ Brick Store::read_brick(std::uint32_t step, std::uint32_t variable, NodeId node)
   }
   chunks_read_ += 1;
   chunk_bytes_ += chunk.size();
-  const auto what = [&] {
-    return fmt::format("{}: step {} {}", s.file.path().string(), step, describe_node(variable, node));
-  };
   const std::uint64_t sum = checksum64(chunk);
   if (sum != e.chunk_checksum) {
     throw make_error(ErrorCode::kCorrupt, "{}: chunk checksum mismatch (stored {:016x}, computed {:016x})",
                      what(), e.chunk_checksum, sum);
   }
   b.bytes.resize(b.sample_count() * dtype_size(b.dtype));
-  const format::CodecSpec& codec = manifest_.codec_of(variable);
   if (e.coding == format::ChunkCoding::kFpzip) {
     if (!codec.fpzip) {
       throw make_error(ErrorCode::kCorrupt,
-                       "{}: chunk is coded with fpzip, but the variable's codec does not allow it",
-                       what());
+                       "{}: chunk is coded with fpzip, but the codec does not allow it", what());
     }
     decompress_brick_fpzip(chunk, b.dtype, b.dims, b.bytes, what());
   } else {
@@ -226,10 +270,105 @@ Brick Store::read_brick(std::uint32_t step, std::uint32_t variable, NodeId node)
   return b;
 }
 
+Brick Store::read_brick(std::uint32_t step, std::uint32_t variable, NodeId node) const {
+  const IndexEntry& e = node_entry(step, variable, node);
+  StepState& s = step_state(step);
+  return decode_brick(s, e, node, manifest_.variables[variable].dtype, manifest_.codec_of(variable),
+                      [&] {
+                        return fmt::format("{}: step {} {}", s.file.path().string(), step,
+                                           describe_node(variable, node));
+                      });
+}
+
 std::shared_ptr<const Brick> Store::read_brick(std::uint32_t step, std::uint32_t variable,
                                                NodeId node, BrickCache& cache) const {
   const BrickKey key{this, step, variable, node};
   return cache.get_or_load(key, [&] { return read_brick(step, variable, node); });
+}
+
+bool Store::has_geometry_field() const {
+  return manifest_.geometry &&
+         manifest_.geometry->vertical.kind == format::VerticalGeometry::Kind::kField;
+}
+
+Store::StepState& Store::geometry_state(std::uint32_t step) const {
+  if (!has_geometry_field()) {
+    throw make_error(ErrorCode::kNotFound, "{}: the store has no vertical geometry field",
+                     dir_.string());
+  }
+  check_step(step);
+  return manifest_.geometry->vertical.varies_in_time ? step_state(step) : geometry_bricks_state();
+}
+
+std::span<const IndexEntry> Store::geometry_index(std::uint32_t step) const {
+  StepState& s = geometry_state(step);
+  const bool varies = manifest_.geometry->vertical.varies_in_time;
+  return section_index(s, varies ? static_cast<std::uint32_t>(variable_count()) : 0,
+                       "geometry field");
+}
+
+Brick Store::read_geometry_brick(std::uint32_t step, NodeId node) const {
+  const auto entries = geometry_index(step);
+  if (node >= entries.size()) {
+    throw make_error(ErrorCode::kNotFound, "{}: node {} does not exist (the octree has {} nodes)",
+                     dir_.string(), node, entries.size());
+  }
+  const IndexEntry& e = entries[node];
+  StepState& s = geometry_state(step);
+  const auto& field = manifest_.geometry->vertical;
+  const std::string what =
+      field.varies_in_time
+          ? fmt::format("{}: step {} {}", s.file.path().string(), step,
+                        describe_node(static_cast<std::uint32_t>(variable_count()), node))
+          : fmt::format("{}: {}", s.file.path().string(),
+                        describe_node(static_cast<std::uint32_t>(variable_count()), node));
+  // The field has no missing samples ("Geometry bricks").
+  const std::uint64_t owned = octree_.owned_fine_box(octree_.key(node)).count();
+  if (e.kind == BrickKind::kEmpty || e.valid_count != owned) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: a geometry brick must have every sample: it is {} with {} valid of the "
+                     "{} samples the node owns",
+                     what, e.kind == BrickKind::kEmpty ? "empty" : "stored", e.valid_count, owned);
+  }
+  Brick b = decode_brick(s, e, node, field.dtype, field.codec, [&] { return what; });
+  for (std::size_t i = 0; i < b.sample_count(); ++i) {
+    if (std::isnan(b.sample(i))) {
+      throw make_error(ErrorCode::kCorrupt, "{}: sample {} of a geometry brick is missing", what,
+                       i);
+    }
+  }
+  return b;
+}
+
+std::shared_ptr<const Brick> Store::read_geometry_brick(std::uint32_t step, NodeId node,
+                                                        BrickCache& cache) const {
+  const bool shared = has_geometry_field() && !manifest_.geometry->vertical.varies_in_time;
+  if (shared) check_step(step);
+  const BrickKey key{this, shared ? format::kGeometryStep : step,
+                     static_cast<std::uint32_t>(variable_count()), node};
+  return cache.get_or_load(key, [&] { return read_geometry_brick(step, node); });
+}
+
+std::shared_ptr<const format::HorizontalCoordinates> Store::horizontal_coordinates() const {
+  if (!format::has_geometry_file(manifest_)) return nullptr;
+  std::lock_guard lock(geometry_mutex_);
+  if (coordinates_) return coordinates_;
+  const auto path = geometry_path();
+  const std::string what = path.string();
+  if (!std::filesystem::exists(path)) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: missing; the store's geometry has {}, which this file holds", what,
+                     manifest_.geometry->horizontal.kind ==
+                             format::HorizontalGeometry::Kind::kCurvilinear
+                         ? "curvilinear coordinates"
+                         : "a surface height");
+  }
+  const std::vector<std::byte> bytes = read_file_bytes(path);
+  index_bytes_ += bytes.size();
+  format::GeometryFile file = format::decode_geometry_file(bytes, what);
+  format::check_geometry_file_matches(file, manifest_, what);
+  coordinates_ = std::make_shared<const format::HorizontalCoordinates>(std::move(file.coordinates));
+  return coordinates_;
 }
 
 StoreReadCounters Store::counters() const {

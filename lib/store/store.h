@@ -2,18 +2,22 @@
 // Read access to a brick store (formats/store.md). Opening reads only the manifest; a
 // step file's header, footer and section table are read on first use of that step, a
 // variable's index section on first use of that variable, and a brick with exactly one
-// positioned read of its chunk. All methods are thread-safe.
+// positioned read of its chunk. A version-5 store's geometry is read the same way: the
+// GEOMETRY file on first use of the horizontal coordinates, geometry.bricks (or a step
+// file's last section) on first use of the vertical field. All methods are thread-safe.
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "format/geometry_file_format.h"
 #include "format/manifest.h"
 #include "format/step_file_format.h"
 #include "octree/octree_layout.h"
@@ -68,10 +72,37 @@ class Store {
   std::shared_ptr<const Brick> read_brick(std::uint32_t step, std::uint32_t variable, NodeId node,
                                           BrickCache& cache) const;
 
+  // The vertical geometry field (formats/store.md, "Geometry bricks"): a height or
+  // pressure for every sample, stored like a variable. Whether the store has one:
+  bool has_geometry_field() const;
+  // Its statistics of every node at a step: from geometry.bricks when it does not vary in
+  // time (the same for every step), else from the step file's section V (V =
+  // variable_count()). Throws kNotFound without a field or for a step outside the store,
+  // kCorrupt naming geometry.bricks when it is missing or damaged.
+  std::span<const format::IndexEntry> geometry_index(std::uint32_t step) const;
+  // One brick of the field, decoded with the field's codec and dtype. A brick that is
+  // empty or holds fewer valid samples than the node owns throws kCorrupt naming the
+  // file and node; other bricks stay readable.
+  Brick read_geometry_brick(std::uint32_t step, NodeId node) const;
+  // The same through a shared cache, keyed as variable variable_count() and, for a field
+  // that does not vary in time, step format::kGeometryStep, so every step shares it.
+  std::shared_ptr<const Brick> read_geometry_brick(std::uint32_t step, NodeId node,
+                                                   BrickCache& cache) const;
+  // The level-0 2-D longitude, latitude and surface height from the GEOMETRY file, read,
+  // decoded and checked against the manifest once; nullptr when the store has no
+  // GEOMETRY (neither a curvilinear horizontal nor a surface). Throws kCorrupt,
+  // kTruncated or kNotFound naming GEOMETRY; a failed read is tried again next call.
+  std::shared_ptr<const format::HorizontalCoordinates> horizontal_coordinates() const;
+
   StoreReadCounters counters() const;
 
   // "STORE/steps/step-000003.bricks" etc., for messages and tools.
   std::filesystem::path step_path(std::uint32_t step) const;
+  // "STORE/GEOMETRY" and "STORE/geometry.bricks".
+  std::filesystem::path geometry_path() const;
+  std::filesystem::path geometry_bricks_path() const;
+  // "variable 'ta' node 3 (level 0, index 1,1,0)"; variable_count() names the geometry
+  // field: "geometry field node 3 (...)".
   std::string describe_node(std::uint32_t variable, NodeId node) const;
 
   ~Store();
@@ -80,12 +111,31 @@ class Store {
   struct StepState;
   Store(std::filesystem::path dir, format::Manifest manifest);
   StepState& step_state(std::uint32_t step) const;  // opened and validated
+  StepState& geometry_bricks_state() const;         // geometry.bricks, opened and validated
+  // Opens `path` into `s` (locked by the caller) and checks its header and footer
+  // against the manifest: `step` and `sections` sections.
+  void open_step_file(StepState& s, const std::filesystem::path& path, std::uint32_t step,
+                      std::uint32_t sections) const;
+  // Index section `section` of an opened step file, loaded once; `label` names it.
+  std::span<const format::IndexEntry> section_index(StepState& s, std::uint32_t section,
+                                                    std::string_view label) const;
+  // The (step file, entry) of a geometry brick.
+  StepState& geometry_state(std::uint32_t step) const;
+  // Reads and decodes one data or constant brick of an index entry.
+  // `what` names the file and node in errors.
+  Brick decode_brick(StepState& s, const format::IndexEntry& e, NodeId node, DType dtype,
+                     const format::CodecSpec& codec,
+                     const std::function<std::string()>& what) const;
   void check_step_and_variable(std::uint32_t step, std::uint32_t variable) const;
+  void check_step(std::uint32_t step) const;
 
   std::filesystem::path dir_;
   format::Manifest manifest_;
   OctreeLayout octree_;
   std::vector<std::unique_ptr<StepState>> steps_;
+  std::unique_ptr<StepState> geometry_bricks_;
+  mutable std::mutex geometry_mutex_;
+  mutable std::shared_ptr<const format::HorizontalCoordinates> coordinates_;
   bool direct_reads_ = false;
   mutable std::atomic<std::uint64_t> chunks_read_{0}, chunk_bytes_{0}, index_bytes_{0},
       device_bytes_{0};

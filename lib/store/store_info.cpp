@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "store/store_info.h"
 
+#include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <string>
@@ -85,6 +87,51 @@ void describe_placement(const format::Manifest& m, std::ostream& out) {
   }
 }
 
+// One line for the grid geometry: how x and y, then z are placed, the surface, and a
+// mirrored index-to-Earth orientation; empty for a store without a geometry.
+std::string geometry_summary(const format::Manifest& m) {
+  if (!m.geometry) return {};
+  const format::GridGeometry& g = *m.geometry;
+  std::vector<std::string> parts;
+  if (g.horizontal.kind == format::HorizontalGeometry::Kind::kCurvilinear) {
+    parts.push_back(fmt::format("curvilinear {} x {} from {}/{}", m.x.size(), m.y.size(),
+                                g.horizontal.lon_variable, g.horizontal.lat_variable));
+  }
+  const format::VerticalGeometry& v = g.vertical;
+  const std::string quantity(format::vertical_quantity_name(v.quantity));
+  if (v.kind == format::VerticalGeometry::Kind::kLevels) {
+    parts.push_back(fmt::format("{} on {} levels ({}) from {}", quantity, v.levels.size(),
+                                v.units, v.formula));
+  } else if (v.kind == format::VerticalGeometry::Kind::kField) {
+    std::vector<std::string> inputs;
+    if (v.formula == format::kGeometryFormulaVariable) {
+      inputs = v.sources;
+    } else {
+      for (const auto& [term, source] : v.terms) inputs.push_back(term);
+    }
+    parts.push_back(fmt::format(
+        "{}s ({}) from {}{}, {}, {}", quantity, v.units,
+        v.formula == format::kGeometryFormulaVariable ? std::string("variables") : v.formula,
+        inputs.empty() ? std::string()
+                       : fmt::format(" ({})", fmt::join(inputs, ", ")),
+        v.varies_in_time ? "time-varying" : "time-invariant", dtype_name(v.dtype)));
+  }
+  if (g.surface) parts.push_back(fmt::format("surface from {}", g.surface->variable));
+  if (g.orientation < 0) parts.push_back("mirrored (orientation -1)");
+  return fmt::format("{}", fmt::join(parts, "; "));
+}
+
+// The geometry's files present in the store and their sizes.
+nlohmann::json geometry_files(const Store& store) {
+  nlohmann::json files = nlohmann::json::object();
+  for (const auto& path : {store.geometry_path(), store.geometry_bricks_path()}) {
+    if (std::filesystem::exists(path)) {
+      files[path.filename().string()] = std::filesystem::file_size(path);
+    }
+  }
+  return files;
+}
+
 }  // namespace
 
 void describe_store(const Store& store, std::ostream& out) {
@@ -106,6 +153,7 @@ void describe_store(const Store& store, std::ostream& out) {
   }
   axes.print(out, "  ");
   describe_placement(m, out);
+  if (m.geometry) fmt::print(out, "geometry   {}\n", geometry_summary(m));
   describe_time(store, out);
   fmt::print(out, "variables  {}\n", m.variables.size());
   TextColumns variables;
@@ -171,6 +219,12 @@ nlohmann::json store_info_json(const Store& store) {
     j["time"]["date_error"] = dates.why_not();
   }
   j["step_files_bytes"] = step_files_bytes(store);
+  // Beside the manifest's geometry object: the same one-line summary as the text, and the
+  // geometry's files.
+  if (store.manifest().geometry) {
+    j["geometry_info"] = {{"summary", geometry_summary(store.manifest())},
+                          {"files", geometry_files(store)}};
+  }
   j["octree"]["sample_overhead_percent"] = store.octree().overhead_fraction() * 100;
   return j;
 }

@@ -26,6 +26,54 @@ std::string check_level0_stats(const Brick& b, const format::IndexEntry& e) {
   return {};
 }
 
+// Every brick of one index (a variable's or the geometry field's) decodes, and level-0
+// statistics match the data. `read` reads node n; `describe` names its file and node.
+template <typename ReadBrick, typename Describe>
+void check_bricks(std::span<const format::IndexEntry> entries, NodeId level0_end,
+                  const ReadBrick& read, const Describe& describe, VerifyReport& report) {
+  for (NodeId n = 0; n < entries.size(); ++n) {
+    try {
+      const Brick b = read(n);
+      ++report.bricks_checked;
+      report.chunk_bytes_checked += entries[n].chunk_size;
+      if (n < level0_end) {
+        const std::string why = check_level0_stats(b, entries[n]);
+        if (!why.empty()) report.problems.push_back(fmt::format("{}: {}", describe(n), why));
+      }
+    } catch (const Error& e) {
+      report.problems.push_back(e.what());
+    }
+  }
+}
+
+// The GEOMETRY file and, for a time-invariant vertical field, geometry.bricks.
+void check_static_geometry(const Store& store, NodeId level0_end, VerifyReport& report) {
+  try {
+    store.horizontal_coordinates();
+  } catch (const Error& e) {
+    report.problems.push_back(e.what());
+  }
+  if (!store.has_geometry_field() || store.manifest().geometry->vertical.varies_in_time ||
+      store.step_count() == 0) {
+    return;
+  }
+  std::span<const format::IndexEntry> entries;
+  try {
+    entries = store.geometry_index(0);
+  } catch (const Error& e) {
+    report.problems.push_back(e.what());
+    return;
+  }
+  const auto field = static_cast<std::uint32_t>(store.variable_count());
+  check_bricks(
+      entries, level0_end, [&](NodeId n) { return store.read_geometry_brick(0, n); },
+      [&](NodeId n) {
+        return fmt::format("{}: {}", store.geometry_bricks_path().string(),
+                           store.describe_node(field, n));
+      },
+      report);
+}
+
 }  // namespace
 
 nlohmann::json VerifyReport::to_json() const {
@@ -52,6 +100,9 @@ VerifyReport verify_store(const std::filesystem::path& dir,
   }
   const OctreeLayout& layout = store->octree();
   const NodeId level0_end = static_cast<NodeId>(layout.level(0).node_count());
+  check_static_geometry(*store, level0_end, report);
+  const bool field_per_step =
+      store->has_geometry_field() && store->manifest().geometry->vertical.varies_in_time;
   for (std::uint32_t s = 0; s < store->step_count(); ++s) {
     if (progress) progress(s, store->step_count());
     if (!store->has_step(s)) {
@@ -60,31 +111,36 @@ VerifyReport verify_store(const std::filesystem::path& dir,
       continue;
     }
     ++report.steps_checked;
+    const auto describe = [&](std::uint32_t v) {
+      return [&store, s, v](NodeId n) {
+        return fmt::format("{}: {}", store->step_path(s).string(), store->describe_node(v, n));
+      };
+    };
+    bool damaged = false;
     for (std::uint32_t v = 0; v < store->variable_count(); ++v) {
       std::span<const format::IndexEntry> entries;
       try {
         entries = store->index(s, v);
       } catch (const Error& e) {
         report.problems.push_back(e.what());
-        break;  // the step's structure is damaged; its other variables would repeat it
+        damaged = true;  // the step's structure is damaged; its other sections would repeat it
+        break;
       }
-      for (NodeId n = 0; n < entries.size(); ++n) {
-        try {
-          const Brick b = store->read_brick(s, v, n);
-          ++report.bricks_checked;
-          report.chunk_bytes_checked += entries[n].chunk_size;
-          if (n < level0_end) {
-            const std::string why = check_level0_stats(b, entries[n]);
-            if (!why.empty()) {
-              report.problems.push_back(fmt::format("{}: {}: {}", store->step_path(s).string(),
-                                                    store->describe_node(v, n), why));
-            }
-          }
-        } catch (const Error& e) {
-          report.problems.push_back(e.what());
-        }
-      }
+      check_bricks(
+          entries, level0_end, [&](NodeId n) { return store->read_brick(s, v, n); }, describe(v),
+          report);
     }
+    if (!field_per_step || damaged) continue;
+    std::span<const format::IndexEntry> entries;
+    try {
+      entries = store->geometry_index(s);
+    } catch (const Error& e) {
+      report.problems.push_back(e.what());
+      continue;
+    }
+    check_bricks(
+        entries, level0_end, [&](NodeId n) { return store->read_geometry_brick(s, n); },
+        describe(static_cast<std::uint32_t>(store->variable_count())), report);
   }
   if (progress) progress(store->step_count(), store->step_count());
   return report;

@@ -14,6 +14,7 @@
 #include "core/text_columns.h"
 #include "store/store.h"
 #include "store/store_info.h"
+#include "support/geometry_store.h"
 #include "support/netcdf_fixture.h"
 #include "support/temp_dir.h"
 
@@ -168,6 +169,46 @@ TEST(StoreInfoTest, LongVariableNamesAndUnitsKeepAlignedSeparateColumns) {
   ASSERT_NE(long_row, rows.end()) << out.str();
   EXPECT_TRUE(long_row->starts_with("  " + long_name + "  float32  kg m-2 s-1 of something long  "))
       << *long_row;
+}
+
+TEST(StoreInfoTest, GridGeometryIsOneLineInTextAndJson) {
+  TempDir dir;
+  write_geometry_store(dir / "store");  // curvilinear, surface, time-invariant field
+  const auto store = Store::open(dir / "store");
+  const std::string line =
+      "curvilinear 5 x 4 from XLONG/XLAT; heights (m) from atmosphere_hybrid_height_coordinate "
+      "(a, b, orog), time-invariant, float64; surface from topography_c";
+  std::ostringstream out;
+  describe_store(*store, out);
+  EXPECT_NE(out.str().find("\ngeometry   " + line + "\n"), std::string::npos) << out.str();
+  const auto j = store_info_json(*store);
+  EXPECT_EQ(j["geometry_info"]["summary"], line);
+  EXPECT_EQ(j["geometry_info"]["files"]["GEOMETRY"],
+            std::filesystem::file_size(dir / "store" / "GEOMETRY"));
+  EXPECT_EQ(j["geometry_info"]["files"]["geometry.bricks"],
+            std::filesystem::file_size(dir / "store" / "geometry.bricks"));
+  EXPECT_EQ(j["geometry"]["vertical"]["kind"], "field");
+
+  GeometryStoreSpec varying;
+  varying.curvilinear = false;
+  varying.surface = false;
+  varying.field = GeometryField::kVarying;
+  write_geometry_store(dir / "varying", varying);
+  const auto j2 = store_info_json(*Store::open(dir / "varying"));
+  EXPECT_EQ(j2["geometry_info"]["summary"],
+            "heights (m) from atmosphere_hybrid_height_coordinate (a, b, orog), time-varying, "
+            "float64");
+  EXPECT_TRUE(j2["geometry_info"]["files"].empty());
+}
+
+TEST(StoreInfoTest, StoreWithoutGeometryHasNoGeometryLine) {
+  TempDir dir;
+  SimpleGrid g;
+  const auto store = make_store(dir, g, {{"t", "K"}});
+  std::ostringstream out;
+  describe_store(*store, out);
+  EXPECT_EQ(out.str().find("geometry"), std::string::npos) << out.str();
+  EXPECT_FALSE(store_info_json(*store).contains("geometry_info"));
 }
 
 }  // namespace
