@@ -4,8 +4,8 @@
 //                 [--model sample|icon|icon-cf|sigma-pressure] [--z-mc] [--json]
 // Writes the built-in sample: a deterministic synthetic CF-NetCDF-4 dataset (lib/synthetic)
 // that strielad-convert converts like model output, with optional flight tracks and a DEM.
-#include <nlohmann/json.hpp>
 #include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -63,7 +63,6 @@ int run_sample(const SampleOptions& opt) {
   if (opt.z_mc && model != synthetic::SampleModel::kIcon) {
     throw make_error(ErrorCode::kInvalidArgument, "--z-mc: only with --model icon");
   }
-  if (model_like) spec.variables = synthetic::all_sample_variable_names();
   synthetic::validate_sample_spec(spec);  // report bad arguments before touching the disk
 
   const std::size_t variable_count =
