@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // strielad-sample -o DIR [--dims XxYxZ] [--steps N] [--seed S] [--vars a,b,...]
 //                 [--single-file] [--step-seconds S] [--deflate L] [--tracks N] [--terrain N]
-//                 [--json]
+//                 [--model sample|icon|icon-cf|sigma-pressure] [--z-mc] [--json]
 // Writes the built-in sample: a deterministic synthetic CF-NetCDF-4 dataset (lib/synthetic)
 // that strielad-convert converts like model output, with optional flight tracks and a DEM.
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
@@ -16,6 +17,8 @@
 
 #include "cli/progress_bar.h"
 #include "cli/tool_main.h"
+#include "core/error.h"
+#include "synthetic/model_like_files.h"
 #include "synthetic/sample_args.h"
 #include "synthetic/sample_dataset.h"
 #include "synthetic/sample_terrain.h"
@@ -36,6 +39,8 @@ struct SampleOptions {
   std::size_t tracks = 0;  // flight tracks written to sample_tracks.csv (0: none)
   std::size_t terrain = 0;  // samples per axis of sample_terrain.nc (0: none)
   bool json = false;
+  std::string model = "sample";  // synthetic::parse_sample_model
+  bool z_mc = false;             // --model icon: also z_mc
 };
 
 int run_sample(const SampleOptions& opt) {
@@ -47,19 +52,35 @@ int run_sample(const SampleOptions& opt) {
   spec.file_per_step = !opt.single_file;
   spec.step_seconds = opt.step_seconds;
   spec.deflate = opt.deflate;
+  const synthetic::SampleModel model = synthetic::parse_sample_model(opt.model);
+  const bool model_like = model != synthetic::SampleModel::kSample;
+  if (model_like && !opt.vars.empty()) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "--vars: --model {} writes its own variables ({})",
+                     synthetic::sample_model_name(model),
+                     fmt::join(synthetic::model_sample_variable_names(model), ","));
+  }
+  if (opt.z_mc && model != synthetic::SampleModel::kIcon) {
+    throw make_error(ErrorCode::kInvalidArgument, "--z-mc: only with --model icon");
+  }
   synthetic::validate_sample_spec(spec);  // report bad arguments before touching the disk
 
-  const std::uint64_t levels = static_cast<std::uint64_t>(spec.steps) *
-                               spec.variables.size() * spec.dims.z;
-  spdlog::info("sample: writing {} step(s) of {}x{}x{} ({} variables, seed {}) to {}",
-               spec.steps, spec.dims.x, spec.dims.y, spec.dims.z, spec.variables.size(),
-               spec.seed, opt.output);
+  const std::size_t variable_count =
+      model_like ? synthetic::model_sample_variable_names(model).size() : spec.variables.size();
+  const std::uint64_t levels = static_cast<std::uint64_t>(spec.steps) * variable_count *
+                               spec.dims.z;
+  spdlog::info("sample: writing {} step(s) of {}x{}x{} ({} variables, seed {}{}) to {}",
+               spec.steps, spec.dims.x, spec.dims.y, spec.dims.z, variable_count, spec.seed,
+               model_like ? fmt::format(", model {}", synthetic::sample_model_name(model)) : "",
+               opt.output);
   const auto start = std::chrono::steady_clock::now();
   synthetic::SampleResult result;
   {
     cli::ProgressBar bar("sample", levels, "levels");
-    result = synthetic::write_sample_dataset(spec, opt.output,
-                                          [&bar](std::uint64_t, std::uint64_t) { bar.advance(); });
+    const auto advance = [&bar](std::uint64_t, std::uint64_t) { bar.advance(); };
+    result = model_like ? synthetic::write_model_like_dataset(spec, model, opt.output,
+                                                              {.write_z_mc = opt.z_mc}, advance)
+                        : synthetic::write_sample_dataset(spec, opt.output, advance);
     bar.finish();
   }
   synthetic::SampleTracksResult tracks;
@@ -97,6 +118,7 @@ int run_sample(const SampleOptions& opt) {
         {"bytes", result.bytes},
         {"dims", {spec.dims.x, spec.dims.y, spec.dims.z}},
         {"steps", spec.steps},
+        {"model", synthetic::sample_model_name(model)},
         {"seconds", seconds},
         {"tracks", tracks.tracks},
         {"terrain_samples", terrain.width * terrain.height},
@@ -136,6 +158,13 @@ void register_sample(CLI::App& app, cli::Action& action) {
                   "Also write an N x N rotated-pole DEM under the domain to sample_terrain.nc "
                   "(strielad-view --terrain; 0: none)")
       ->capture_default_str();
+  sub->add_option("--model", opt->model,
+                  "What the files look like: sample (constant-height levels), icon (ICON-LEM "
+                  "remapped: z_ifc, topography_c), icon-cf (CF hybrid height), sigma-pressure "
+                  "(IFS/CAM hybrid sigma-pressure)")
+      ->capture_default_str();
+  sub->add_flag("--z-mc", opt->z_mc,
+                "With --model icon: also write z_mc, the full levels' heights");
   sub->add_flag("--json", opt->json, "Print a JSON summary on stdout");
   sub->callback([&action, opt] { action = [opt] { return run_sample(*opt); }; });
 }

@@ -22,6 +22,16 @@ double column_pressure(double z, double surface_pressure, double dt) {
   return p;
 }
 
+double column_height(double p, double surface_pressure, double dt) {
+  const double ts = kSurfaceTemperature + dt;
+  const double p11 = column_pressure(kTropopauseHeight, surface_pressure, dt);
+  if (p >= p11) {
+    return ts / kLapseRate * (1.0 - std::pow(p / surface_pressure, 1.0 / kHypsometricExponent));
+  }
+  const double t11 = ts - kLapseRate * kTropopauseHeight;
+  return kTropopauseHeight + kGasConstantDryAir * t11 / kGravity * std::log(p11 / p);
+}
+
 double jet_core_speed(double z) {
   const double d = (z - 10000.0) / 4000.0;
   return 30.0 * std::exp(-d * d);

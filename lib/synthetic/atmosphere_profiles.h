@@ -22,6 +22,10 @@ double standard_temperature(double z);
 // (dt constant with height) and whose surface pressure is `surface_pressure`.
 double column_pressure(double z, double surface_pressure, double dt);
 
+// The inverse of column_pressure: the height (m) where a column with `surface_pressure`
+// at z = 0 and offset dt has pressure p.
+double column_height(double p, double surface_pressure, double dt);
+
 // Zonal wind of the jet core (m/s) at height z: peak about 35 m/s near 10 km.
 double jet_core_speed(double z);
 // Zonal background wind away from the jet core (m/s).

@@ -77,4 +77,14 @@ std::vector<std::string> parse_variable_list(std::string_view text) {
   return names;
 }
 
+SampleModel parse_sample_model(std::string_view text) {
+  const std::string_view name = trim(text);
+  for (const SampleModel model : {SampleModel::kSample, SampleModel::kIcon, SampleModel::kIconCf,
+                                  SampleModel::kSigmaPressure}) {
+    if (name == sample_model_name(model)) return model;
+  }
+  throw make_error(ErrorCode::kInvalidArgument,
+                   "--model '{}': expected sample, icon, icon-cf or sigma-pressure", text);
+}
+
 }  // namespace strielad::synthetic

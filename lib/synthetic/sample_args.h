@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "grid/axis.h"
+#include "synthetic/model_like_files.h"
 
 namespace strielad::synthetic {
 
@@ -24,5 +25,9 @@ std::uint64_t parse_unsigned(std::string_view text, std::string_view what);
 // "clw,ta, ua" -> {"clw", "ta", "ua"}. Names are checked against the known variables;
 // throws kInvalidArgument on an empty list, an empty item or an unknown name.
 std::vector<std::string> parse_variable_list(std::string_view text);
+
+// "sample" (default), "icon", "icon-cf" or "sigma-pressure" (--model). Throws
+// kInvalidArgument quoting the text and listing the names.
+SampleModel parse_sample_model(std::string_view text);
 
 }  // namespace strielad::synthetic

@@ -19,20 +19,6 @@ namespace {
 // Levels in flight: one being written while the others are computed.
 constexpr std::size_t kLevelsInFlight = 3;
 
-void prepare_directory(const std::filesystem::path& dir) {
-  if (dir.empty()) throw make_error(ErrorCode::kInvalidArgument, "sample: empty output directory");
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) {
-    throw make_error(ErrorCode::kIo, "{}: cannot create output directory: {}", dir.string(),
-                     ec.message());
-  }
-  if (!std::filesystem::is_directory(dir, ec)) {
-    throw make_error(ErrorCode::kIo, "{}: output path exists and is not a directory",
-                     dir.string());
-  }
-}
-
 struct LevelJob {
   std::size_t variable_index = 0;
   std::size_t level = 0;
@@ -79,10 +65,24 @@ void write_step(const SampleAtmosphere& atmosphere, std::span<const SampleVariab
 
 }  // namespace
 
+void prepare_sample_directory(const std::filesystem::path& dir) {
+  if (dir.empty()) throw make_error(ErrorCode::kInvalidArgument, "sample: empty output directory");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) {
+    throw make_error(ErrorCode::kIo, "{}: cannot create output directory: {}", dir.string(),
+                     ec.message());
+  }
+  if (!std::filesystem::is_directory(dir, ec)) {
+    throw make_error(ErrorCode::kIo, "{}: output path exists and is not a directory",
+                     dir.string());
+  }
+}
+
 SampleResult write_sample_dataset(const SampleSpec& spec, const std::filesystem::path& out_dir,
                                   SampleProgress progress) {
   const std::vector<SampleVariable> variables = validate_sample_spec(spec);
-  prepare_directory(out_dir);
+  prepare_sample_directory(out_dir);
 
   const SampleGrid grid(spec.dims);
   const std::vector<std::string> names = sample_file_names(spec);

@@ -17,6 +17,10 @@ namespace strielad::synthetic {
 // caller's): done and total count (variable, step, level) triples.
 using SampleProgress = std::function<void(std::uint64_t done, std::uint64_t total)>;
 
+// Creates `dir` if missing. kInvalidArgument for an empty path; kIo when it cannot be
+// created or is not a directory.
+void prepare_sample_directory(const std::filesystem::path& dir);
+
 // Validates `spec` (kInvalidArgument), creates `out_dir` if missing (kIo when it cannot
 // be created or is not a directory) and writes sample_t000.nc ... (file_per_step) or
 // sample.nc, each atomically. Existing files of those names are replaced.

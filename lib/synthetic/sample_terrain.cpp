@@ -2,6 +2,7 @@
 #include "synthetic/sample_terrain.h"
 
 #include <netcdf.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -103,6 +104,12 @@ RotatedAxes rotated_axes(const geo::GridProjection& pole, std::size_t n) {
   return axes;
 }
 
+// The two noise fields of the land: detail and ridges (on rotated km).
+constexpr FbmParams kDetailNoise{.wavelength_km = 60, .wavelength_z_km = 1, .octaves = 6, .gain = 0.5};
+constexpr FbmParams kRidgeNoise{.wavelength_km = 25, .wavelength_z_km = 1, .octaves = 5,
+                                .gain = 0.55, .stretch_x = 2.5};
+constexpr std::uint64_t kDetailSalt = 0x7e77a1, kRidgeSalt = 0x7e77a2;
+
 // Height in m of the land at (lon, lat), from the detail noise `d` and the ridged noise `r`.
 double land_height(const geo::LonLat& g, double d, double r) {
   // Lowlands rising to the south, the Alpine foreland, the Alps.
@@ -134,11 +141,8 @@ TerrainFields terrain_fields(const SampleTerrainSpec& spec, const geo::GridProje
     x_km[i] = axes.rlon[i] * 111.195;
     y_km[i] = axes.rlat[i] * 111.195;
   }
-  const FbmPlane detail({.wavelength_km = 60, .wavelength_z_km = 1, .octaves = 6, .gain = 0.5},
-                        noise_key(spec.seed, 0x7e77a1), x_km, y_km, 0.0);
-  const FbmPlane ridges({.wavelength_km = 25, .wavelength_z_km = 1, .octaves = 5, .gain = 0.55,
-                         .stretch_x = 2.5},
-                        noise_key(spec.seed, 0x7e77a2), x_km, y_km, 0.0);
+  const FbmPlane detail(kDetailNoise, noise_key(spec.seed, kDetailSalt), x_km, y_km, 0.0);
+  const FbmPlane ridges(kRidgeNoise, noise_key(spec.seed, kRidgeSalt), x_km, y_km, 0.0);
   TerrainFields out{std::vector<float>(n * n), std::vector<float>(n * n),
                     std::vector<float>(n * n)};
   std::vector<float> row_detail(n), row_ridges(n);
@@ -247,6 +251,33 @@ SampleTerrainResult write_sample_terrain(const SampleTerrainSpec& spec,
   }
   result.bytes = std::filesystem::file_size(path, ec);
   return result;
+}
+
+std::vector<float> sample_terrain_heights(std::span<const double> lon, std::span<const double> lat,
+                                          std::uint64_t seed) {
+  const std::size_t nx = lon.size(), ny = lat.size();
+  const geo::GridProjection pole = pole_projection();
+  // The rotated position of every point (serial: a PROJ object serves one thread), then
+  // the noise of write_sample_terrain's planes at that position, one point at a time.
+  std::vector<double> x_km(nx * ny), y_km(nx * ny);
+  for (std::size_t j = 0; j < ny; ++j) {
+    for (std::size_t i = 0; i < nx; ++i) {
+      const auto r = pole.to_axis(lon[i], lat[j]);
+      x_km[j * nx + i] = r[0] * 111.195;
+      y_km[j * nx + i] = r[1] * 111.195;
+    }
+  }
+  const std::uint64_t detail_key = noise_key(seed, kDetailSalt), ridges_key = noise_key(seed, kRidgeSalt);
+  std::vector<float> out(nx * ny);
+  tbb::parallel_for(std::size_t{0}, nx * ny, [&](std::size_t p) {
+    const geo::LonLat g{lon[p % nx], lat[p / nx]};
+    if (is_sea(g.lon, g.lat)) return;  // out[p] stays 0
+    const std::span<const double> x(&x_km[p], 1), y(&y_km[p], 1);
+    const float d = FbmPlane(kDetailNoise, detail_key, x, y, 0.0).at(0, 0);
+    const double r = 1.0 - std::fabs(FbmPlane(kRidgeNoise, ridges_key, x, y, 0.0).at(0, 0));
+    out[p] = static_cast<float>(land_height(g, d, r));
+  });
+  return out;
 }
 
 }  // namespace strielad::synthetic

@@ -13,6 +13,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <span>
+#include <vector>
 
 namespace strielad::synthetic {
 
@@ -31,5 +33,11 @@ struct SampleTerrainResult {
 // kIo when the file cannot be written.
 SampleTerrainResult write_sample_terrain(const SampleTerrainSpec& spec,
                                          const std::filesystem::path& path);
+
+// The same surface at the points of a regular lon/lat grid (degrees; x fastest, lon.size()
+// * lat.size() values, metres above sea level) with the sea at 0 m instead of the fill
+// value: the model surface of the model-like samples (model_like_files.h).
+std::vector<float> sample_terrain_heights(std::span<const double> lon, std::span<const double> lat,
+                                          std::uint64_t seed);
 
 }  // namespace strielad::synthetic

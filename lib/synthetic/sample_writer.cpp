@@ -120,6 +120,8 @@ void put_global_attributes(int ncid, unsigned long long seed, const std::string&
            ctx + ": attribute seed");
 }
 
+}  // namespace
+
 void fsync_path(const std::filesystem::path& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0 || ::fsync(fd) != 0) {
@@ -129,8 +131,6 @@ void fsync_path(const std::filesystem::path& path) {
   }
   ::close(fd);
 }
-
-}  // namespace
 
 SampleFileWriter::SampleFileWriter(std::filesystem::path path, const SampleGrid& grid,
                                    SampleFileLayout layout)

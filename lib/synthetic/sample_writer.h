@@ -27,6 +27,9 @@ inline constexpr float kSampleFillValue = -9.0e33f;
 // sample lit by the true sun (strielad-view --sun time) should be seen in daylight.
 inline constexpr const char* kSampleTimeUnits = "seconds since 2013-04-26 12:00:00";
 
+// Flushes a written file to disk. Throws kIo naming the file.
+void fsync_path(const std::filesystem::path& path);
+
 class SampleFileWriter {
  public:
   // Creates the temporary file and defines dimensions, coordinates and variables; writes

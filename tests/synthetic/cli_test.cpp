@@ -87,6 +87,32 @@ TEST(SampleCliTest, BadArgumentsExitWithTheirStatus) {
                 .status,
             7);
   EXPECT_NE(run_sample("--dims 4x4x3").status, 0) << "-o is required";
+  EXPECT_EQ(run_sample(o.substr(1) + " --dims 4x4x3 --model wrf").status, 2);
+  EXPECT_EQ(run_sample(o.substr(1) + " --dims 4x4x3 --model icon --vars ta").status, 2);
+  EXPECT_EQ(run_sample(o.substr(1) + " --dims 4x4x3 --model icon-cf --z-mc").status, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "x"));
+}
+
+TEST(SampleCliTest, ModelFlagWritesModelLikeFiles) {
+  TempDir dir;
+  RunResult r = run_sample("-q -o " + dir.path().string() +
+                           " --dims 6x5x4 --steps 2 --model icon --z-mc --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  auto json = nlohmann::json::parse(r.out);
+  EXPECT_EQ(json.at("model"), "icon");
+  ASSERT_EQ(json.at("files").size(), 2u);
+  const NcFile icon(dir.path() / "icon_t001.nc");
+  EXPECT_EQ(icon.dim_length("height_2"), 5u);
+  EXPECT_TRUE(icon.has_var("z_ifc"));
+  EXPECT_TRUE(icon.has_var("z_mc"));
+
+  r = run_sample("-q -o " + dir.path().string() +
+                 " --dims 6x5x4 --steps 2 --single-file --model sigma-pressure");
+  ASSERT_EQ(r.status, 0);
+  const NcFile sigma(dir.path() / "sigma_pressure.nc");
+  EXPECT_EQ(sigma.dim_length("time"), 2u);
+  EXPECT_TRUE(sigma.has_var("ps"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "sample.nc"));
 }
 
 }  // namespace
