@@ -144,6 +144,9 @@ DimensionRole detect_dimension_role(const CoordinateAttributes& c, bool unlimite
 }
 
 AxisKind detect_vertical_kind(const CoordinateAttributes& c) {
+  // A parametric coordinate: its values are no heights or pressures, whatever its
+  // standard_name or units claim; the formula places the samples.
+  if (c.has_formula_terms) return AxisKind::kModelLevel;
   const std::string sn = lower_trimmed(c.standard_name);
   if (sn == "air_pressure") return AxisKind::kPressure;
   if (sn == "height" || sn == "altitude" || starts_with(sn, "height_above_")) {
@@ -154,7 +157,6 @@ AxisKind detect_vertical_kind(const CoordinateAttributes& c) {
        ends_with(sn, "_coordinate"))) {
     return AxisKind::kModelLevel;
   }
-  if (c.has_formula_terms) return AxisKind::kModelLevel;
   if (sn == "depth") return AxisKind::kOther;  // positive down, not a height
   if (is_pressure_units(c.units)) return AxisKind::kPressure;
   if (is_length_units(c.units)) {

@@ -27,9 +27,10 @@ struct CoordinateAttributes {
 // caller then falls back to the COARDS position.
 DimensionRole detect_dimension_role(const CoordinateAttributes& coordinate, bool unlimited);
 
-// Pressure (Pa, hPa, mbar, millibars, atm or standard_name air_pressure), height (m, km
+// Model level whenever the coordinate has formula_terms (whatever else it says); else
+// pressure (Pa, hPa, mbar, millibars, atm or standard_name air_pressure), height (m, km
 // or standard_name height/altitude), model level (atmosphere_*_coordinate standard
-// names, model_level_number, formula_terms, hybrid/sigma units) or other.
+// names, model_level_number, hybrid/sigma units) or other.
 AxisKind detect_vertical_kind(const CoordinateAttributes& coordinate);
 
 bool is_longitude_units(std::string_view units);

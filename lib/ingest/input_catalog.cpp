@@ -22,6 +22,7 @@
 #include "ingest/grid_compare.h"
 #include "ingest/netcdf_file.h"
 #include "ingest/variable_selection.h"
+#include "ingest/vertical_geometry_detection.h"
 
 namespace strielad::ingest {
 namespace {
@@ -370,6 +371,17 @@ InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
   for (std::size_t v = 0; v < in.names.size(); ++v) {
     for (double t : catalog.time.values) catalog.locations[v].push_back(steps[v].at(t));
   }
+
+  VerticalDetection vertical = detect_vertical_geometry(catalog, options);
+  catalog.vertical_geometry = std::move(vertical.geometry);
+  catalog.surface = std::move(vertical.surface);
+  if (const auto& g = catalog.vertical_geometry) {
+    spdlog::info("vertical geometry: {} from {} ({}{})",
+                 g->quantity == VerticalGeometrySource::Quantity::kHeight ? "height" : "pressure",
+                 g->formula, fmt::join(g->sources, ", "),
+                 g->varies_in_time ? ", varies in time" : "");
+  }
+  if (catalog.surface) spdlog::info("surface height: '{}'", catalog.surface->variable);
 
   const std::vector<std::string>& names = in.names;
   spdlog::info("{} input file{}: {} variable{} ({}) on a {} x {} x {} grid ({} levels), {} of {} "

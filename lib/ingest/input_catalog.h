@@ -49,7 +49,12 @@ struct VerticalGeometrySource {
   // "variable" when read from source variables.
   std::string formula;
   std::map<std::string, std::string> terms;  // formula term -> source variable
-  std::vector<std::string> sources;          // source variables read, in order
+  // Formula terms no input file holds, given by ScanOptions::formula_constants: term ->
+  // value in the SI unit of the term (Pa for p0 and ptop, m for lengths).
+  std::map<std::string, double> constants;
+  // Source variables read, in order. For formula "variable": one height or geopotential
+  // (z_mc, z_ifc, HHL, --height-var) or the two geopotentials summed (WRF's PH + PHB).
+  std::vector<std::string> sources;
   bool varies_in_time = false;               // differs between time steps
   friend bool operator==(const VerticalGeometrySource&, const VerticalGeometrySource&) = default;
 };

@@ -15,6 +15,7 @@
 #include <set>
 #include <system_error>
 
+#include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
 #include "core/direct_read_file.h"
@@ -22,6 +23,9 @@
 #include "ingest/hdf5_plane_layout.h"
 #include "ingest/input_catalog.h"
 #include "ingest/slab_reader.h"
+#include "ingest/term_reader.h"
+#include "ingest/vertical_columns.h"
+#include "ingest/vertical_geometry.h"
 
 #include "ingest/grib_catalog.h"
 #include "ingest/netcdf_call.h"
@@ -83,6 +87,14 @@ struct SlabReader::Impl {
   std::uint64_t clock = 0;
   std::atomic<std::uint64_t> direct_bytes{0};
   std::set<std::size_t> direct_failed{};  // files whose direct reads failed: netCDF only
+  // Reads the sources of the vertical geometry and surface (created on first use).
+  std::unique_ptr<NcTermReader> terms{};
+  std::once_flag terms_once{};
+
+  NcTermReader& term_reader() {
+    std::call_once(terms_once, [this] { terms = std::make_unique<NcTermReader>(catalog); });
+    return *terms;
+  }
 
   OpenFile& open_file(std::size_t index);
   const VariableHandle& variable(OpenFile& of, std::size_t file, std::size_t v);
@@ -470,6 +482,7 @@ std::uint64_t SlabReader::direct_bytes() const {
 }
 
 SlabReader::~SlabReader() {
+  impl_->terms.reset();  // takes netcdf_mutex() itself
   std::lock_guard lock(netcdf_mutex());  // nc_close is a netCDF call too
   delete impl_;
 }
@@ -507,6 +520,87 @@ void SlabReader::read_any(std::size_t variable, std::size_t step, std::size_t z0
   }
   impl_->read(variable, step, z0, z1, out.first((z1 - z0) * dims.y * dims.x));
   repeat_first_column(out, dims.x);
+}
+
+namespace {
+
+// An error from evaluating a geometry that does not yet name a file is given `context`.
+[[noreturn]] void rethrow_with_context(const Error& e, const std::string& path,
+                                       const std::string& context) {
+  if (std::string_view(e.what()).substr(0, path.size()) == path) throw e;
+  throw e.with_context(context);
+}
+
+std::size_t checked_output_size(std::size_t z0, std::size_t z1, const Dims3& dims,
+                                bool repeat, std::size_t out_size) {
+  if (z0 > z1 || z1 > dims.z) {
+    throw make_error(ErrorCode::kInvalidArgument, "level range [{}, {}) outside [0, {})", z0, z1,
+                     dims.z);
+  }
+  const std::size_t nx = dims.x + (repeat ? 1 : 0);
+  const std::size_t count = (z1 - z0) * dims.y * nx;
+  if (out_size != count) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "output holds {} values but levels [{}, {}) of {} x {} need {}", out_size,
+                     z0, z1, nx, dims.y, count);
+  }
+  return (z1 - z0) * dims.y * dims.x;
+}
+
+}  // namespace
+
+void SlabReader::read_vertical_geometry(std::size_t step, std::size_t z0, std::size_t z1,
+                                        std::span<double> out) {
+  const InputCatalog& c = impl_->catalog;
+  if (!c.vertical_geometry) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "the catalog has no vertical geometry: its z axis places every sample");
+  }
+  if (step >= c.time.size()) {
+    throw make_error(ErrorCode::kInvalidArgument, "time step {} out of range ({} steps)", step,
+                     c.time.size());
+  }
+  const Dims3 dims = c.dims();  // as in the files
+  const std::size_t count = checked_output_size(z0, z1, dims, repeat_first_column_, out.size());
+  const VerticalGeometrySource& g = *c.vertical_geometry;
+  const std::string& path = c.files[c.locations[0][step].file].path;
+  const std::string context = fmt::format("{}: vertical geometry ({} from {}) time step {}", path,
+                                          g.formula, fmt::join(g.sources, ", "), step);
+  const std::span<double> in_files = out.first(count);
+  try {
+    evaluate_vertical_geometry(g, impl_->term_reader(), step, z0, z1, dims, in_files);
+  } catch (const Error& e) {
+    rethrow_with_context(e, path, context);
+  }
+  ColumnOrderCheck order(dims.x, dims.y, context);
+  const std::size_t plane = dims.x * dims.y;
+  for (std::size_t k = z0; k < z1; ++k) {
+    order.add_level(k, in_files.subspan((k - z0) * plane, plane));
+  }
+  if (repeat_first_column_) repeat_first_column(out, dims.x);
+}
+
+void SlabReader::read_surface(std::span<double> out) {
+  const InputCatalog& c = impl_->catalog;
+  if (!c.surface) {
+    throw make_error(ErrorCode::kInvalidArgument, "the catalog has no surface height");
+  }
+  const Dims3 dims = c.dims();
+  const std::size_t count = checked_output_size(0, 1, Dims3{dims.x, dims.y, 1},
+                                                repeat_first_column_, out.size());
+  const std::string& path = c.files.front().path;
+  try {
+    evaluate_surface(*c.surface, impl_->term_reader(), dims, out.first(count));
+  } catch (const Error& e) {
+    rethrow_with_context(e, path, fmt::format("{}: surface height '{}'", path, c.surface->variable));
+  }
+  for (std::size_t s = 0; s < count; ++s) {
+    if (!std::isfinite(out[s])) {
+      throw make_error(ErrorCode::kInvalidInput, "{}: surface height '{}' sample (i {}, j {}) is "
+                       "{}", path, c.surface->variable, s % dims.x, s / dims.x, out[s]);
+    }
+  }
+  if (repeat_first_column_) repeat_first_column(out, dims.x);
 }
 
 void SlabReader::read(std::size_t variable, std::size_t step, std::size_t z0, std::size_t z1,

@@ -98,6 +98,14 @@ TEST(AxisRoleDetectionTest, VerticalKinds) {
   c.has_formula_terms = true;
   EXPECT_EQ(detect_vertical_kind(c), AxisKind::kModelLevel);
   c = named("lev");
+  c.standard_name = "height";  // formula_terms: model levels, whatever else it says
+  c.units = "m";
+  c.has_formula_terms = true;
+  EXPECT_EQ(detect_vertical_kind(c), AxisKind::kModelLevel);
+  c.standard_name = "air_pressure";
+  c.units = "Pa";
+  EXPECT_EQ(detect_vertical_kind(c), AxisKind::kModelLevel);
+  c = named("lev");
   c.units = "hybrid_sigma_pressure";
   EXPECT_EQ(detect_vertical_kind(c), AxisKind::kModelLevel);
   c = named("theta");
