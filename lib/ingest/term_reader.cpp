@@ -47,6 +47,7 @@ int NcTermReader::open_file(std::size_t file) {
 
 std::optional<TermVariable> NcTermReader::find_in_file(std::size_t file,
                                                        const std::string& variable) {
+  if (absent_.count({file, variable})) return std::nullopt;
   const int ncid = open_file(file);
   int grpid = ncid;
   if (!group_.empty() && nc_inq_grp_full_ncid(ncid, ("/" + group_).c_str(), &grpid) != NC_NOERR) {
@@ -76,6 +77,7 @@ std::optional<TermVariable> NcTermReader::find_in_file(std::size_t file,
     t.units = text_attribute_or_empty(*g, varid, "units");
     return t;
   }
+  absent_.insert({file, variable});
   return std::nullopt;
 }
 

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,8 @@ class NcTermReader final : public TermSource {
   InputCatalog catalog_;
   std::string group_;  // the data variables' group ("" for the root)
   std::map<std::size_t, NcFile> open_;
+  // (file, variable) pairs known not to exist: each file is searched once per variable.
+  std::set<std::pair<std::size_t, std::string>> absent_;
 };
 
 }  // namespace strielad::ingest
