@@ -27,7 +27,7 @@ struct TermVariable {
   std::vector<std::string> dimensions;  // names, time included
   bool has_time = false;                // its first dimension is the time dimension
   std::size_t time_length = 0;
-  std::vector<std::size_t> shape;       // dimension lengths after time
+  std::vector<std::size_t> shape;  // dimension lengths after time
   std::string units;
 };
 
