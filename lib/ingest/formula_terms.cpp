@@ -21,19 +21,24 @@ const std::vector<FormulaDefinition>& formulas() {
       // z(n,k,j,i) = a(k) + b(k) * orog(n,j,i)
       {"atmosphere_hybrid_height_coordinate",
        Q::kHeight,
-       {{{"a", S::kLevels, U::kLength}, {"b", S::kLevels, U::kDimensionless},
+       {{{"a", S::kLevels, U::kLength},
+         {"b", S::kLevels, U::kDimensionless},
          {"orog", S::kPlane, U::kLength}}}},
       // p(n,k,j,i) = a(k) * p0 + b(k) * ps(n,j,i), or ap(k) + b(k) * ps(n,j,i)
       {"atmosphere_hybrid_sigma_pressure_coordinate",
        Q::kPressure,
-       {{{"a", S::kLevels, U::kDimensionless}, {"b", S::kLevels, U::kDimensionless},
-         {"ps", S::kPlane, U::kPressure}, {"p0", S::kScalar, U::kPressure}},
-        {{"ap", S::kLevels, U::kPressure}, {"b", S::kLevels, U::kDimensionless},
+       {{{"a", S::kLevels, U::kDimensionless},
+         {"b", S::kLevels, U::kDimensionless},
+         {"ps", S::kPlane, U::kPressure},
+         {"p0", S::kScalar, U::kPressure}},
+        {{"ap", S::kLevels, U::kPressure},
+         {"b", S::kLevels, U::kDimensionless},
          {"ps", S::kPlane, U::kPressure}}}},
       // p(n,k,j,i) = ptop + sigma(k) * (ps(n,j,i) - ptop)
       {"atmosphere_sigma_coordinate",
        Q::kPressure,
-       {{{"sigma", S::kLevels, U::kDimensionless}, {"ps", S::kPlane, U::kPressure},
+       {{{"sigma", S::kLevels, U::kDimensionless},
+         {"ps", S::kPlane, U::kPressure},
          {"ptop", S::kScalar, U::kPressure}}}},
   };
   return kFormulas;
@@ -67,7 +72,8 @@ std::vector<FormulaTerm> parse_formula_terms(std::string_view text, std::string_
       t.term = word.substr(0, colon);
       t.variable = word.substr(colon + 1);
     } else {
-      if (word.size() < 2 || word.back() != ':') throw malformed(fmt::format("has '{}' where a term belongs", word));
+      if (word.size() < 2 || word.back() != ':')
+        throw malformed(fmt::format("has '{}' where a term belongs", word));
       if (w + 1 >= words.size()) throw malformed(fmt::format("gives no variable for '{}'", word));
       t.term = word.substr(0, word.size() - 1);
       t.variable = words[++w];

@@ -592,7 +592,8 @@ void SlabReader::read_surface(std::span<double> out) {
   try {
     evaluate_surface(*c.surface, impl_->term_reader(), dims, out.first(count));
   } catch (const Error& e) {
-    rethrow_with_context(e, path, fmt::format("{}: surface height '{}'", path, c.surface->variable));
+    rethrow_with_context(e, path,
+                         fmt::format("{}: surface height '{}'", path, c.surface->variable));
   }
   for (std::size_t s = 0; s < count; ++s) {
     if (!std::isfinite(out[s])) {

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ingest/term_reader.h"
 
-#include <netcdf.h>
-
 #include <fmt/format.h>
+#include <netcdf.h>
 
 #include <cmath>
 #include <mutex>
@@ -47,6 +46,7 @@ int NcTermReader::open_file(std::size_t file) {
 
 std::optional<TermVariable> NcTermReader::find_in_file(std::size_t file,
                                                        const std::string& variable) {
+  if (absent_.count({file, variable})) return std::nullopt;
   const int ncid = open_file(file);
   int grpid = ncid;
   if (!group_.empty() && nc_inq_grp_full_ncid(ncid, ("/" + group_).c_str(), &grpid) != NC_NOERR) {
@@ -76,13 +76,14 @@ std::optional<TermVariable> NcTermReader::find_in_file(std::size_t file,
     t.units = text_attribute_or_empty(*g, varid, "units");
     return t;
   }
+  absent_.insert({file, variable});
   return std::nullopt;
 }
 
 std::optional<TermVariable> NcTermReader::find_locked(const std::string& variable) {
-  const std::size_t data_file =
-      catalog_.locations.empty() || catalog_.locations[0].empty() ? 0
-                                                                  : catalog_.locations[0][0].file;
+  const std::size_t data_file = catalog_.locations.empty() || catalog_.locations[0].empty()
+                                    ? 0
+                                    : catalog_.locations[0][0].file;
   if (auto t = find_in_file(data_file, variable)) return t;
   for (std::size_t f = 0; f < catalog_.files.size(); ++f) {
     if (f == data_file) continue;
@@ -102,8 +103,8 @@ std::pair<TermVariable, std::size_t> NcTermReader::locate(const std::string& var
   return locate_locked(variable, step);
 }
 
-std::pair<TermVariable, std::size_t> NcTermReader::locate_locked(
-    const std::string& variable, std::optional<std::size_t> step) {
+std::pair<TermVariable, std::size_t> NcTermReader::locate_locked(const std::string& variable,
+                                                                 std::optional<std::size_t> step) {
   if (!step) {
     auto t = find_locked(variable);
     if (!t) {

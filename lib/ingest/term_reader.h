@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,7 @@ struct TermVariable {
   std::vector<std::string> dimensions;  // names, time included
   bool has_time = false;                // its first dimension is the time dimension
   std::size_t time_length = 0;
-  std::vector<std::size_t> shape;       // dimension lengths after time
+  std::vector<std::size_t> shape;  // dimension lengths after time
   std::string units;
 };
 
@@ -67,6 +68,8 @@ class NcTermReader final : public TermSource {
   InputCatalog catalog_;
   std::string group_;  // the data variables' group ("" for the root)
   std::map<std::size_t, NcFile> open_;
+  // (file, variable) pairs known not to exist: each file is searched once per variable.
+  std::set<std::pair<std::size_t, std::string>> absent_;
 };
 
 }  // namespace strielad::ingest

@@ -16,8 +16,8 @@ void ColumnOrderCheck::add_level(std::size_t k, std::span<const double> level) {
                      context_, k, level.size(), nx_, ny_);
   }
   if (last_k_ && k != *last_k_ + 1) {
-    throw make_error(ErrorCode::kInvalidArgument, "{}: level {} checked after level {}",
-                     context_, k, *last_k_);
+    throw make_error(ErrorCode::kInvalidArgument, "{}: level {} checked after level {}", context_,
+                     k, *last_k_);
   }
   for (std::size_t s = 0; s < level.size(); ++s) {
     if (!std::isfinite(level[s])) {

@@ -25,18 +25,18 @@ std::string compact_lower(std::string_view text) {
 }
 
 // The factor that takes a term's values to the SI unit of what it measures.
-double si_factor(const FormulaTermSpec& spec, const std::string& variable,
-                 const std::string& units, std::string_view formula) {
+double si_factor(const FormulaTermSpec& spec, const std::string& variable, const std::string& units,
+                 std::string_view formula) {
   if (spec.units == TermUnits::kDimensionless) return 1.0;
   if (units.empty()) return 1.0;  // CF terms without units: taken as Pa or m
   const std::optional<double> f = spec.units == TermUnits::kPressure
                                       ? pascals_per_pressure_unit(units)
                                       : metres_per_height_unit(units);
   if (!f) {
-    throw make_error(ErrorCode::kInvalidInput,
-                     "variable '{}' (term '{}' of {}) has units '{}', not a {} unit", variable,
-                     spec.term, formula, units,
-                     spec.units == TermUnits::kPressure ? "pressure (Pa, hPa...)" : "length (m, km)");
+    throw make_error(
+        ErrorCode::kInvalidInput, "variable '{}' (term '{}' of {}) has units '{}', not a {} unit",
+        variable, spec.term, formula, units,
+        spec.units == TermUnits::kPressure ? "pressure (Pa, hPa...)" : "length (m, km)");
   }
   return *f;
 }
@@ -139,8 +139,8 @@ void evaluate_formula(const VerticalGeometrySource& g, TermSource& terms, std::s
   const FormulaDefinition* formula = find_formula(g.formula);
   if (formula == nullptr) {
     throw make_error(ErrorCode::kUnsupported,
-                     "vertical coordinate formula '{}' is not supported (supported: {})",
-                     g.formula, supported_formulas());
+                     "vertical coordinate formula '{}' is not supported (supported: {})", g.formula,
+                     supported_formulas());
   }
   const FormulaValues t = read_terms(g, *formula, terms, step, z0, z1, dims);
   const std::size_t plane = dims.x * dims.y;
@@ -185,8 +185,8 @@ std::optional<double> metres_per_height_unit(std::string_view units) {
 }
 
 void evaluate_vertical_geometry(const VerticalGeometrySource& geometry, TermSource& terms,
-                                std::size_t step, std::size_t z0, std::size_t z1,
-                                const Dims3& dims, std::span<double> out) {
+                                std::size_t step, std::size_t z0, std::size_t z1, const Dims3& dims,
+                                std::span<double> out) {
   if (z0 > z1 || z1 > dims.z) {
     throw make_error(ErrorCode::kInvalidArgument, "level range [{}, {}) outside [0, {})", z0, z1,
                      dims.z);

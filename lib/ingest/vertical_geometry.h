@@ -51,8 +51,8 @@ inline constexpr double kStandardGravity = 9.80665;  // m s-2, the WMO's g0
 // \error kInvalidInput for a source of the wrong size or with units the formula cannot
 // use; kInvalidArgument for a level range or output size that does not fit `dims`.
 void evaluate_vertical_geometry(const VerticalGeometrySource& geometry, TermSource& terms,
-                                std::size_t step, std::size_t z0, std::size_t z1,
-                                const Dims3& dims, std::span<double> out);
+                                std::size_t step, std::size_t z0, std::size_t z1, const Dims3& dims,
+                                std::span<double> out);
 
 // The surface height in m: `surface` at time index 0, dims.y * dims.x values.
 void evaluate_surface(const SurfaceSource& surface, TermSource& terms, const Dims3& dims,

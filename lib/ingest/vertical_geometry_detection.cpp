@@ -33,7 +33,8 @@ class Detector {
   Detector(const InputCatalog& catalog, const ScanOptions& options)
       : reader_(catalog.as_in_files()), options_(options), dims_(reader_.catalog().dims()) {
     if (!catalog.variables.empty()) {
-      if (auto v = reader_.find(short_name(catalog.variables[0].name)); v && v->dimensions.size() >= 3) {
+      if (auto v = reader_.find(short_name(catalog.variables[0].name));
+          v && v->dimensions.size() >= 3) {
         z_dimension_ = v->dimensions[v->dimensions.size() - 3];
       }
     }
@@ -42,7 +43,9 @@ class Detector {
   VerticalDetection run();
 
  private:
-  const std::string& path(const TermVariable& t) const { return reader_.catalog().files[t.file].path; }
+  const std::string& path(const TermVariable& t) const {
+    return reader_.catalog().files[t.file].path;
+  }
   std::string dims_text(const TermVariable& t) const {
     return fmt::format("({})", fmt::join(t.dimensions, ", "));
   }
@@ -52,10 +55,9 @@ class Detector {
   std::optional<VerticalGeometrySource> ccm_formula();
   // The formula's source from terms -> variables; `origin` says where each term was
   // named ("formula_terms of 'lev'", "attribute P0_var").
-  VerticalGeometrySource formula_source(const FormulaDefinition& formula,
-                                        const std::map<std::string, std::string>& named,
-                                        const std::function<std::string(const std::string&)>& origin,
-                                        const std::string& context);
+  VerticalGeometrySource formula_source(
+      const FormulaDefinition& formula, const std::map<std::string, std::string>& named,
+      const std::function<std::string(const std::string&)>& origin, const std::string& context);
   void check_term_shape(const TermVariable& t, const FormulaTermSpec& spec,
                         std::string_view formula);
   void check_every_step(const VerticalGeometrySource& g);
@@ -75,7 +77,8 @@ VerticalGeometrySource Detector::height_source(std::vector<TermVariable> sources
   g.quantity = VerticalGeometrySource::Quantity::kHeight;
   g.formula = "variable";
   for (const TermVariable& t : sources) {
-    const bool levels_fit = !t.shape.empty() && (t.shape[0] == dims_.z || t.shape[0] == dims_.z + 1);
+    const bool levels_fit =
+        !t.shape.empty() && (t.shape[0] == dims_.z || t.shape[0] == dims_.z + 1);
     if (t.shape.size() != 3 || !levels_fit || t.shape[1] != dims_.y || t.shape[2] != dims_.x) {
       throw make_error(ErrorCode::kInvalidInput,
                        "{}: height variable '{}' has dimensions {} of lengths ({}); a height "
@@ -100,8 +103,10 @@ std::optional<VerticalGeometrySource> Detector::explicit_height() {
   if (options_.height_var) {
     auto t = reader_.find(*options_.height_var);
     if (!t) {
-      throw make_error(ErrorCode::kNotFound, "height variable '{}' (--height-var) is in none of "
-                       "the {} input files", *options_.height_var, reader_.catalog().files.size());
+      throw make_error(ErrorCode::kNotFound,
+                       "height variable '{}' (--height-var) is in none of "
+                       "the {} input files",
+                       *options_.height_var, reader_.catalog().files.size());
     }
     return height_source({*t});
   }
@@ -157,7 +162,8 @@ void Detector::check_term_shape(const TermVariable& t, const FormulaTermSpec& sp
 VerticalGeometrySource Detector::formula_source(
     const FormulaDefinition& formula, const std::map<std::string, std::string>& named,
     const std::function<std::string(const std::string&)>& origin, const std::string& context) {
-  auto constant = [&](const std::string& term, const std::string& variable) -> std::optional<double> {
+  auto constant = [&](const std::string& term,
+                      const std::string& variable) -> std::optional<double> {
     for (const std::string& key : {variable, term}) {
       if (auto it = options_.formula_constants.find(key); it != options_.formula_constants.end()) {
         return it->second;
@@ -177,9 +183,10 @@ VerticalGeometrySource Detector::formula_source(
   }
   const auto set = complete_term_set(formula, given);
   if (!set) {
-    throw make_error(ErrorCode::kInvalidInput, "{}: {} needs the terms {}; given: {}", context,
-                     formula.standard_name, describe_term_sets(formula),
-                     given.empty() ? std::string("none") : fmt::format("{}", fmt::join(given, ", ")));
+    throw make_error(
+        ErrorCode::kInvalidInput, "{}: {} needs the terms {}; given: {}", context,
+        formula.standard_name, describe_term_sets(formula),
+        given.empty() ? std::string("none") : fmt::format("{}", fmt::join(given, ", ")));
   }
   VerticalGeometrySource g;
   g.quantity = formula.quantity;
@@ -236,7 +243,8 @@ std::optional<VerticalGeometrySource> Detector::cf_formula() {
                      context, standard_name, supported_formulas());
   }
   std::map<std::string, std::string> named;
-  for (const FormulaTerm& t : parse_formula_terms(formula_terms, context)) named[t.term] = t.variable;
+  for (const FormulaTerm& t : parse_formula_terms(formula_terms, context))
+    named[t.term] = t.variable;
   return formula_source(
       *formula, named,
       [&](const std::string& term) {
@@ -249,7 +257,8 @@ std::optional<VerticalGeometrySource> Detector::ccm_formula() {
   std::vector<TermVariable> holders;
   if (auto z = reader_.find(reader_.catalog().z.name)) holders.push_back(*z);
   if (!reader_.catalog().variables.empty()) {
-    if (auto v = reader_.find(short_name(reader_.catalog().variables[0].name))) holders.push_back(*v);
+    if (auto v = reader_.find(short_name(reader_.catalog().variables[0].name)))
+      holders.push_back(*v);
   }
   static const std::map<std::string, std::string> kTermOf{
       {"A_var", "a"}, {"B_var", "b"}, {"P0_var", "p0"}, {"PS_var", "ps"}};
@@ -262,9 +271,10 @@ std::optional<VerticalGeometrySource> Detector::ccm_formula() {
       attribute_of[term] = attr;
     }
     if (named.empty()) continue;
-    const std::string context = fmt::format("{}: variable '{}' (CCM hybrid attributes A_var, "
-                                            "B_var, P0_var, PS_var)",
-                                            path(holder), holder.name);
+    const std::string context = fmt::format(
+        "{}: variable '{}' (CCM hybrid attributes A_var, "
+        "B_var, P0_var, PS_var)",
+        path(holder), holder.name);
     const FormulaDefinition* formula = find_formula("atmosphere_hybrid_sigma_pressure_coordinate");
     return formula_source(
         *formula, named,
@@ -295,9 +305,10 @@ std::optional<SurfaceSource> Detector::surface(const std::optional<VerticalGeome
     const auto t = reader_.find(name);
     if (!t) continue;
     if (!is_plane(*t) || !metres_per_height_unit(t->units)) {
-      spdlog::info("{}: '{}' is not taken as the surface height: it is not a height (m, km, "
-                   "gpm) on the {} x {} grid (dimensions {}, units '{}')",
-                   path(*t), name, dims_.x, dims_.y, dims_text(*t), t->units);
+      spdlog::info(
+          "{}: '{}' is not taken as the surface height: it is not a height (m, km, "
+          "gpm) on the {} x {} grid (dimensions {}, units '{}')",
+          path(*t), name, dims_.x, dims_.y, dims_text(*t), t->units);
       continue;
     }
     return SurfaceSource{name};

@@ -27,7 +27,6 @@ struct VerticalDetection {
 // term variable missing from every file (suggesting --formula-term NAME=VALUE); a
 // time-varying term missing for a time step. kUnsupported: a formula standard_name not
 // supported (the message lists those that are), atmosphere_ln_pressure_coordinate.
-VerticalDetection detect_vertical_geometry(const InputCatalog& catalog,
-                                           const ScanOptions& options);
+VerticalDetection detect_vertical_geometry(const InputCatalog& catalog, const ScanOptions& options);
 
 }  // namespace strielad::ingest

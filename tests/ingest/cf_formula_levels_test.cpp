@@ -59,9 +59,10 @@ NetcdfFixture hybrid_height_file(const ModelLevels& g) {
   return g.fixture()
       .variable("a", NC_DOUBLE, {"lev"}, kA, {NcAttr::text_value("units", "m")})
       .variable("b", NC_DOUBLE, {"lev"}, kB, {NcAttr::text_value("units", "1")})
-      .variable("orog", NC_DOUBLE, {"lat", "lon"},
-                field(1, 1, g.plane(), [](std::size_t, std::size_t, std::size_t s) { return orog(s); }),
-                {NcAttr::text_value("units", "m")});
+      .variable(
+          "orog", NC_DOUBLE, {"lat", "lon"},
+          field(1, 1, g.plane(), [](std::size_t, std::size_t, std::size_t s) { return orog(s); }),
+          {NcAttr::text_value("units", "m")});
 }
 
 TEST(CfFormulaLevelsTest, HybridHeightIsAPlusBTimesOrography) {
@@ -74,7 +75,8 @@ TEST(CfFormulaLevelsTest, HybridHeightIsAPlusBTimesOrography) {
   const VerticalGeometrySource& v = *c.vertical_geometry;
   EXPECT_EQ(v.quantity, Quantity::kHeight);
   EXPECT_EQ(v.formula, "atmosphere_hybrid_height_coordinate");
-  EXPECT_EQ(v.terms, (std::map<std::string, std::string>{{"a", "a"}, {"b", "b"}, {"orog", "orog"}}));
+  EXPECT_EQ(v.terms,
+            (std::map<std::string, std::string>{{"a", "a"}, {"b", "b"}, {"orog", "orog"}}));
   EXPECT_FALSE(v.varies_in_time);
   ASSERT_TRUE(c.surface);
   EXPECT_EQ(c.surface->variable, "orog");
@@ -91,14 +93,13 @@ TEST(CfFormulaLevelsTest, AxisWithFormulaTermsIsNeverTakenAsHeights) {
   ModelLevels g = levels("atmosphere_hybrid_height_coordinate", "a: a b: b orog: orog");
   g.lev_attrs.push_back(NcAttr::text_value("units", "m"));
   hybrid_height_file(g).write(dir / "um.nc");
-  EXPECT_EQ(scan_inputs({dir / "um.nc"}, only_t()).z.kind,
-            AxisKind::kModelLevel);
+  EXPECT_EQ(scan_inputs({dir / "um.nc"}, only_t()).z.kind, AxisKind::kModelLevel);
   // standard_name "height" with formula_terms: no formula it names, so refused.
   ModelLevels h = levels("height", "a: a b: b orog: orog");
   h.lev_attrs.push_back(NcAttr::text_value("units", "m"));
   hybrid_height_file(h).write(dir / "um_height.nc");
-  expect_error([&] { scan_inputs({dir / "um_height.nc"}, only_t()); },
-               ErrorCode::kUnsupported, {"'height'", "atmosphere_hybrid_height_coordinate"});
+  expect_error([&] { scan_inputs({dir / "um_height.nc"}, only_t()); }, ErrorCode::kUnsupported,
+               {"'height'", "atmosphere_hybrid_height_coordinate"});
 }
 
 NetcdfFixture sigma_pressure_file(const ModelLevels& g, const std::string& ps_units = "Pa") {
@@ -138,9 +139,11 @@ TEST(CfFormulaLevelsTest, HybridSigmaPressureFollowsSurfacePressureOfEachStep) {
 
 TEST(CfFormulaLevelsTest, HybridSigmaPressureWithApAndPsInHectopascals) {
   TempDir dir;
-  const ModelLevels g = levels("atmosphere_hybrid_sigma_pressure_coordinate", "ap: ap b: hybm ps: PS");
+  const ModelLevels g =
+      levels("atmosphere_hybrid_sigma_pressure_coordinate", "ap: ap b: hybm ps: PS");
   sigma_pressure_file(g, "hPa")
-      .variable("ap", NC_DOUBLE, {"lev"}, {12.5, 250.0, 500.0}, {NcAttr::text_value("units", "hPa")})
+      .variable("ap", NC_DOUBLE, {"lev"}, {12.5, 250.0, 500.0},
+                {NcAttr::text_value("units", "hPa")})
       .write(dir / "cmip.nc");
   const InputCatalog c = scan_inputs({dir / "cmip.nc"}, only_t());
   const auto got = read_geometry(c, 1, 1, 3);
@@ -173,10 +176,11 @@ TEST(CfFormulaLevelsTest, SigmaCoordinateIsPtopPlusSigmaTimesColumn) {
 
 TEST(CfFormulaLevelsTest, MissingFormulaTermIsRefusedNamingTheTermsNeeded) {
   TempDir dir;
-  const ModelLevels g = levels("atmosphere_hybrid_sigma_pressure_coordinate", "a: hyam b: hybm p0: P0");
+  const ModelLevels g =
+      levels("atmosphere_hybrid_sigma_pressure_coordinate", "a: hyam b: hybm p0: P0");
   sigma_pressure_file(g).write(dir / "cam.nc");
-  expect_error([&] { scan_inputs({dir / "cam.nc"}, only_t()); },
-               ErrorCode::kInvalidInput, {"cam.nc", "'lev'", "a, b, ps, p0 or ap, b, ps"});
+  expect_error([&] { scan_inputs({dir / "cam.nc"}, only_t()); }, ErrorCode::kInvalidInput,
+               {"cam.nc", "'lev'", "a, b, ps, p0 or ap, b, ps"});
 }
 
 TEST(CfFormulaLevelsTest, MissingTermVariableSuggestsFormulaTermFlag) {
@@ -184,8 +188,8 @@ TEST(CfFormulaLevelsTest, MissingTermVariableSuggestsFormulaTermFlag) {
   const ModelLevels g =
       levels("atmosphere_hybrid_sigma_pressure_coordinate", "a: hyam b: hybm p0: PZERO ps: PS");
   sigma_pressure_file(g).write(dir / "cam.nc");
-  expect_error([&] { scan_inputs({dir / "cam.nc"}, only_t()); },
-               ErrorCode::kInvalidInput, {"cam.nc", "'PZERO'", "--formula-term PZERO=100000"});
+  expect_error([&] { scan_inputs({dir / "cam.nc"}, only_t()); }, ErrorCode::kInvalidInput,
+               {"cam.nc", "'PZERO'", "--formula-term PZERO=100000"});
   ScanOptions o;
   o.variables = {"T"};
   o.formula_constants = {{"PZERO", 100000.0}};
@@ -199,19 +203,17 @@ TEST(CfFormulaLevelsTest, MissingTermVariableSuggestsFormulaTermFlag) {
 TEST(CfFormulaLevelsTest, TermWithWrongDimensionsIsRefused) {
   TempDir dir;
   const ModelLevels g = levels("atmosphere_hybrid_height_coordinate", "a: a b: blat orog: orog");
-  hybrid_height_file(g)
-      .variable("blat", NC_DOUBLE, {"lat"}, {0.5, 0.25, 0.0})
-      .write(dir / "um.nc");
-  expect_error([&] { scan_inputs({dir / "um.nc"}, only_t()); },
-               ErrorCode::kInvalidInput, {"um.nc", "'blat'", "term 'b'", "(lat)"});
+  hybrid_height_file(g).variable("blat", NC_DOUBLE, {"lat"}, {0.5, 0.25, 0.0}).write(dir / "um.nc");
+  expect_error([&] { scan_inputs({dir / "um.nc"}, only_t()); }, ErrorCode::kInvalidInput,
+               {"um.nc", "'blat'", "term 'b'", "(lat)"});
 }
 
 TEST(CfFormulaLevelsTest, UnknownFormulaIsRefusedListingTheSupportedOnes) {
   TempDir dir;
-  const ModelLevels g = levels("ocean_s_coordinate", "s: a eta: orog depth: orog a: a b: b depth_c: a");
+  const ModelLevels g =
+      levels("ocean_s_coordinate", "s: a eta: orog depth: orog a: a b: b depth_c: a");
   hybrid_height_file(g).write(dir / "roms.nc");
-  expect_error([&] { scan_inputs({dir / "roms.nc"}, only_t()); },
-               ErrorCode::kUnsupported,
+  expect_error([&] { scan_inputs({dir / "roms.nc"}, only_t()); }, ErrorCode::kUnsupported,
                {"roms.nc", "'ocean_s_coordinate'", "atmosphere_hybrid_height_coordinate",
                 "atmosphere_hybrid_sigma_pressure_coordinate", "atmosphere_sigma_coordinate"});
 }
@@ -220,16 +222,16 @@ TEST(CfFormulaLevelsTest, LnPressureCoordinateIsRefused) {
   TempDir dir;
   const ModelLevels g = levels("atmosphere_ln_pressure_coordinate", "p0: P0 lev: lev");
   sigma_pressure_file(g).write(dir / "ln.nc");
-  expect_error([&] { scan_inputs({dir / "ln.nc"}, only_t()); },
-               ErrorCode::kUnsupported, {"ln.nc", "atmosphere_ln_pressure_coordinate"});
+  expect_error([&] { scan_inputs({dir / "ln.nc"}, only_t()); }, ErrorCode::kUnsupported,
+               {"ln.nc", "atmosphere_ln_pressure_coordinate"});
 }
 
 TEST(CfFormulaLevelsTest, MalformedFormulaTermsAreRefused) {
   TempDir dir;
   const ModelLevels g = levels("atmosphere_hybrid_height_coordinate", "a: a b b orog: orog");
   hybrid_height_file(g).write(dir / "um.nc");
-  expect_error([&] { scan_inputs({dir / "um.nc"}, only_t()); },
-               ErrorCode::kInvalidInput, {"um.nc", "'lev'", "formula_terms"});
+  expect_error([&] { scan_inputs({dir / "um.nc"}, only_t()); }, ErrorCode::kInvalidInput,
+               {"um.nc", "'lev'", "formula_terms"});
 }
 
 TEST(CfFormulaLevelsTest, SurfacePressureMissingForAStepIsRefused) {
@@ -240,19 +242,24 @@ TEST(CfFormulaLevelsTest, SurfacePressureMissingForAStepIsRefused) {
   sigma_pressure_file(g).write(dir / "step0.nc");
   // The second file holds the data of hour 1 but no PS.
   NetcdfFixture(NC_NETCDF4)
-      .coordinate("time", {1.0}, {NcAttr::text_value("standard_name", "time"),
-                                  NcAttr::text_value("units", "hours since 2000-01-01")},
+      .coordinate("time", {1.0},
+                  {NcAttr::text_value("standard_name", "time"),
+                   NcAttr::text_value("units", "hours since 2000-01-01")},
                   NC_DOUBLE, true)
       .coordinate("lev", {1.0, 2.0, 3.0}, g.lev_attrs)
-      .coordinate("lat", {0.0, 10.0, 20.0}, {NcAttr::text_value("standard_name", "latitude"),
-                                             NcAttr::text_value("units", "degrees_north")})
-      .coordinate("lon", g.lon, {NcAttr::text_value("standard_name", "longitude"),
-                                 NcAttr::text_value("units", "degrees_east")})
+      .coordinate("lat", {0.0, 10.0, 20.0},
+                  {NcAttr::text_value("standard_name", "latitude"),
+                   NcAttr::text_value("units", "degrees_north")})
+      .coordinate("lon", g.lon,
+                  {NcAttr::text_value("standard_name", "longitude"),
+                   NcAttr::text_value("units", "degrees_east")})
       .variable("T", NC_FLOAT, {"time", "lev", "lat", "lon"}, testing::ramp(g.nz * g.plane()),
                 {NcAttr::text_value("units", "K")})
       .write(dir / "step1.nc");
   expect_error(
-      [&] { scan_inputs({dir / "step0.nc", dir / "step1.nc"}, only_t()); },
+      [&] {
+        scan_inputs({dir / "step0.nc", dir / "step1.nc"}, only_t());
+      },
       ErrorCode::kInvalidInput, {"step1.nc", "'PS'", "time step 1", "step0.nc"});
 }
 
@@ -260,14 +267,16 @@ TEST(CfFormulaLevelsTest, FillValueInSurfacePressureNamesTheSample) {
   TempDir dir;
   const ModelLevels g =
       levels("atmosphere_hybrid_sigma_pressure_coordinate", "a: hyam b: hybm p0: P0 ps: PS");
-  auto values = field(g.nt, 1, g.plane(), [](std::size_t t, std::size_t, std::size_t s) { return ps(t, s); });
+  auto values =
+      field(g.nt, 1, g.plane(), [](std::size_t t, std::size_t, std::size_t s) { return ps(t, s); });
   values[g.plane() + 2 * g.nx + 1] = 1e20;  // t 1, j 2, i 1
   g.fixture()
       .variable("hyam", NC_DOUBLE, {"lev"}, {0.0125, 0.25, 0.5})
       .variable("hybm", NC_DOUBLE, {"lev"}, kB)
       .variable("P0", NC_DOUBLE, {}, {100000.0})
-      .variable("PS", NC_DOUBLE, {"time", "lat", "lon"}, values,
-                {NcAttr::text_value("units", "Pa"), NcAttr::number("missing_value", NC_DOUBLE, {1e20})})
+      .variable(
+          "PS", NC_DOUBLE, {"time", "lat", "lon"}, values,
+          {NcAttr::text_value("units", "Pa"), NcAttr::number("missing_value", NC_DOUBLE, {1e20})})
       .write(dir / "cam.nc");
   const InputCatalog c = scan_inputs({dir / "cam.nc"}, only_t());
   EXPECT_NO_THROW(read_geometry(c, 0, 0, g.nz));

@@ -68,7 +68,8 @@ TEST(NcargHybridLevelsTest, PressureIsHyamTimesP0PlusHybmTimesPs) {
   const VerticalGeometrySource& v = *c.vertical_geometry;
   EXPECT_EQ(v.quantity, VerticalGeometrySource::Quantity::kPressure);
   EXPECT_EQ(v.formula, "atmosphere_hybrid_sigma_pressure_coordinate");
-  EXPECT_EQ(v.terms, (std::map<std::string, std::string>{{"a", "hyam"}, {"b", "hybm"}, {"ps", "PS"}}));
+  EXPECT_EQ(v.terms,
+            (std::map<std::string, std::string>{{"a", "hyam"}, {"b", "hybm"}, {"ps", "PS"}}));
   EXPECT_EQ(v.constants, (std::map<std::string, double>{{"p0", 100000.0}}));
   EXPECT_TRUE(v.varies_in_time);
 
@@ -80,7 +81,8 @@ TEST(NcargHybridLevelsTest, PressureIsHyamTimesP0PlusHybmTimesPs) {
     std::vector<double> p(18 * 64 * 129);
     reader.read_vertical_geometry(t, 0, 18, p);
     for (std::size_t k : {0u, 9u, 17u}) {
-      for (auto [i, j] : {std::pair<std::size_t, std::size_t>{0, 0}, {5, 7}, {127, 63}, {128, 30}}) {
+      for (auto [i, j] :
+           {std::pair<std::size_t, std::size_t>{0, 0}, {5, 7}, {127, 63}, {128, 30}}) {
         const double want = hyam[k] * 100000.0 + hybm[k] * ps[j * 128 + i % 128];
         ASSERT_DOUBLE_EQ(p[(k * 64 + j) * 129 + i], want)
             << "t " << t << " k " << k << " i " << i << " j " << j;

@@ -56,7 +56,9 @@ TEST(TerrainFollowingHeightsTest, HalfLevelHeightsAreMeansOfTheTwoAroundEachLeve
       .dimension("height_2", g.nz + 1)
       .variable("z_ifc", NC_DOUBLE, {"height_2", "lat", "lon"},
                 field(1, g.nz + 1, g.plane(),
-                      [](std::size_t, std::size_t k, std::size_t s) { return half_level_height(0, k, s); }),
+                      [](std::size_t, std::size_t k, std::size_t s) {
+                        return half_level_height(0, k, s);
+                      }),
                 {kMetres})
       .write(dir / "icon.nc");
   const InputCatalog c = scan_inputs({dir / "icon.nc"}, {});
@@ -148,8 +150,8 @@ TEST(TerrainFollowingHeightsTest, HeightVarChoosesAmongAutomaticCandidates) {
       .variable("z_ifc", NC_DOUBLE, {"height_2", "lat", "lon"}, field(1, g.nz + 1, g.plane(), z),
                 {kMetres})
       .write(dir / "icon.nc");
-  expect_error([&] { scan_inputs({dir / "icon.nc"}, only_t()); },
-               ErrorCode::kInvalidInput, {"'z_mc'", "'z_ifc'", "--height-var", "icon.nc"});
+  expect_error([&] { scan_inputs({dir / "icon.nc"}, only_t()); }, ErrorCode::kInvalidInput,
+               {"'z_mc'", "'z_ifc'", "--height-var", "icon.nc"});
   ScanOptions o;
   o.variables = {"T"};
   o.height_var = "z_mc";
@@ -172,22 +174,22 @@ TEST(TerrainFollowingHeightsTest, HeightOnOtherLevelsIsRefused) {
   const ModelLevels g;
   g.fixture()
       .dimension("height_3", g.nz + 2)
-      .variable("z_ifc", NC_DOUBLE, {"height_3", "lat", "lon"}, std::vector<double>((g.nz + 2) * g.plane(), 1.0),
-                {kMetres})
+      .variable("z_ifc", NC_DOUBLE, {"height_3", "lat", "lon"},
+                std::vector<double>((g.nz + 2) * g.plane(), 1.0), {kMetres})
       .write(dir / "icon.nc");
-  expect_error([&] { scan_inputs({dir / "icon.nc"}, only_t()); },
-               ErrorCode::kInvalidInput, {"icon.nc", "'z_ifc'", "(height_3, lat, lon)", "(5, 3, 4)"});
+  expect_error([&] { scan_inputs({dir / "icon.nc"}, only_t()); }, ErrorCode::kInvalidInput,
+               {"icon.nc", "'z_ifc'", "(height_3, lat, lon)", "(5, 3, 4)"});
 }
 
 TEST(TerrainFollowingHeightsTest, HeightWithoutHeightUnitsIsRefused) {
   TempDir dir;
   const ModelLevels g;
   g.fixture()
-      .variable("z_mc", NC_DOUBLE, {"lev", "lat", "lon"}, std::vector<double>(g.nz * g.plane(), 1.0),
-                {NcAttr::text_value("units", "K")})
+      .variable("z_mc", NC_DOUBLE, {"lev", "lat", "lon"},
+                std::vector<double>(g.nz * g.plane(), 1.0), {NcAttr::text_value("units", "K")})
       .write(dir / "icon.nc");
-  expect_error([&] { scan_inputs({dir / "icon.nc"}, only_t()); },
-               ErrorCode::kInvalidInput, {"icon.nc", "'z_mc'", "units 'K'"});
+  expect_error([&] { scan_inputs({dir / "icon.nc"}, only_t()); }, ErrorCode::kInvalidInput,
+               {"icon.nc", "'z_mc'", "units 'K'"});
 }
 
 TEST(TerrainFollowingHeightsTest, FillValueInHeightsNamesFileVariableSampleAndStep) {
@@ -283,8 +285,8 @@ TEST(TerrainFollowingHeightsTest, SurfaceHeightIsDetectedAndReadInMetres) {
   reader.read_surface(out);
   EXPECT_EQ(out, testing::ramp(g.plane(), 100.0, 25.0));
   std::vector<double> level(g.plane());
-  expect_error([&] { reader.read_vertical_geometry(0, 0, 1, level); },
-               ErrorCode::kInvalidArgument, {"no vertical geometry"});
+  expect_error([&] { reader.read_vertical_geometry(0, 0, 1, level); }, ErrorCode::kInvalidArgument,
+               {"no vertical geometry"});
 }
 
 TEST(TerrainFollowingHeightsTest, SurfaceOverTimeInKilometresTakesTheFirstStep) {

@@ -29,17 +29,23 @@ TEST(VerticalColumnOrderTest, RisingAndFallingColumnsPass) {
 TEST(VerticalColumnOrderTest, RepeatedValueNamesTheSample) {
   ColumnOrderCheck check(2, 2, "f.nc: z_mc time step 3");
   check.add_level(0, std::vector<double>{0.0, 0.0, 0.0, 0.0});
-  expect_error([&] { check.add_level(1, std::vector<double>{1.0, 1.0, 1.0, 0.0}); },
-               ErrorCode::kInvalidInput,
-               {"f.nc: z_mc time step 3", "(i 1, j 1, k 1)", "not strictly monotonic"});
+  expect_error(
+      [&] {
+        check.add_level(1, std::vector<double>{1.0, 1.0, 1.0, 0.0});
+      },
+      ErrorCode::kInvalidInput,
+      {"f.nc: z_mc time step 3", "(i 1, j 1, k 1)", "not strictly monotonic"});
 }
 
 TEST(VerticalColumnOrderTest, ColumnRunningTheOtherWayNamesTheSample) {
   ColumnOrderCheck check(3, 1, "f.nc: HHL");
   check.add_level(0, std::vector<double>{0.0, 0.0, 0.0});
   check.add_level(1, std::vector<double>{1.0, 1.0, 1.0});
-  expect_error([&] { check.add_level(2, std::vector<double>{2.0, 0.5, 3.0}); },
-               ErrorCode::kInvalidInput, {"f.nc: HHL", "(i 1, j 0, k 2)", "other way"});
+  expect_error(
+      [&] {
+        check.add_level(2, std::vector<double>{2.0, 0.5, 3.0});
+      },
+      ErrorCode::kInvalidInput, {"f.nc: HHL", "(i 1, j 0, k 2)", "other way"});
 }
 
 TEST(VerticalColumnOrderTest, FirstColumnFlatIsRefused) {
@@ -52,17 +58,22 @@ TEST(VerticalColumnOrderTest, FirstColumnFlatIsRefused) {
 TEST(VerticalColumnOrderTest, NonFiniteValueNamesTheSample) {
   ColumnOrderCheck check(2, 1, "f.nc");
   expect_error(
-      [&] { check.add_level(7, std::vector<double>{1.0, std::numeric_limits<double>::quiet_NaN()}); },
+      [&] {
+        check.add_level(7, std::vector<double>{1.0, std::numeric_limits<double>::quiet_NaN()});
+      },
       ErrorCode::kInvalidInput, {"(i 1, j 0, k 7)"});
 }
 
 TEST(VerticalColumnOrderTest, LevelsOutOfOrderOrOfTheWrongSizeAreRefused) {
   ColumnOrderCheck check(2, 1, "f.nc");
   check.add_level(0, std::vector<double>{1.0, 2.0});
-  expect_error([&] { check.add_level(2, std::vector<double>{2.0, 3.0}); },
-               ErrorCode::kInvalidArgument, {"level 2", "after level 0"});
-  expect_error([&] { check.add_level(1, std::vector<double>{2.0}); },
-               ErrorCode::kInvalidArgument, {"holds 1 values"});
+  expect_error(
+      [&] {
+        check.add_level(2, std::vector<double>{2.0, 3.0});
+      },
+      ErrorCode::kInvalidArgument, {"level 2", "after level 0"});
+  expect_error([&] { check.add_level(1, std::vector<double>{2.0}); }, ErrorCode::kInvalidArgument,
+               {"holds 1 values"});
 }
 
 }  // namespace

@@ -25,14 +25,17 @@ struct ModelLevels {
     std::vector<double> lev, lat;
     for (std::size_t k = 0; k < nz; ++k) lev.push_back(static_cast<double>(k + 1));
     for (std::size_t j = 0; j < ny; ++j) lat.push_back(10.0 * static_cast<double>(j));
-    f.coordinate("time", ramp(nt), {NcAttr::text_value("standard_name", "time"),
-                                    NcAttr::text_value("units", "hours since 2000-01-01")},
+    f.coordinate("time", ramp(nt),
+                 {NcAttr::text_value("standard_name", "time"),
+                  NcAttr::text_value("units", "hours since 2000-01-01")},
                  NC_DOUBLE, true)
         .coordinate("lev", lev, lev_attrs)
-        .coordinate("lat", lat, {NcAttr::text_value("standard_name", "latitude"),
-                                 NcAttr::text_value("units", "degrees_north")})
-        .coordinate("lon", lon, {NcAttr::text_value("standard_name", "longitude"),
-                                 NcAttr::text_value("units", "degrees_east")})
+        .coordinate("lat", lat,
+                    {NcAttr::text_value("standard_name", "latitude"),
+                     NcAttr::text_value("units", "degrees_north")})
+        .coordinate("lon", lon,
+                    {NcAttr::text_value("standard_name", "longitude"),
+                     NcAttr::text_value("units", "degrees_east")})
         .variable("T", NC_FLOAT, {"time", "lev", "lat", "lon"}, ramp(nt * nz * ny * nx, 250.0),
                   {NcAttr::text_value("units", "K")});
     return f;
