@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <spdlog/spdlog.h>
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -24,6 +25,8 @@ struct ConvertFlags {
   format::CodecSpec codec{.predictor = std::string(build::kPredictorAuto)};
   std::vector<std::string> codec_for;  // VARIABLE=CODEC:LEVEL:SHUFFLE[:PREDICTOR]
   std::vector<std::string> fpzip;      // variables, or "all"
+  std::string height_var;
+  std::vector<std::string> formula_terms;  // NAME=VALUE
   bool nan_as_fill = false, no_finalize = false, json = false, buffered_input = false;
 };
 
@@ -52,6 +55,27 @@ void log_summary(const build::ConvertResult& r) {
                s.value("octree_stored_overhead_percent", 0.0));
 }
 
+// "P0=100000" -> {"P0", 100000}. \error kInvalidArgument naming the text.
+std::pair<std::string, double> parse_formula_term(const std::string& text) {
+  const auto eq = text.find('=');
+  double value = 0;
+  std::size_t used = 0;
+  bool ok = eq != std::string::npos && eq > 0 && eq + 1 < text.size();
+  if (ok) {
+    try {
+      value = std::stod(text.substr(eq + 1), &used);
+    } catch (const std::exception&) {
+      ok = false;
+    }
+  }
+  if (!ok || used != text.size() - eq - 1 || !std::isfinite(value)) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "--formula-term '{}': give NAME=VALUE with a finite number, e.g. P0=100000",
+                     text);
+  }
+  return {text.substr(0, eq), value};
+}
+
 int run(const ConvertFlags& f) {
   if (f.inputs.empty()) throw make_error(ErrorCode::kInvalidArgument, "no INPUT files given");
   if (f.output.empty()) throw make_error(ErrorCode::kInvalidArgument, "-o STORE is required");
@@ -61,6 +85,13 @@ int run(const ConvertFlags& f) {
   o.scan.variables = f.vars;
   o.scan.nan_as_fill = f.nan_as_fill;
   o.scan.direct_input = !f.buffered_input;
+  if (!f.height_var.empty()) o.scan.height_var = f.height_var;
+  for (const auto& text : f.formula_terms) {
+    const auto [name, value] = parse_formula_term(text);
+    if (!o.scan.formula_constants.emplace(name, value).second) {
+      throw make_error(ErrorCode::kInvalidArgument, "--formula-term: '{}' given twice", name);
+    }
+  }
   if (!f.time.empty()) {
     const auto r = cli::parse_step_range(f.time, "--time");
     o.scan.first_step = r.first;
@@ -140,6 +171,13 @@ void register_convert(CLI::App& app, cli::Action& action) {
                  "smaller: on the paper's grid clw about 12% smaller, but a cold read of an fpzip "
                  "brick takes about three times as long; for archives (store format version 3)")
       ->delimiter(',');
+  app.add_option("--height-var", f->height_var,
+                 "Terrain-following levels: the variable holding every sample's height or "
+                 "geopotential (on the levels or half levels; default: z_mc, z_ifc, HHL or "
+                 "PH + PHB when present, else the z coordinate's CF formula_terms)");
+  app.add_option("--formula-term", f->formula_terms,
+                 "A CF formula term the files lack, NAME=VALUE in the units the formula "
+                 "expects (e.g. P0=100000 for a hybrid sigma-pressure P0 in Pa); repeatable");
   app.add_flag("--nan-as-fill", f->nan_as_fill, "Treat NaN/Inf in the data as missing values");
   app.add_flag("--buffered-input", f->buffered_input,
                "Read every input through netCDF and the page cache. By default, netCDF-4 "

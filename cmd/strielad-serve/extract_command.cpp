@@ -54,16 +54,19 @@ std::optional<FrameTransform> output_transform(const ExtractArgs& args,
   return transform;
 }
 
-// The scene file at --time, resolved against the store. A height variable travels with
-// the meshes as an attribute (the placement reads it).
+// The scene file at --time, resolved against the store. A height variable or the grid
+// geometry's field travels with the meshes as an attribute (the placement reads it).
 ResolvedScene scene_to_extract(const ExtractArgs& args, const format::Manifest& manifest,
                                const std::optional<FrameTransform>& transform) {
   Scene scene = load_scene_file(args.scene);
   if (args.time) scene.time = *args.time;
-  if (transform && transform->vertical().kind == VerticalPlacement::Kind::kHeightVariable &&
-      std::find(scene.attributes.begin(), scene.attributes.end(), transform->vertical().variable) ==
-          scene.attributes.end()) {
-    scene.attributes.push_back(transform->vertical().variable);
+  if (transform) {
+    const VerticalPlacement& v = transform->vertical();
+    const std::string& placing = v.kind == VerticalPlacement::Kind::kGeometry ? v.attribute : v.variable;
+    if (!placing.empty() &&
+        std::find(scene.attributes.begin(), scene.attributes.end(), placing) == scene.attributes.end()) {
+      scene.attributes.push_back(placing);
+    }
   }
   return resolve_scene(scene, manifest, args.scene);
 }

@@ -11,11 +11,14 @@
 #include <chrono>
 
 #include "convert/conversion_limits.h"
+#include "convert/geometry_field_reader.h"
+#include "convert/geometry_plan.h"
 #include "convert/step_converter.h"
 #include "core/checksum.h"
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/version.h"
+#include "format/geometry_file_format.h"
 #include "octree/octree_layout.h"
 #include "store/store.h"
 
@@ -275,6 +278,11 @@ format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOp
   for (std::size_t v = 0; v < codecs.size(); ++v) {
     if (!(codecs[v] == m.codec)) m.variables[v].codec = codecs[v];
   }
+  m.geometry = plan_geometry(catalog, options.scan, m.codec);
+  if (m.geometry && m.geometry->vertical.kind == format::VerticalGeometry::Kind::kField) {
+    check_conversion_memory(layout, m.geometry->vertical.dtype, sizeof(double), options.threads,
+                            options.memory_limit, "the grid geometry");
+  }
   m.format_version = format::version_for_plan(m);
   m.store_id = format::compute_store_id(m);
   return m;
@@ -333,6 +341,32 @@ std::vector<std::uint32_t> steps_to_convert(const Store& store, std::uint32_t fi
                  last - first + 1);
   }
   return todo;
+}
+
+// The store's GEOMETRY file (the surface height) and geometry.bricks (a time-invariant
+// vertical field), each written once, atomically, when absent: Slurm array tasks that
+// race write the same bytes, and a resumed conversion keeps what is there.
+void write_geometry_files(const ingest::InputCatalog& catalog, const format::Manifest& plan,
+                          const OctreeLayout& layout, const ConvertOptions& options) {
+  if (!plan.geometry) return;
+  const auto geometry_path = options.store / "GEOMETRY";
+  if (plan.geometry->surface && !std::filesystem::exists(geometry_path)) {
+    format::GeometryFile file;
+    file.store_id = plan.store_id;
+    file.coordinates.nx = static_cast<std::uint32_t>(plan.x.size());
+    file.coordinates.ny = static_cast<std::uint32_t>(plan.y.size());
+    std::vector<double> surface(plan.x.size() * plan.y.size());
+    ingest::SlabReader(catalog, options.scan).read_surface(surface);
+    file.coordinates.surface_m = std::move(surface);
+    write_file_atomically(geometry_path, format::encode_geometry_file(file));
+  }
+  const auto bricks_path = options.store / "geometry.bricks";
+  if (has_time_invariant_geometry(plan) && !std::filesystem::exists(bricks_path)) {
+    ingest::SlabReader reader(catalog, options.scan);
+    const StepCounts c = convert_geometry_bricks(plan, layout, reader, bricks_path);
+    spdlog::info("grid geometry: {} bricks ({} with data), {:.1f} MB", c.empty + c.constant + c.data,
+                 c.data, static_cast<double>(c.file_bytes) / 1e6);
+  }
 }
 
 void convert_steps(const ingest::InputCatalog& catalog, const format::Manifest& plan,
@@ -399,6 +433,7 @@ ConvertResult convert(const ConvertOptions& options) {
     return result;
   }
   remove_stale_temporaries(options.store, first, last);
+  write_geometry_files(catalog, plan, layout, options);
 
   const auto store = Store::open(options.store, StoreOpenOptions{.allow_incomplete = true});
   const std::vector<std::uint32_t> todo = steps_to_convert(*store, first, last, result);

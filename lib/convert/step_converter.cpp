@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <new>
@@ -17,6 +18,7 @@
 #include "convert/brick_encoder.h"
 #include "convert/level_sampler.h"
 #include "convert/step_writer.h"
+#include "convert/geometry_field_reader.h"
 #include "core/error.h"
 
 namespace strielad::build {
@@ -123,14 +125,36 @@ std::pair<std::size_t, std::size_t> coarse_planes_for(std::size_t f0, std::size_
   return {(f0 + 1) / 2, last ? coarse_n : f1 / 2 + 1};
 }
 
-// One variable of one step: level 0 read slab by slab and encoded while the next level
+// Reads level-0 planes [z0, z1) of one field of the step into `out`.
+template <typename T>
+using PlaneReader = std::function<void(std::size_t z0, std::size_t z1, std::span<T> out)>;
+
+// One field of a step file: a variable, or the grid geometry's vertical field.
+template <typename T>
+struct SectionSource {
+  std::uint32_t section = 0;          // its section in the step file
+  const format::CodecSpec* codec = nullptr;
+  std::size_t source_bytes_per_sample = 4;
+  PlaneReader<T> read;
+};
+
+// A variable's section: read from the inputs by the SlabReader.
+template <typename T>
+SectionSource<T> variable_source(Context& ctx, std::uint32_t v) {
+  return {v, &ctx.manifest.codec_of(v), source_type_size(ctx.manifest.variables[v].source_type),
+          [&ctx, v](std::size_t z0, std::size_t z1, std::span<T> out) {
+            ctx.reader.read(v, ctx.step, z0, z1, out);
+          }};
+}
+
+// One field of one step: level 0 read slab by slab and encoded while the next level
 // is downsampled from it; the coarser levels then encoded from dense grids.
 template <typename T>
 class VariableConversion {
  public:
-  VariableConversion(Context& ctx, std::uint32_t v)
+  VariableConversion(Context& ctx, SectionSource<T> source)
       : ctx_(ctx),
-        v_(v),
+        v_(source.section),
         layout_(ctx.layout),
         l0_(layout_.level(0)),
         nx_(l0_.samples[0]),
@@ -138,9 +162,10 @@ class VariableConversion {
         nz_(l0_.samples[2]),
         plane_(nx_ * ny_),
         brick_(layout_.brick()),
-        codec_(ctx.manifest.codec_of(v)),
+        codec_(*source.codec),
         has_coarse_(layout_.level_count() > 1),
-        src_size_(source_type_size(ctx.manifest.variables[v].source_type)),
+        src_size_(source.source_bytes_per_sample),
+        read_(std::move(source.read)),
         stats_(l0_.node_count()) {
     if (has_coarse_) {
       coarse_dims_ = layout_.level(1).samples;
@@ -202,7 +227,7 @@ class VariableConversion {
     if (read_from < s->z_end) {
       std::span<T> out(s->planes.get() + (read_from - s->z_begin) * plane_,
                        (s->z_end - read_from) * plane_);
-      ctx_.reader.read(v_, ctx_.step, read_from, s->z_end, out);
+      read_(read_from, s->z_end, out);
       const std::uint64_t bytes = out.size() * src_size_;
       ctx_.counts.input_bytes += bytes;
       if (ctx_.progress) ctx_.progress(bytes);
@@ -287,6 +312,7 @@ class VariableConversion {
   const format::CodecSpec& codec_;
   const bool has_coarse_;
   const std::size_t src_size_;
+  const PlaneReader<T> read_;
 
   std::vector<T> coarse_;  // the level below the one being encoded, dense
   std::array<std::size_t, 3> coarse_dims_{};
@@ -297,6 +323,26 @@ class VariableConversion {
   std::shared_ptr<T[]> previous_;  // the last slab's planes [prev_begin_, prev_end_)
   std::size_t prev_begin_ = 0, prev_end_ = 0;
 };
+
+// The geometry field of `step` (time step 0 for a time-invariant one) as `section`, in
+// its stored dtype, its columns checked level by level.
+void convert_geometry_section(Context& ctx, std::uint32_t step, std::uint32_t section) {
+  const format::VerticalGeometry& vertical = ctx.manifest.geometry->vertical;
+  auto field = std::make_shared<GeometryFieldReader>(ctx.reader, ctx.manifest, step);
+  if (vertical.dtype == DType::kFloat32) {
+    VariableConversion<float>(ctx, {section, &vertical.codec, sizeof(double),
+                                    [field](std::size_t z0, std::size_t z1, std::span<float> out) {
+                                      field->read(z0, z1, out);
+                                    }})
+        .run();
+  } else {
+    VariableConversion<double>(ctx, {section, &vertical.codec, sizeof(double),
+                                     [field](std::size_t z0, std::size_t z1, std::span<double> out) {
+                                       field->read(z0, z1, out);
+                                     }})
+        .run();
+  }
+}
 
 }  // namespace
 
@@ -317,16 +363,38 @@ StepCounts convert_step(const format::Manifest& manifest, const OctreeLayout& la
   header.step = step;
   header.variable_count = static_cast<std::uint32_t>(manifest.variables.size());
   header.node_count = static_cast<std::uint32_t>(layout.node_count());
+  const bool geometry_section = has_time_varying_geometry(manifest);
+  if (geometry_section) ++header.variable_count;  // section V: the geometry field
   StepWriter writer(out_path, header);
   PlaneBufferPool buffers;
   Context ctx{buffers, manifest, layout, reader, step, writer, counts, progress};
-  for (std::uint32_t v = 0; v < header.variable_count; ++v) {
+  for (std::uint32_t v = 0; v < manifest.variables.size(); ++v) {
     if (manifest.variables[v].dtype == DType::kFloat32) {
-      VariableConversion<float>(ctx, v).run();
+      VariableConversion<float>(ctx, variable_source<float>(ctx, v)).run();
     } else {
-      VariableConversion<double>(ctx, v).run();
+      VariableConversion<double>(ctx, variable_source<double>(ctx, v)).run();
     }
   }
+  if (geometry_section) convert_geometry_section(ctx, step, header.variable_count - 1);
+  writer.commit();
+  counts.file_bytes = std::filesystem::file_size(out_path);
+  return counts;
+}
+
+StepCounts convert_geometry_bricks(const format::Manifest& manifest, const OctreeLayout& layout,
+                                   ingest::SlabReader& reader,
+                                   const std::filesystem::path& out_path) {
+  StepCounts counts;
+  format::StepHeader header;
+  header.store_id = manifest.store_id;
+  header.step = format::kGeometryStep;
+  header.variable_count = 1;
+  header.node_count = static_cast<std::uint32_t>(layout.node_count());
+  StepWriter writer(out_path, header);
+  PlaneBufferPool buffers;
+  const ProgressFn no_progress;
+  Context ctx{buffers, manifest, layout, reader, 0, writer, counts, no_progress};
+  convert_geometry_section(ctx, 0, 0);
   writer.commit();
   counts.file_bytes = std::filesystem::file_size(out_path);
   return counts;

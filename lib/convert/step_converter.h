@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Converts one time step (every variable) into its step file. Memory stays bounded: the
+// Converts one time step (every variable, and a time-varying grid geometry field as the
+// last section) into its step file. Memory stays bounded: the
 // full-resolution level is streamed in slabs of one brick layer (B+3 planes), while the
 // coarser levels (at most 1/4 of the data) are held densely.
 #pragma once
@@ -28,6 +29,15 @@ using ProgressFn = std::function<void(std::uint64_t bytes)>;
 StepCounts convert_step(const format::Manifest& manifest, const OctreeLayout& layout,
                         ingest::SlabReader& reader, std::uint32_t step,
                         const std::filesystem::path& out_path, const ProgressFn& progress);
+
+// The time-invariant grid geometry field (manifest.geometry, vertical kind field, not
+// varying in time) as the file geometry.bricks (formats/store.md, "Geometry bricks"),
+// evaluated at time step 0. \error kInvalidInput naming the source variables, the sample
+// and the step for a column whose height or pressure is not strictly monotonic in the
+// direction of column (0, 0), or missing.
+StepCounts convert_geometry_bricks(const format::Manifest& manifest, const OctreeLayout& layout,
+                                   ingest::SlabReader& reader,
+                                   const std::filesystem::path& out_path);
 
 // Bytes per sample of a netCDF source type name ("float" -> 4, "short" -> 2 ...).
 std::size_t source_type_size(std::string_view type);

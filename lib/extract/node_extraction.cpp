@@ -9,6 +9,7 @@
 #include <map>
 
 #include "core/error.h"
+#include "format/geometry_field.h"
 #include "grid/longitude_turns.h"
 #include "extract/geographic_conditions.h"
 #include "extract/node_extractor.h"
@@ -58,7 +59,7 @@ namespace {
 std::string range_miss(const format::IndexEntry& e, const ResolvedLimit& limit,
                        const format::Manifest& m) {
   if (limit_excludes_node(e, limit)) {
-    return fmt::format("{} in [{}, {}] never within [{}, {}]", m.variables[limit.variable].name,
+    return fmt::format("{} in [{}, {}] never within [{}, {}]", format::variable_name(m, limit.variable),
                        e.min, e.max, limit.min, limit.max);
   }
   return "";
@@ -131,7 +132,7 @@ std::vector<SubVolumePlan> plan_subvolumes(const Store& store, const ResolvedSce
       const format::IndexEntry& e = store.node_entry(step, limit.variable, node);
       if (!e.has_valid_data()) {
         r.outcome = NodeOutcome::kSkippedNoData;
-        r.reason = fmt::format("{} has no valid sample in the node", m.variables[limit.variable].name);
+        r.reason = fmt::format("{} has no valid sample in the node", format::variable_name(m, limit.variable));
         break;
       }
       r.reason = range_miss(e, limit, m);
@@ -283,7 +284,8 @@ struct NodeFields {
   std::uint32_t& bricks_used;
   std::map<std::uint32_t, std::uint32_t> field_of{};  // variable -> NodeSamples field
 
-  // The NodeSamples field of `variable`, its brick read now if it is not yet.
+  // The NodeSamples field of `variable` (the grid geometry's field included: Store reads it
+  // under its index, format/geometry_field.h), its brick read now if it is not yet.
   std::uint32_t field(std::uint32_t variable) {
     const auto [it, inserted] = field_of.try_emplace(variable, static_cast<std::uint32_t>(ns.fields.size()));
     if (inserted) {
@@ -365,7 +367,7 @@ void extract_slice(const Store& store, const ResolvedSlice& slice, NodeFields& f
   request.value = slice.value;
   if (slice.is_level()) request.level_field = fields.field(slice.level_variable);
   request.colour_field = fields.field(slice.variable);
-  request.colour_name = store.manifest().variables[slice.variable].name;
+  request.colour_name = format::variable_name(store.manifest(), slice.variable);
   r.mesh = extract_slice_mesh(fields.ns, request, scratch);
   r.outcome = r.mesh.empty() ? NodeOutcome::kEmpty : NodeOutcome::kMesh;
 }
@@ -423,7 +425,7 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
   // The scene's attributes are per-vertex values of sub-volume meshes only.
   for (std::uint32_t v : plans.empty() ? std::vector<std::uint32_t>{} : scene.attributes) {
     attributes.fields.push_back(fields.field(v));
-    attributes.names.push_back(m.variables[v].name);
+    attributes.names.push_back(format::variable_name(m, v));
   }
   for (const SubVolumePlan& plan : plans) {
     throw_if_stopped(stop, store, node);

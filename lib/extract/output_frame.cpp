@@ -5,11 +5,16 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <functional>
 #include <numbers>
+
+#include <fmt/ranges.h>
 
 #include "core/error.h"
 #include "core/vec3.h"
 #include "extract/mesh_metrics.h"
+#include "format/geometry_field.h"
+#include "geo/horizontal_orientation.h"
 #include "geo/standard_atmosphere.h"
 #include "grid/units.h"
 
@@ -153,8 +158,59 @@ std::string_view output_frame_name(OutputFrame frame) {
   return "axis";
 }
 
+namespace {
+
+// Sign of d(z axis value) / d(k).
+int z_axis_direction(const Axis& z) {
+  return z.size() >= 2 && z.values.back() < z.values.front() ? -1 : 1;
+}
+
+// The placement by a version-5 store's vertical geometry.
+VerticalPlacement geometry_placement(const format::Manifest& m) {
+  using format::VerticalGeometry;
+  const format::GridGeometry& g = *m.geometry;
+  if (g.horizontal.kind == format::HorizontalGeometry::Kind::kCurvilinear) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "the store's grid is curvilinear ({} / {}): this build places only grids "
+                     "on longitude/latitude or projection axes",
+                     g.horizontal.lon_variable, g.horizontal.lat_variable);
+  }
+  VerticalPlacement v;
+  v.kind = VerticalPlacement::Kind::kGeometry;
+  v.pressure = g.vertical.quantity == VerticalGeometry::Quantity::kPressure;
+  // orientation = sign d(east, north, up) / d(i, j, k) = horizontal sign x sign dh/dk.
+  const int vertical_per_k = g.orientation * geo::horizontal_orientation(m.x, m.y, m.grid_mapping);
+  v.vertical_sign = vertical_per_k * z_axis_direction(m.z);
+  const std::string what = v.pressure ? "pressure" : "height";
+  const std::string how = g.vertical.formula == format::kGeometryFormulaVariable
+                              ? fmt::format("variable {}", fmt::join(g.vertical.sources, " + "))
+                              : g.vertical.formula;
+  const std::string atmosphere = v.pressure ? ", heights by the ICAO standard atmosphere" : "";
+  if (g.vertical.kind == VerticalGeometry::Kind::kField) {
+    v.attribute = format::geometry_field_name(m);
+    v.description = fmt::format("grid geometry: {} of every sample from {}{}", what, how, atmosphere);
+  } else if (g.vertical.kind == VerticalGeometry::Kind::kLevels) {
+    v.levels = g.vertical.levels;
+    v.description = fmt::format("grid geometry: {} of every level from {}{}", what, how, atmosphere);
+  } else {
+    throw make_error(ErrorCode::kUnsupported, "the store's geometry places no vertical");
+  }
+  return v;
+}
+
+}  // namespace
+
 VerticalPlacement choose_vertical_placement(const format::Manifest& m,
                                             std::optional<std::string> height_var) {
+  if (m.geometry && m.geometry->vertical.kind != format::VerticalGeometry::Kind::kAxis) {
+    if (height_var) {
+      throw make_error(ErrorCode::kInvalidArgument,
+                       "--height-var {}: the store's grid geometry places every sample's height; "
+                       "leave the option out",
+                       *height_var);
+    }
+    return geometry_placement(m);
+  }
   VerticalPlacement v;
   if (m.z.kind == AxisKind::kHeight) {
     const auto scale = m.z.units.empty() ? std::optional<double>(1.0) : metres_per_length_unit(m.z.units);
@@ -281,21 +337,43 @@ std::array<double, 3> FrameTransform::lon_lat_height(const std::array<double, 3>
     case VerticalPlacement::Kind::kHeightAxis: h = p[2] * z_unit_; break;
     case VerticalPlacement::Kind::kStandardAtmosphere: h = geo::standard_height_m(p[2] * z_unit_); break;
     case VerticalPlacement::Kind::kHeightVariable: h = height * vertical_.metres_per_unit; break;
+    case VerticalPlacement::Kind::kGeometry: {
+      const double value = vertical_.levels.empty() ? height : level_value(p[2]);
+      h = vertical_.pressure ? geo::standard_height_m(value) : value;
+      break;
+    }
   }
   return {lon, lat, h};
+}
+
+// kGeometry per level: the level table at axis value z, linear between the levels.
+double FrameTransform::level_value(double z) const {
+  const std::vector<double>& a = manifest_->z.values;
+  const std::vector<double>& l = vertical_.levels;
+  if (a.size() == 1) return l.front();
+  const bool ascending = a.back() > a.front();
+  // First index whose axis value is beyond z, clamped to the last cell.
+  const auto beyond = ascending ? std::upper_bound(a.begin(), a.end(), z)
+                                : std::upper_bound(a.begin(), a.end(), z, std::greater<>());
+  std::size_t k = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(beyond - a.begin(), 1,
+                                                                      static_cast<std::ptrdiff_t>(a.size()) - 1));
+  const double f = (z - a[k - 1]) / (a[k] - a[k - 1]);
+  return (1 - f) * l[k - 1] + f * l[k];
 }
 
 // The attribute that places vertices vertically, or null when the placement uses none.
 const std::vector<float>* FrameTransform::placing_heights(const Mesh& mesh) const {
   const std::vector<float>* heights = nullptr;
-  if (vertical_.kind == VerticalPlacement::Kind::kHeightVariable) {
+  const std::string& name = vertical_.kind == VerticalPlacement::Kind::kGeometry
+                                ? vertical_.attribute
+                                : vertical_.variable;
+  if (placed_by_attribute()) {
     for (std::size_t a = 0; a < mesh.attribute_names.size(); ++a) {
-      if (mesh.attribute_names[a] == vertical_.variable) heights = &mesh.attributes[a];
+      if (mesh.attribute_names[a] == name) heights = &mesh.attributes[a];
     }
     if (heights == nullptr && !mesh.positions.empty()) {
       throw make_error(ErrorCode::kInvalidArgument,
-                       "placing by '{}' needs the meshes to carry it as an attribute",
-                       vertical_.variable);
+                       "placing by '{}' needs the meshes to carry it as an attribute", name);
     }
   }
   return heights;
@@ -326,6 +404,15 @@ FrameTransform::MappedPoint FrameTransform::map_point(const std::array<double, 3
   } else if (vertical_.kind == VerticalPlacement::Kind::kStandardAtmosphere) {
     const double pa = q[2] * z_unit_, dp = std::max(pa * 1e-6, 1e-9);
     jz = {0, 0, (geo::standard_height_m(pa + dp) - geo::standard_height_m(pa - dp)) / (2 * dp) * z_unit_};
+  } else if (vertical_.kind == VerticalPlacement::Kind::kHeightVariable &&
+             manifest_->z.kind == AxisKind::kPressure) {
+    // Heights from a field on pressure levels: only the direction is known (and used, for
+    // the triangles' orientation): up where the pressure falls.
+    jz = {0, 0, -1};
+  } else if (vertical_.kind == VerticalPlacement::Kind::kGeometry) {
+    // Only its direction is used: for the triangles' orientation (normals come from the
+    // placed surface).
+    jz = {0, 0, static_cast<double>(vertical_.vertical_sign)};
   }
   MappedPoint m;
   if (geographic_) {
@@ -352,7 +439,7 @@ void FrameTransform::apply(Mesh& mesh) const {
     const MappedPoint m = map_point(mesh.positions[v], hv);
     const double det = dot(m.cx, cross(m.cy, m.cz));
     if (orientation == 0 && det != 0 && std::isfinite(det)) orientation = det < 0 ? -1 : 1;
-    if (v < mesh.normals.size() && vertical_.kind != VerticalPlacement::Kind::kHeightVariable) {
+    if (v < mesh.normals.size() && !placed_surface()) {
       transform_normal(m.cx, m.cy, m.cz, det, mesh.normals[v]);
     }
     mesh.positions[v] = m.p;
@@ -360,7 +447,7 @@ void FrameTransform::apply(Mesh& mesh) const {
   if (orientation < 0) {  // the map reverses orientation (a pressure axis, say)
     for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
   }
-  if (vertical_.kind == VerticalPlacement::Kind::kHeightVariable && !mesh.normals.empty()) {
+  if (placed_surface() && !mesh.normals.empty()) {
     // Heights from a field: the map's vertical derivatives are not known per vertex, so
     // the normals are the placed surface's own.
     placed_surface_normals(mesh);
@@ -371,6 +458,16 @@ bool FrameTransform::affine() const {
   if (frame_ == OutputFrame::kAxis) return true;
   if (frame_ == OutputFrame::kEcef) return false;
   return projection_.identity() && vertical_.kind == VerticalPlacement::Kind::kHeightAxis;
+}
+
+bool FrameTransform::placed_by_attribute() const {
+  return vertical_.kind == VerticalPlacement::Kind::kHeightVariable ||
+         (vertical_.kind == VerticalPlacement::Kind::kGeometry && vertical_.levels.empty());
+}
+
+bool FrameTransform::placed_surface() const {
+  return vertical_.kind == VerticalPlacement::Kind::kHeightVariable ||
+         vertical_.kind == VerticalPlacement::Kind::kGeometry;
 }
 
 void transform_mesh(Mesh& mesh, const format::Manifest& manifest, OutputFrame frame) {

@@ -41,18 +41,29 @@ struct VerticalPlacement {
     kHeightAxis,          // the z axis is a height (m or km)
     kHeightVariable,      // a variable of the store holds geopotential or height per sample
     kStandardAtmosphere,  // the z axis is a pressure: the ICAO standard atmosphere's height
+    // The store's grid geometry (terrain-following levels): a height or pressure per
+    // sample carried as the attribute format::geometry_field_name() (a pressure placed by
+    // the standard atmosphere), or a height or pressure per level of the z axis.
+    kGeometry,
   };
   Kind kind = Kind::kHeightAxis;
   std::string variable;       // kHeightVariable: the store variable (carried as an attribute)
   double metres_per_unit = 1; // axis units (height axis) or variable units to metres
   std::string description;    // one line for logs and output metadata
+  // kGeometry: the attribute (a per-sample field), or empty for per-level values.
+  std::string attribute;
+  bool pressure = false;         // kGeometry: the values are pressures in Pa
+  std::vector<double> levels;    // kGeometry per level: one height (m) or pressure (Pa) per z
+  int vertical_sign = 1;         // kGeometry: sign of d(height) / d(z axis value)
 };
 
 // The variables a vertical placement would use, in order of preference: `zg`, `gh`,
 // `geopotential_height`, `hgt`, `z`, `phi`, `geopotential` (by name or standard_name
 // geopotential_height / geopotential / height / altitude), with units m, gpm, km, dam
 // or m2 s-2 (geopotential: divided by g0 = 9.80665 m s-2).
-// The placement of store `m`: the height axis; else `height_var` when given (an error
+// The placement of store `m`: its grid geometry when it records a vertical one (an error
+// with `height_var`: the geometry places heights); else the height axis; else
+// `height_var` when given (an error
 // naming it when the store does not have it or its units are not a height or a
 // geopotential); else the first variable above; else, on a pressure axis, the standard
 // atmosphere.
@@ -78,7 +89,7 @@ class FrameTransform {
   const VerticalPlacement& vertical() const { return vertical_; }
 
   // Positions and normals of `mesh`, from axis coordinates into the frame. With a height
-  // variable the mesh must carry it as an attribute (by its name).
+  // variable or a geometry field the mesh must carry it as an attribute (by its name).
   // \error kInvalidArgument naming the variable when the mesh lacks that attribute.
   void apply(Mesh& mesh) const;
 
@@ -95,6 +106,10 @@ class FrameTransform {
   // Axis position q (and the height variable's value hv there) through the map.
   MappedPoint map_point(const std::array<double, 3>& q, double hv) const;
   const std::vector<float>* placing_heights(const Mesh& mesh) const;
+  // Whether heights come from a mesh attribute; whether normals are the placed surface's.
+  bool placed_by_attribute() const;
+  bool placed_surface() const;
+  double level_value(double z) const;  // kGeometry per level
 
   OutputFrame frame_;
   VerticalPlacement vertical_;

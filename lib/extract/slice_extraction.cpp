@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "format/geometry_field.h"
 #include "extract/conditions.h"
 #include "extract/node_extractor.h"
 #include "store/store.h"
@@ -220,7 +221,7 @@ bool skip_slice(const Store& store, const ResolvedSlice& slice, std::uint32_t st
     }
   } else {
     const format::IndexEntry& e = store.node_entry(step, slice.level_variable, node);
-    const std::string& name = m.variables[slice.level_variable].name;
+    const std::string& name = format::variable_name(m, slice.level_variable);
     if (!e.has_valid_data()) {
       result.outcome = NodeOutcome::kSkippedNoData;
       result.reason = fmt::format("{} has no valid sample in the node", name);
@@ -235,7 +236,7 @@ bool skip_slice(const Store& store, const ResolvedSlice& slice, std::uint32_t st
   const format::IndexEntry& colour = store.node_entry(step, slice.variable, node);
   if (!colour.has_valid_data()) {
     result.outcome = NodeOutcome::kSkippedNoData;
-    result.reason = fmt::format("{} has no valid sample in the node", m.variables[slice.variable].name);
+    result.reason = fmt::format("{} has no valid sample in the node", format::variable_name(m, slice.variable));
     return true;
   }
   return false;

@@ -239,6 +239,30 @@ CfTimeUnits parse_cf_time_units(const std::string& units, const std::string& cal
   return CfTimeUnits{r.seconds_per_unit, 2440587.5 + days};
 }
 
+double sun_julian_day(const CfTimeReference& reference, double value) {
+  const double offset = value * reference.seconds_per_unit;
+  if (!std::isfinite(offset) || std::abs(offset) > kMaxDateSeconds) {
+    throw make_error(ErrorCode::kInvalidArgument, "time value {} is {} for a date", value,
+                     std::isfinite(offset) ? "too far from the reference date" : "not finite");
+  }
+  const double total = offset + reference.reference_seconds;  // from the reference day's 00:00
+  const double whole_days = std::floor(total / 86400.0);
+  const double of_day = total - whole_days * 86400.0;
+  const std::int64_t day = reference.reference_day + static_cast<std::int64_t>(whole_days);
+  if (cf_calendar_is_real(reference.calendar)) {
+    return 2440587.5 + static_cast<double>(day) + of_day / 86400.0;
+  }
+  const CfCalendar c = reference.calendar;
+  const CfDate date = cf_date_of_day(c, day);
+  const std::int64_t year_start = cf_day_number(c, CfDate{date.year, 1, 1});
+  const std::int64_t model_length = cf_day_number(c, CfDate{date.year + 1, 1, 1}) - year_start;
+  const CfCalendar g = CfCalendar::kProlepticGregorian;
+  const std::int64_t gregorian_start = cf_day_number(g, CfDate{date.year, 1, 1});
+  const std::int64_t gregorian_length = cf_day_number(g, CfDate{date.year + 1, 1, 1}) - gregorian_start;
+  const std::int64_t gregorian_day = (day - year_start) * gregorian_length / model_length;
+  return 2440587.5 + static_cast<double>(gregorian_start + gregorian_day) + of_day / 86400.0;
+}
+
 double julian_day(int year, unsigned month, unsigned day, double seconds_of_day) {
   const auto days = cf_day_number(CfCalendar::kProlepticGregorian, CfDate{year, month, day});
   return 2440587.5 + static_cast<double>(days) + seconds_of_day / 86400.0;

@@ -61,6 +61,17 @@ struct CfTimeUnits {
 // model calendars (noleap, 360_day, ...), whose dates are not real days.
 CfTimeUnits parse_cf_time_units(const std::string& units, const std::string& calendar = "");
 
+// The instant the sun is placed for at coordinate value `value`, UTC, as a Julian day.
+// In the real calendars it is the value's own instant. A model calendar (noleap, all_leap,
+// 360_day) has no real instants, so the sun keeps the model's season and time of day:
+// the same year and time of day, on the day of the Gregorian year as far through its
+// year as the model's day is through the model year (day d of a year of L days is day
+// floor(d * G / L) of the Gregorian year of G days: 360_day's 30 Feb is 1 Mar, noleap's
+// 1 Mar is 1 Mar in a common year and 29 Feb in a leap year).
+// \error as parse_cf_time_reference (kUnsupported for calendar none), and as
+// cf_date_text for a value too far from the reference.
+double sun_julian_day(const CfTimeReference& reference, double value);
+
 // The Julian day of a (proleptic) Gregorian UTC date and time (seconds may exceed 60:
 // they carry).
 double julian_day(int year, unsigned month, unsigned day, double seconds_of_day);

@@ -347,7 +347,7 @@ InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
 
   SelectedInputs in;
   in.files = scan_distinct_files(inputs);
-  in.names = select_variables(in.files, options.variables);
+  in.names = select_variables(in.files, options.variables, height_field_names(options));
   in.occurrences = usable_occurrences(in.files, in.names);
   check_one_grid(in);
   check_one_grid_mapping(in);

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <set>
 
 #include "core/error.h"
@@ -61,7 +62,8 @@ std::vector<std::string> select_requested(const std::vector<ScannedFile>& files,
   return out;
 }
 
-std::vector<std::string> select_default(const std::vector<ScannedFile>& files) {
+std::vector<std::string> select_default(const std::vector<ScannedFile>& files,
+                                        const std::vector<std::string>& geometry_sources) {
   std::vector<std::string> out;
   std::set<std::string> selected, skipped, logged;
   const ScannedVariable* reference = nullptr;
@@ -75,6 +77,15 @@ std::vector<std::string> select_default(const std::vector<ScannedFile>& files) {
         if (logged.insert(v.name).second) {
           spdlog::debug("{}: '{}' is a coordinate or auxiliary variable: not converted",
                         f.source.path, v.name);
+        }
+        continue;
+      }
+      if (std::find(geometry_sources.begin(), geometry_sources.end(), v.name) !=
+          geometry_sources.end()) {
+        if (logged.insert(v.name).second) {
+          spdlog::info("{}: '{}' places the levels (the grid geometry): not converted as data "
+                       "(name it in --vars to convert it too)",
+                       f.source.path, v.name);
         }
         continue;
       }
@@ -126,8 +137,10 @@ std::vector<std::string> select_default(const std::vector<ScannedFile>& files) {
 }  // namespace
 
 std::vector<std::string> select_variables(const std::vector<ScannedFile>& files,
-                                          const std::vector<std::string>& requested) {
-  return requested.empty() ? select_default(files) : select_requested(files, requested);
+                                          const std::vector<std::string>& requested,
+                                          const std::vector<std::string>& geometry_sources) {
+  return requested.empty() ? select_default(files, geometry_sources)
+                           : select_requested(files, requested);
 }
 
 }  // namespace strielad::ingest

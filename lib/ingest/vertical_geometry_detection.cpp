@@ -111,9 +111,13 @@ std::optional<VerticalGeometrySource> Detector::explicit_height() {
     return height_source({*t});
   }
   std::vector<std::pair<std::string, std::vector<TermVariable>>> candidates;
-  for (const char* name : {"z_mc", "z_ifc", "HHL"}) {
-    if (auto t = reader_.find(name)) candidates.push_back({name, {*t}});
+  // ICON writes z_mc as the mean of z_ifc's half levels: one candidate, z_mc preferred.
+  if (auto t = reader_.find("z_mc")) {
+    candidates.push_back({"z_mc", {*t}});
+  } else if (auto half = reader_.find("z_ifc")) {
+    candidates.push_back({"z_ifc", {*half}});
   }
+  if (auto t = reader_.find("HHL")) candidates.push_back({"HHL", {*t}});
   auto ph = reader_.find("PH");
   auto phb = reader_.find("PHB");
   if (ph && phb) candidates.push_back({"PH + PHB", {*ph, *phb}});
@@ -327,6 +331,12 @@ VerticalDetection Detector::run() {
 }
 
 }  // namespace
+
+std::vector<std::string> height_field_names(const ScanOptions& options) {
+  std::vector<std::string> names{"z_mc", "z_ifc", "HHL", "PH", "PHB"};
+  if (options.height_var) names.push_back(*options.height_var);
+  return names;
+}
 
 VerticalDetection detect_vertical_geometry(const InputCatalog& catalog,
                                            const ScanOptions& options) {

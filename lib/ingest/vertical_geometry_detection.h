@@ -27,6 +27,10 @@ struct VerticalDetection {
 // term variable missing from every file (suggesting --formula-term NAME=VALUE); a
 // time-varying term missing for a time step. kUnsupported: a formula standard_name not
 // supported (the message lists those that are), atmosphere_ln_pressure_coordinate.
+// The variables that would place the levels rather than be data: ScanOptions::height_var,
+// z_mc, z_ifc, HHL, PH and PHB.
+std::vector<std::string> height_field_names(const ScanOptions& options);
+
 VerticalDetection detect_vertical_geometry(const InputCatalog& catalog, const ScanOptions& options);
 
 }  // namespace strielad::ingest

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "format/geometry_field.h"
 #include "format/manifest.h"
 #include "grid/longitude_turns.h"
 #include "scene/scene.h"
@@ -28,10 +29,13 @@ class Names {
     for (std::size_t i = 0; i < manifest_.variables.size(); ++i) {
       if (manifest_.variables[i].name == name) return static_cast<std::uint32_t>(i);
     }
+    const std::string geometry = format::geometry_field_name(manifest_);
+    if (!geometry.empty() && name == geometry) return *format::geometry_field_variable(manifest_);
     std::string list;
     for (const format::StoreVariable& v : manifest_.variables) {
       list += list.empty() ? v.name : fmt::format(", {}", v.name);
     }
+    if (!geometry.empty()) list += fmt::format(", {} (the grid geometry)", geometry);
     fail(ErrorCode::kNotFound, what_, path, "variable '{}' is not in the store (it has: {})", scene_detail::shown(name),
          list);
   }

@@ -218,6 +218,7 @@ std::span<const IndexEntry> Store::section_index(StepState& s, std::uint32_t sec
 }
 
 std::span<const IndexEntry> Store::index(std::uint32_t step, std::uint32_t variable) const {
+  if (variable == variable_count() && has_geometry_field()) return geometry_index(step);
   check_step_and_variable(step, variable);
   return section_index(step_state(step), variable,
                        fmt::format("variable '{}'", manifest_.variables[variable].name));
@@ -271,6 +272,7 @@ Brick Store::decode_brick(StepState& s, const IndexEntry& e, NodeId node, DType 
 }
 
 Brick Store::read_brick(std::uint32_t step, std::uint32_t variable, NodeId node) const {
+  if (variable == variable_count() && has_geometry_field()) return read_geometry_brick(step, node);
   const IndexEntry& e = node_entry(step, variable, node);
   StepState& s = step_state(step);
   return decode_brick(s, e, node, manifest_.variables[variable].dtype, manifest_.codec_of(variable),
@@ -282,6 +284,9 @@ Brick Store::read_brick(std::uint32_t step, std::uint32_t variable, NodeId node)
 
 std::shared_ptr<const Brick> Store::read_brick(std::uint32_t step, std::uint32_t variable,
                                                NodeId node, BrickCache& cache) const {
+  if (variable == variable_count() && has_geometry_field()) {
+    return read_geometry_brick(step, node, cache);
+  }
   const BrickKey key{this, step, variable, node};
   return cache.get_or_load(key, [&] { return read_brick(step, variable, node); });
 }

@@ -60,6 +60,9 @@ class Store {
   // Whether the step's file exists (it may still be damaged).
   bool has_step(std::uint32_t step) const;
 
+  // Variable index variable_count() is the grid geometry's vertical field where the store
+  // has one (format/geometry_field.h): index, node_entry and read_brick read it as
+  // geometry_index and read_geometry_brick do.
   // Statistics of every node of a variable at a step (reads its index section once).
   std::span<const format::IndexEntry> index(std::uint32_t step, std::uint32_t variable) const;
   const format::IndexEntry& node_entry(std::uint32_t step, std::uint32_t variable,

@@ -20,6 +20,17 @@ std::optional<double> step_julian_day(const format::Manifest& manifest, std::uin
   }
 }
 
+std::optional<double> step_sun_julian_day(const format::Manifest& manifest, std::uint32_t step,
+                                          double seconds_after) {
+  if (step >= manifest.time.values.size()) return std::nullopt;
+  try {
+    const auto reference = geo::parse_cf_time_reference(manifest.time.units, manifest.time.calendar);
+    return geo::sun_julian_day(reference, manifest.time.values[step]) + seconds_after / 86400.0;
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
 std::string step_time_text(const format::Manifest& manifest, std::uint32_t step) {
   const TimeAxis& t = manifest.time;
   if (step >= t.values.size()) return "";

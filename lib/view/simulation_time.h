@@ -17,6 +17,14 @@ namespace strielad::view {
 std::optional<double> step_julian_day(const format::Manifest& manifest, std::uint32_t step,
                                       double seconds_after = 0);
 
+// The instant the sun is placed for at step `step` (plus `seconds_after`), UTC, as a
+// Julian day: the step's instant in the real calendars; in a model calendar (noleap,
+// all_leap, 360_day) the model's season and time of day on the Gregorian calendar
+// (geo::sun_julian_day). Nothing when `step` is not a step of the store or the time
+// axis has no dates (units not "<unit> since <date>", calendar none).
+std::optional<double> step_sun_julian_day(const format::Manifest& manifest, std::uint32_t step,
+                                          double seconds_after = 0);
+
 // The panel's text for step `step`, two lines: the raw value with the axis's name and
 // units ("time = 20500.5 days since 1949-12-01 00:00:00"), then its date in the store's
 // calendar ("2006-01-16T12:00:00Z, proleptic_gregorian calendar") or why it has none

@@ -93,7 +93,7 @@ SunAtTime sun_for_domain(double julian_day, double lon_lo, double lon_hi, double
 std::optional<SunAtTime> sun_at_step(const lod::WorldFrame& frame, const format::Manifest& manifest,
                                      std::uint32_t step, double seconds_after) {
   if (!frame.on_earth()) return std::nullopt;
-  const auto jd = step_julian_day(manifest, step, seconds_after);
+  const auto jd = step_sun_julian_day(manifest, step, seconds_after);
   if (!jd) return std::nullopt;
   const auto b = frame.geographic_bounds();
   return sun_for_domain(*jd, b.lon_lo, b.lon_hi, std::max(b.lat_lo, -90.0),

@@ -47,8 +47,9 @@ double domain_longitude_span_deg(const lod::WorldFrame& frame);
 // The sun at time step `step` plus `seconds_after` seconds, seen from the point the
 // rule above picks, by true longitude and latitude (through the grid mapping on a
 // mapped frame). Nothing when the frame has no place on the Earth (a Cartesian grid:
-// WorldFrame::no_earth_reason) or the time axis has no real date (units not "<unit>
-// since <date>", or a model calendar such as 360_day).
+// WorldFrame::no_earth_reason) or the time axis has no date (units not "<unit> since
+// <date>", calendar none). A model calendar (360_day, ...) keeps the model's season and
+// time of day (step_sun_julian_day).
 std::optional<SunAtTime> sun_at_step(const lod::WorldFrame& frame, const format::Manifest& manifest,
                                      std::uint32_t step, double seconds_after = 0);
 

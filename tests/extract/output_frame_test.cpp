@@ -151,3 +151,41 @@ TEST(OutputFrameTest, ACartesianGridHasNoPlaceOnTheEarth) {
 
 }  // namespace
 }  // namespace strielad
+
+namespace strielad {
+namespace {
+
+TEST(OutputFrameTest, MeshesPlacedByAGeopotentialOnPressureLevelsStayOutward) {
+  // 1000 to 200 hPa with geopotential heights: the pressure axis grows downwards.
+  format::Manifest m = lon_lat_height(10.8, 11.2, 47.9, 48.1, 1, 9);
+  m.z = Axis{"plev", AxisKind::kPressure, "hPa", "", "", "", {}};
+  for (int i = 0; i < 9; ++i) m.z.values.push_back(200.0 + 100.0 * i);
+  format::StoreVariable t, z;
+  t.name = "t";
+  z.name = "z";
+  z.units = "m";
+  m.variables = {t, z};
+  NodeSamples s;
+  s.coords = {m.x.values, m.y.values, m.z.values};
+  std::vector<float> blob, height;
+  for (double p : s.coords[2])
+    for (double y : s.coords[1])
+      for (double x : s.coords[0]) {
+        const double dx = (x - 11.0) / 0.15, dy = (y - 48.0) / 0.07, dz = (p - 600.0) / 250.0;
+        blob.push_back(static_cast<float>(dx * dx + dy * dy + dz * dz));
+        height.push_back(static_cast<float>(44330.8 * (1 - std::pow(p / 1013.25, 0.190263))));
+      }
+  s.fields = {blob, height};
+  ExtractRequest r;
+  r.limits = {{0, -kUnbounded, 0.6}};
+  r.attribute_fields = {1};
+  r.attribute_names = {"z"};
+  Mesh mesh = extract_node_mesh(s, r);
+  ASSERT_FALSE(mesh.triangles.empty());
+  transform_mesh(mesh, m, OutputFrame::kLocalMetric);
+  EXPECT_TRUE(check_mesh(mesh).closed());
+  EXPECT_GT(enclosed_volume(mesh), 0);
+}
+
+}  // namespace
+}  // namespace strielad

@@ -2,8 +2,8 @@
 // The viewer's sun (lib/view/sun_direction.h): the true sun over the domain centre at
 // a step's time (plus seconds within the step); over a domain wider than 30 degrees of
 // longitude the sun of its sunniest point, so a global domain whose centre is at night
-// is lit as its day side; and no sun where the store has no real date or no
-// longitude/latitude.
+// is lit as its day side; model calendars keep their season and time of day; and no
+// sun where the store has no date or no longitude/latitude.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -42,8 +42,8 @@ TEST(SunDirectionTest, TheTrueSunOverTheDomainCentre) {
 }
 
 TEST(SunDirectionTest, NoSunWithoutADateOrAPlace) {
-  const auto model = manifest_at("seconds since 2013-04-26 00:00:00", "360_day");
-  EXPECT_FALSE(sun_at_step(lod::WorldFrame(model), model, 0));
+  const auto none = manifest_at("seconds since 2013-04-26 00:00:00", "none");
+  EXPECT_FALSE(sun_at_step(lod::WorldFrame(none), none, 0));
   const auto steps = manifest_at("steps");
   EXPECT_FALSE(sun_at_step(lod::WorldFrame(steps), steps, 0));
   // A projected grid (x/y in metres; read with kinds longitude/latitude, as ingest does).
@@ -51,6 +51,29 @@ TEST(SunDirectionTest, NoSunWithoutADateOrAPlace) {
   metric.x = Axis{"x", AxisKind::kLongitude, "m", "", "", "", lod::testing::linspace(0, 1e5, 11)};
   metric.y = Axis{"y", AxisKind::kLatitude, "m", "", "", "", lod::testing::linspace(0, 1e5, 8)};
   EXPECT_FALSE(sun_at_step(lod::WorldFrame(metric), metric, 0));
+}
+
+TEST(SunDirectionTest, ModelCalendarsKeepTheirSeasonAndTimeOfDay) {
+  // 360_day 2013-04-26 is day 115 of 360: day floor(115 * 365 / 360) = 116 of 2013, 27 April.
+  const auto model = manifest_at("seconds since 2013-04-26 00:00:00", "360_day");
+  const lod::WorldFrame frame(model);
+  const auto noon = sun_at_step(frame, model, 2);
+  ASSERT_TRUE(noon);
+  const auto expected = geo::solar_position(geo::julian_day(2013, 4, 27, 43200), frame.lat0(),
+                                            frame.lon0());
+  for (int a = 0; a < 3; ++a) EXPECT_DOUBLE_EQ(noon->direction[a], expected.east_north_up[a]);
+  // noleap 2000-03-01 06:00 (day 59 of 365) is 2000-02-29 06:00 of the leap year (day 59 of 366).
+  const auto noleap = manifest_at("hours since 2000-03-01 00:00:00", "noleap");
+  const auto morning = sun_at_step(lod::WorldFrame(noleap), noleap, 0, 6 * 3600);
+  ASSERT_TRUE(morning);
+  const auto at = geo::solar_position(geo::julian_day(2000, 2, 29, 6 * 3600), frame.lat0(), frame.lon0());
+  for (int a = 0; a < 3; ++a) EXPECT_DOUBLE_EQ(morning->direction[a], at.east_north_up[a]);
+  // The real calendars are unchanged: 2013-04-26 noon is 2013-04-26 noon.
+  const auto real = manifest_at("seconds since 2013-04-26 00:00:00", "proleptic_gregorian");
+  const auto real_noon = sun_at_step(lod::WorldFrame(real), real, 2);
+  ASSERT_TRUE(real_noon);
+  const auto same = geo::solar_position(geo::julian_day(2013, 4, 26, 43200), frame.lat0(), frame.lon0());
+  for (int a = 0; a < 3; ++a) EXPECT_DOUBLE_EQ(real_noon->direction[a], same.east_north_up[a]);
 }
 
 // A global grid like a 2.5-degree forecast at 12 UTC on 21 June: the domain centre

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: Apache-2.0
+// The grid geometry's vertical field (a height or pressure per sample of a terrain-
+// following grid) read from the inputs for conversion: evaluated in double by the
+// SlabReader, rounded to the field's stored dtype, and every column checked, level by
+// level, to run strictly in the store's recorded direction (formats/store.md, "Grid
+// geometry (version 5)": `orientation`).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "format/manifest.h"
+#include "ingest/slab_reader.h"
+
+namespace strielad::build {
+
+// Whether the manifest's geometry has a per-sample vertical field that changes between
+// time steps (one section per step file) / that does not (geometry.bricks).
+bool has_time_varying_geometry(const format::Manifest& manifest);
+bool has_time_invariant_geometry(const format::Manifest& manifest);
+
+// +1 when the field's values grow with the level index k, -1 when they shrink: from the
+// manifest's orientation and the horizontal axes (a height grows upwards, a pressure
+// shrinks).
+int field_direction_per_level(const format::Manifest& manifest);
+
+// Reads planes of one step's field in increasing z, each call continuing the last (as the
+// converter streams slabs).
+class GeometryFieldReader {
+ public:
+  GeometryFieldReader(ingest::SlabReader& reader, const format::Manifest& manifest,
+                      std::uint32_t step);
+
+  // Planes [z0, z1), x fastest. \error kInvalidInput naming the field's source variables,
+  // the sample (i, j, k) and the step, where a value does not move strictly in the
+  // field's direction from the level below it.
+  void read(std::size_t z0, std::size_t z1, std::span<float> out);
+  void read(std::size_t z0, std::size_t z1, std::span<double> out);
+
+ private:
+  template <typename T>
+  void read_any(std::size_t z0, std::size_t z1, std::span<T> out);
+
+  ingest::SlabReader& reader_;
+  const format::Manifest& manifest_;
+  std::uint32_t step_;
+  int direction_;
+  std::size_t plane_;
+  std::vector<double> values_;     // the planes just read, in double
+  std::vector<double> previous_;   // the last level checked (as stored)
+  std::size_t previous_k_ = 0;
+  bool has_previous_ = false;
+};
+
+}  // namespace strielad::build
