@@ -263,6 +263,49 @@ double sun_julian_day(const CfTimeReference& reference, double value) {
   return 2440587.5 + static_cast<double>(gregorian_start + gregorian_day) + of_day / 86400.0;
 }
 
+bool is_absolute_day_units(std::string_view units) {
+  std::string u;
+  for (char c : units) u += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  while (!u.empty() && u.back() == ' ') u.pop_back();
+  return u == "day as %y%m%d.%f" || u == "days as %y%m%d.%f";
+}
+
+double absolute_day_seconds(double value) {
+  const double whole = std::floor(value);
+  const auto bad = [&](std::string_view why) {
+    return make_error(ErrorCode::kInvalidInput,
+                      "absolute time value {} (units 'day as %Y%m%d.%f'): {}", value, why);
+  };
+  if (!std::isfinite(value) || value < 0 || whole > 99999999) throw bad("not a date YYYYMMDD");
+  const auto ymd = static_cast<std::int64_t>(whole);
+  const CfDate date{ymd / 10000, static_cast<unsigned>(ymd / 100 % 100),
+                    static_cast<unsigned>(ymd % 100)};
+  if (!cf_date_exists(CfCalendar::kProlepticGregorian, date)) {
+    throw bad("its integer part is not a date YYYYMMDD");
+  }
+  const std::int64_t day = cf_day_number(CfCalendar::kProlepticGregorian, date);
+  const double ms = std::round((value - whole) * 86'400'000.0);
+  return static_cast<double>(day) * 86400.0 + ms / 1000.0;
+}
+
+double convert_time_value(double value, const CfTimeReference& from, const CfTimeReference& to) {
+  if (from.calendar != to.calendar) {
+    throw make_error(ErrorCode::kInvalidInput,
+                     "time in calendar '{}' cannot be expressed in calendar '{}'",
+                     cf_calendar_name(from.calendar), cf_calendar_name(to.calendar));
+  }
+  const double offset = value * from.seconds_per_unit;
+  if (!std::isfinite(offset) || std::abs(offset) > kMaxDateSeconds) {
+    throw make_error(ErrorCode::kInvalidInput, "time value {} is {}", value,
+                     std::isfinite(offset) ? "too far from its reference date" : "not finite");
+  }
+  // Seconds from `to`'s reference instant, to the millisecond.
+  const double seconds = static_cast<double>(from.reference_day - to.reference_day) * 86400.0 +
+                         (from.reference_seconds - to.reference_seconds) + offset;
+  const double ms = std::round(seconds * 1000.0);
+  return ms / 1000.0 / to.seconds_per_unit;
+}
+
 double julian_day(int year, unsigned month, unsigned day, double seconds_of_day) {
   const auto days = cf_day_number(CfCalendar::kProlepticGregorian, CfDate{year, month, day});
   return 2440587.5 + static_cast<double>(days) + seconds_of_day / 86400.0;

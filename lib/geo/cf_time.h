@@ -72,6 +72,25 @@ CfTimeUnits parse_cf_time_units(const std::string& units, const std::string& cal
 // cf_date_text for a value too far from the reference.
 double sun_julian_day(const CfTimeReference& reference, double value);
 
+// ICON's (and CDO's) absolute time axis, units "day as %Y%m%d.%f": the value
+// 20130426.5 is 2013-04-26 12:00:00 UTC in the proleptic Gregorian calendar.
+bool is_absolute_day_units(std::string_view units);
+
+// The units and calendar absolute day values become: a CF time axis of Unix seconds.
+inline constexpr std::string_view kUnixSecondsUnits = "seconds since 1970-01-01 00:00:00";
+
+// Seconds since 1970-01-01 00:00:00 UTC (proleptic Gregorian) of an absolute day value,
+// the fraction of the day rounded to the millisecond.
+// \error kInvalidInput naming `value` when it is not finite, its integer part is not a
+// date YYYYMMDD of the proleptic Gregorian calendar, or it is negative.
+double absolute_day_seconds(double value);
+
+// A value of time axis `from` (units and calendar) in the units of `to`: the same
+// instant, to the millisecond. Calendars must agree ("", standard and gregorian are one).
+// \error as parse_cf_time_reference for either axis; kInvalidInput naming both
+// calendars when they differ.
+double convert_time_value(double value, const CfTimeReference& from, const CfTimeReference& to);
+
 // The Julian day of a (proleptic) Gregorian UTC date and time (seconds may exceed 60:
 // they carry).
 double julian_day(int year, unsigned month, unsigned day, double seconds_of_day);

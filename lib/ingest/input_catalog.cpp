@@ -22,6 +22,7 @@
 #include "ingest/grid_compare.h"
 #include "ingest/netcdf_file.h"
 #include "ingest/variable_selection.h"
+#include "ingest/time_reconciliation.h"
 #include "ingest/vertical_geometry_detection.h"
 
 namespace strielad::ingest {
@@ -32,22 +33,16 @@ struct Occurrence {
   const ScannedVariable* variable = nullptr;
 };
 
-std::string normalized_calendar(std::string_view calendar) {
-  std::string c(calendar);
-  for (char& ch : c) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  if (c.empty() || c == "gregorian") return "standard";
-  return c;
-}
-
 std::string describe_time_units(const ScannedVariable& v) {
   if (!v.time) return "no time dimension";
   return fmt::format("time units '{}' (calendar '{}')", v.time->units, v.time->calendar);
 }
 
-std::string time_text(double value, const std::optional<TimeCoordinate>& time) {
-  if (!time) return "(the single step of a file without time dimension)";
-  return time->units.empty() ? fmt::format("{}", value)
-                             : fmt::format("{} ({})", value, time->units);
+// A time value in the catalog's units (`reconciler`; none: files without time).
+std::string time_text(double value, const std::optional<TimeUnitsReconciler>& reconciler) {
+  if (!reconciler) return "(the single step of a file without time dimension)";
+  return reconciler->units().empty() ? fmt::format("{}", value)
+                                     : fmt::format("{} ({})", value, reconciler->units());
 }
 
 template <typename T>
@@ -198,30 +193,27 @@ const Occurrence& time_reference(const SelectedInputs& in) {
   return in.reference();
 }
 
-bool same_time_units(const ScannedVariable& a, const ScannedVariable& b) {
-  return a.time.has_value() == b.time.has_value() &&
-         (!a.time || (a.time->units == b.time->units &&
-                      normalized_calendar(a.time->calendar) ==
-                          normalized_calendar(b.time->calendar)));
-}
-
-// Where each (variable, time) is: the same units and calendar everywhere, each step in
-// exactly one file.
-std::vector<std::map<double, VariableLocation>> locate_time_steps(const SelectedInputs& in,
-                                                                  const Occurrence& tref_occ) {
+// Where each (variable, time) is: every time in the reference's units (`reconciler`),
+// each step in exactly one file.
+std::vector<std::map<double, VariableLocation>> locate_time_steps(
+    const SelectedInputs& in, const Occurrence& tref_occ,
+    const std::optional<TimeUnitsReconciler>& reconciler) {
   const ScannedVariable& tref = *tref_occ.variable;
   std::vector<std::map<double, VariableLocation>> steps(in.names.size());
   for (std::size_t v = 0; v < in.names.size(); ++v) {
     for (const Occurrence& occ : in.occurrences[v]) {
       const ScannedVariable& sv = *occ.variable;
-      if (!same_time_units(sv, tref)) {
+      if (sv.time.has_value() != tref.time.has_value()) {
         throw make_error(ErrorCode::kInvalidInput,
                          "{}: variable '{}' has {} but {} has {} (variable '{}'); all inputs must "
-                         "use the same time units and calendar",
+                         "have a time dimension, or none",
                          in.path(occ.file), sv.name, describe_time_units(sv),
                          in.path(tref_occ.file), describe_time_units(tref), tref.name);
       }
-      const std::vector<double> values = sv.time ? sv.time->values : std::vector<double>{0.0};
+      const std::vector<double> values =
+          sv.time ? reconciler->values(*sv.time, fmt::format("{}: variable '{}'",
+                                                             in.path(occ.file), sv.name))
+                  : std::vector<double>{0.0};
       for (std::size_t i = 0; i < values.size(); ++i) {
         auto [it, inserted] = steps[v].emplace(values[i], VariableLocation{occ.file, i, {}});
         if (inserted) continue;
@@ -233,7 +225,7 @@ std::vector<std::map<double, VariableLocation>> locate_time_steps(const Selected
         }
         throw make_error(ErrorCode::kInvalidInput,
                          "variable '{}' time {} is in both {} and {} (duplicate time step)",
-                         sv.name, time_text(values[i], sv.time), in.path(it->second.file),
+                         sv.name, time_text(values[i], reconciler), in.path(it->second.file),
                          in.path(occ.file));
       }
     }
@@ -244,7 +236,7 @@ std::vector<std::map<double, VariableLocation>> locate_time_steps(const Selected
 // The union of all time steps, each of which every variable must have.
 std::vector<double> common_time_steps(const SelectedInputs& in,
                                       const std::vector<std::map<double, VariableLocation>>& steps,
-                                      const std::optional<TimeCoordinate>& reference_time) {
+                                      const std::optional<TimeUnitsReconciler>& reconciler) {
   std::set<double> all_times;
   for (const auto& s : steps) {
     for (const auto& [t, loc] : s) all_times.insert(t);
@@ -259,7 +251,7 @@ std::vector<double> common_time_steps(const SelectedInputs& in,
         throw make_error(ErrorCode::kInvalidInput,
                          "variable '{}' has no time step {}, which {} has for variable '{}'; "
                          "every variable must have the same time steps",
-                         in.names[v], time_text(t, reference_time), in.path(it->second.file),
+                         in.names[v], time_text(t, reconciler), in.path(it->second.file),
                          in.names[w]);
       }
     }
@@ -355,15 +347,21 @@ InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
 
   const Occurrence& tref_occ = time_reference(in);
   const ScannedVariable& tref = *tref_occ.variable;
-  const std::vector<std::map<double, VariableLocation>> steps = locate_time_steps(in, tref_occ);
-  const std::vector<double> merged = common_time_steps(in, steps, tref.time);
+  std::optional<TimeUnitsReconciler> reconciler;
+  if (tref.time) {
+    reconciler.emplace(*tref.time,
+                       fmt::format("{}: variable '{}'", in.path(tref_occ.file), tref.name));
+  }
+  const std::vector<std::map<double, VariableLocation>> steps =
+      locate_time_steps(in, tref_occ, reconciler);
+  const std::vector<double> merged = common_time_steps(in, steps, reconciler);
   const std::size_t n = merged.size();
   const StepRange range = requested_steps(options, n);
 
   if (tref.time) {
     catalog.time.name = tref.time->name;
-    catalog.time.units = tref.time->units;
-    catalog.time.calendar = tref.time->calendar;
+    catalog.time.units = reconciler->units();
+    catalog.time.calendar = reconciler->calendar();
   }
   catalog.time.values.assign(merged.begin() + static_cast<std::ptrdiff_t>(range.first),
                              merged.begin() + static_cast<std::ptrdiff_t>(range.last) + 1);
