@@ -41,6 +41,12 @@ std::vector<SampleVariable> validate_sample_spec(const SampleSpec& spec) {
                      "sample GRIB bits {}: must be in 1..32, or 0 for IEEE float32",
                      spec.grib_bits);
   }
+  if (spec.format == SampleFormat::kGrib2 && spec.steps > 1 &&
+      std::abs(spec.step_seconds / 60 - std::round(spec.step_seconds / 60)) > 1e-9) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "sample step seconds {}: GRIB validity times are in whole minutes",
+                     spec.step_seconds);
+  }
   if (spec.deflate < 0 || spec.deflate > 9) {
     throw make_error(ErrorCode::kInvalidArgument, "sample deflate level {}: must be in 0..9",
                      spec.deflate);

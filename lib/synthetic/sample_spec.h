@@ -54,7 +54,8 @@ struct SampleResult {
 // kInvalidArgument naming the offending field (zero dims, steps outside
 // 1..kMaxSampleSteps, unknown or
 // duplicate variable, deflate outside 0..9, non-positive step_seconds, a level too
-// large for one HDF5 chunk; with GRIB: deflate, bits outside 0..32).
+// large for one HDF5 chunk; with GRIB: deflate, bits outside 0..32, steps not in whole
+// minutes).
 std::vector<SampleVariable> validate_sample_spec(const SampleSpec& spec);
 
 // File names the spec produces (sample_t000.nc or .grib2 ...), relative to the output directory.

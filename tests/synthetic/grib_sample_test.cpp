@@ -189,6 +189,7 @@ TEST(GribSampleTest, IrregularOrTooSmallGridsAreRefused) {
   spec.steps = 2;
   testing::expect_error([&] { synthetic::write_sample_dataset(spec, dir / "g"); },
                         ErrorCode::kInvalidArgument, {"minutes"});
+  EXPECT_FALSE(std::filesystem::exists(dir / "g" / "sample_t000.grib2"));
   spec.step_seconds = 300;
   spec.grib_bits = 40;
   testing::expect_error([&] { synthetic::validate_sample_spec(spec); },
