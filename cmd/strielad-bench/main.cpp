@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
         bench_cmd::register_robustness(app, action, command_line);
         bench_cmd::register_scene(app, action, command_line);
         bench_cmd::register_scaling(app, action, command_line);
+        bench_cmd::register_grib(app, action, command_line);
         bench_cmd::register_soak(app, action, command_line);
         bench_cmd::register_report(app, action, command_line);
       }};

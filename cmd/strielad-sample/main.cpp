@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // strielad-sample -o DIR [--dims XxYxZ] [--steps N] [--seed S] [--vars a,b,...]
 //                 [--single-file] [--step-seconds S] [--deflate L] [--tracks N] [--terrain N]
-//                 [--model sample|icon|icon-cf|sigma-pressure] [--z-mc] [--json]
+//                 [--model sample|icon|icon-cf|sigma-pressure] [--z-mc]
+//                 [--format netcdf|grib2] [--grib-bits N] [--grib-levels height|model] [--json]
 // Writes the built-in sample: a deterministic synthetic CF-NetCDF-4 dataset (lib/synthetic)
 // that strielad-convert converts like model output, with optional flight tracks and a DEM.
 #include <fmt/ranges.h>
@@ -18,6 +19,7 @@
 #include "cli/progress_bar.h"
 #include "cli/tool_main.h"
 #include "core/error.h"
+#include "synthetic/grib_sample_writer.h"
 #include "synthetic/model_like_files.h"
 #include "synthetic/sample_args.h"
 #include "synthetic/sample_dataset.h"
@@ -41,6 +43,9 @@ struct SampleOptions {
   bool json = false;
   std::string model = "sample";  // synthetic::parse_sample_model
   bool z_mc = false;             // --model icon: also z_mc
+  std::string format = "netcdf";  // synthetic::parse_sample_format
+  int grib_bits = 16;
+  std::string grib_levels = "height";  // synthetic::parse_grib_level_kind
 };
 
 int run_sample(const SampleOptions& opt) {
@@ -52,8 +57,15 @@ int run_sample(const SampleOptions& opt) {
   spec.file_per_step = !opt.single_file;
   spec.step_seconds = opt.step_seconds;
   spec.deflate = opt.deflate;
+  spec.format = synthetic::parse_sample_format(opt.format);
+  spec.grib_bits = opt.grib_bits;
+  spec.grib_levels = synthetic::parse_grib_level_kind(opt.grib_levels);
   const synthetic::SampleModel model = synthetic::parse_sample_model(opt.model);
   const bool model_like = model != synthetic::SampleModel::kSample;
+  if (model_like && spec.format != synthetic::SampleFormat::kNetcdf) {
+    throw make_error(ErrorCode::kInvalidArgument, "--format {}: --model {} writes NetCDF only",
+                     opt.format, synthetic::sample_model_name(model));
+  }
   if (model_like && !opt.vars.empty()) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "--vars: --model {} writes its own variables ({})",
@@ -165,6 +177,17 @@ void register_sample(CLI::App& app, cli::Action& action) {
       ->capture_default_str();
   sub->add_flag("--z-mc", opt->z_mc,
                 "With --model icon: also write z_mc, the full levels' heights");
+  sub->add_option("--format", opt->format,
+                  "File format: netcdf (CF-NetCDF-4) or grib2 (one message per variable and "
+                  "level on a regular_ll grid, heightAboveSea levels)")
+      ->capture_default_str();
+  sub->add_option("--grib-bits", opt->grib_bits,
+                  "GRIB2: bits per value of grid_simple packing (1..32); 0: IEEE float32")
+      ->capture_default_str();
+  sub->add_option("--grib-levels", opt->grib_levels,
+                  "GRIB2: height (heightAboveSea, m) or model (hybrid level numbers, 1 = top; "
+                  "what grib_to_netcdf can convert)")
+      ->capture_default_str();
   sub->add_flag("--json", opt->json, "Print a JSON summary on stdout");
   sub->callback([&action, opt] { action = [opt] { return run_sample(*opt); }; });
 }

@@ -6,9 +6,11 @@
 
 #include <array>
 #include <chrono>
+#include <optional>
 #include <vector>
 
 #include "core/error.h"
+#include "synthetic/grib_sample_writer.h"
 #include "synthetic/sample_atmosphere.h"
 #include "synthetic/sample_grid.h"
 #include "synthetic/sample_writer.h"
@@ -27,8 +29,11 @@ struct LevelJob {
 
 // Computes and writes every (variable, level) of one step, overlapping the serial
 // netCDF writes with the parallel computation of the following levels.
+using LevelWrite = std::function<void(std::size_t variable_index, std::size_t t_in_file,
+                                      std::size_t level, std::span<const float> values)>;
+
 void write_step(const SampleAtmosphere& atmosphere, std::span<const SampleVariable> variables,
-                std::size_t nz, SampleFileWriter& writer, std::size_t t_in_file,
+                std::size_t nz, const LevelWrite& write_level, std::size_t t_in_file,
                 const std::function<void()>& level_done,
                 std::array<std::vector<float>, kLevelsInFlight>& buffers) {
   std::size_t next = 0;
@@ -57,8 +62,8 @@ void write_step(const SampleAtmosphere& atmosphere, std::span<const SampleVariab
                                                }) &
           tbb::make_filter<LevelJob, void>(tbb::filter_mode::serial_in_order,
                                            [&](LevelJob job) {
-                                             writer.write_level(job.variable_index, t_in_file,
-                                                                job.level, *job.buffer);
+                                             write_level(job.variable_index, t_in_file,
+                                                         job.level, *job.buffer);
                                              level_done();
                                            }));
 }
@@ -110,13 +115,28 @@ SampleResult write_sample_dataset(const SampleSpec& spec, const std::filesystem:
     }
     const std::filesystem::path path = out_dir / names[f];
     const auto start = std::chrono::steady_clock::now();
-    SampleFileWriter writer(path, grid, layout);
+    std::optional<SampleFileWriter> netcdf;
+    std::optional<GribSampleFileWriter> grib;
+    if (spec.format == SampleFormat::kGrib2) {
+      grib.emplace(path, grid,
+                   GribSampleLayout{variables, layout.times, spec.grib_bits, spec.grib_levels});
+    } else {
+      netcdf.emplace(path, grid, layout);
+    }
+    const LevelWrite write_level = [&](std::size_t v, std::size_t t, std::size_t k,
+                                       std::span<const float> values) {
+      if (grib) {
+        grib->write_level(v, t, k, values);
+      } else {
+        netcdf->write_level(v, t, k, values);
+      }
+    };
     for (std::size_t s = 0; s < steps_per_file; ++s) {
       const SampleAtmosphere atmosphere(grid, spec.seed, layout.times[s]);
-      write_step(atmosphere, variables, spec.dims.z, writer, s, level_done, buffers);
+      write_step(atmosphere, variables, spec.dims.z, write_level, s, level_done, buffers);
     }
     const auto written = std::chrono::steady_clock::now();
-    const std::uint64_t bytes = writer.commit();
+    const std::uint64_t bytes = grib ? grib->commit() : netcdf->commit();
     const auto committed = std::chrono::steady_clock::now();
     spdlog::debug("sample: {}: {} bytes, computed and written in {:.2f} s, committed in {:.2f} s",
                   path.string(), bytes,

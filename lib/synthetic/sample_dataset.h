@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The sample-data generator: writes a deterministic CF-NetCDF-4 dataset shaped like the
+// The sample-data generator: writes a deterministic CF-NetCDF-4 (or GRIB2) dataset shaped like the
 // SciVis 2017 ICON-LEM output (see /work/shared/docs/data.md) at any size up to the
 // full 1429 x 1556 x 150 grid. Levels are computed in parallel (oneTBB) and written one
 // at a time while the next ones are computed; memory stays bounded by a few levels.
@@ -23,7 +23,8 @@ void prepare_sample_directory(const std::filesystem::path& dir);
 
 // Validates `spec` (kInvalidArgument), creates `out_dir` if missing (kIo when it cannot
 // be created or is not a directory) and writes sample_t000.nc ... (file_per_step) or
-// sample.nc, each atomically. Existing files of those names are replaced.
+// sample.nc (.grib2 with SampleFormat::kGrib2), each atomically. Existing files of those
+// names are replaced.
 SampleResult write_sample_dataset(const SampleSpec& spec, const std::filesystem::path& out_dir,
                                   SampleProgress progress = {});
 

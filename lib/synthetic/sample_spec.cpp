@@ -32,6 +32,21 @@ std::vector<SampleVariable> validate_sample_spec(const SampleSpec& spec) {
                      "sample step_seconds {}: must be a positive number of seconds",
                      spec.step_seconds);
   }
+  if (spec.format == SampleFormat::kGrib2 && spec.deflate != 0) {
+    throw make_error(ErrorCode::kInvalidArgument, "sample deflate level {}: GRIB is not deflated",
+                     spec.deflate);
+  }
+  if (spec.format == SampleFormat::kGrib2 && (spec.grib_bits < 0 || spec.grib_bits > 32)) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "sample GRIB bits {}: must be in 1..32, or 0 for IEEE float32",
+                     spec.grib_bits);
+  }
+  if (spec.format == SampleFormat::kGrib2 && spec.steps > 1 &&
+      std::abs(spec.step_seconds / 60 - std::round(spec.step_seconds / 60)) > 1e-9) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "sample step seconds {}: GRIB validity times are in whole minutes",
+                     spec.step_seconds);
+  }
   if (spec.deflate < 0 || spec.deflate > 9) {
     throw make_error(ErrorCode::kInvalidArgument, "sample deflate level {}: must be in 0..9",
                      spec.deflate);
@@ -50,13 +65,20 @@ std::vector<SampleVariable> validate_sample_spec(const SampleSpec& spec) {
   return resolved;
 }
 
+SampleFormat parse_sample_format(std::string_view text) {
+  if (text == "netcdf") return SampleFormat::kNetcdf;
+  if (text == "grib2") return SampleFormat::kGrib2;
+  throw make_error(ErrorCode::kInvalidArgument, "sample format '{}': expected netcdf or grib2",
+                   text);
+}
+
 std::vector<std::string> sample_file_names(const SampleSpec& spec) {
   std::vector<std::string> names;
   if (!spec.file_per_step) {
-    names.emplace_back("sample.nc");
+    names.push_back(spec.format == SampleFormat::kGrib2 ? "sample.grib2" : "sample.nc");
     return names;
   }
-  for (std::size_t s = 0; s < spec.steps; ++s) names.push_back(fmt::format("sample_t{:03d}.nc", s));
+  for (std::size_t s = 0; s < spec.steps; ++s) names.push_back(fmt::format("sample_t{:03d}.{}", s, spec.format == SampleFormat::kGrib2 ? "grib2" : "nc"));
   return names;
 }
 

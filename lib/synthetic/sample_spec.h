@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "grid/axis.h"
@@ -19,6 +20,13 @@ inline constexpr Dims3 kFullSampleDims{1429, 1556, 150};
 // More steps than this is taken for a mistake (a day at 1 s steps is 86,400).
 inline constexpr std::size_t kMaxSampleSteps = 1'000'000;
 
+enum class SampleFormat { kNetcdf, kGrib2 };
+// GRIB levels: heightAboveSea (the heights in m) or hybrid (numbered 1 = top, as ICON).
+enum class GribLevelKind { kHeightAboveSea, kModelLevel };
+
+// "netcdf" or "grib2" (strielad-sample --format). Throws kInvalidArgument quoting the text.
+SampleFormat parse_sample_format(std::string_view text);
+
 struct SampleSpec {
   Dims3 dims = kFullSampleDims;
   std::size_t steps = 4;
@@ -27,6 +35,9 @@ struct SampleSpec {
   bool file_per_step = true;     // sample_t000.nc, sample_t001.nc, ... or one sample.nc
   double step_seconds = 300;     // time between steps
   int deflate = 0;               // 0 (none) .. 9, with the shuffle filter when > 0
+  SampleFormat format = SampleFormat::kNetcdf;  // kGrib2: synthetic/grib_sample_writer.h
+  int grib_bits = 16;            // GRIB: bits per value (grid_simple); 0: IEEE float32
+  GribLevelKind grib_levels = GribLevelKind::kHeightAboveSea;
 };
 
 struct SampleFile {
@@ -43,10 +54,11 @@ struct SampleResult {
 // kInvalidArgument naming the offending field (zero dims, steps outside
 // 1..kMaxSampleSteps, unknown or
 // duplicate variable, deflate outside 0..9, non-positive step_seconds, a level too
-// large for one HDF5 chunk).
+// large for one HDF5 chunk; with GRIB: deflate, bits outside 0..32, steps not in whole
+// minutes).
 std::vector<SampleVariable> validate_sample_spec(const SampleSpec& spec);
 
-// File names the spec produces, relative to the output directory.
+// File names the spec produces (sample_t000.nc or .grib2 ...), relative to the output directory.
 std::vector<std::string> sample_file_names(const SampleSpec& spec);
 
 }  // namespace strielad::synthetic
