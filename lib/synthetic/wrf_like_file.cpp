@@ -73,7 +73,7 @@ struct WrfIds {
       qcloud = -1;
 };
 
-// One variable with WRF's attributes; `plane` the chunk shape in NetCDF-4 files.
+// One NC_FLOAT variable with WRF's attributes.
 struct WrfVariable {
   const char* name;
   std::initializer_list<int> dims;
@@ -84,6 +84,7 @@ struct WrfVariable {
   const char* coordinates;  // nullptr: none
 };
 
+// Defines WRF variables; in NetCDF-4 files chunked by horizontal planes and deflated.
 class WrfDefiner {
  public:
   WrfDefiner(ModelNetcdfFile& f, bool chunked, int deflate) : f_(f), chunked_(chunked), deflate_(deflate) {}
