@@ -120,6 +120,8 @@ float ModelAtmosphere::value(ModelField field, std::size_t c, double z) const {
       const double upslope = (ua * slope_x_[c] + va * slope_y_[c]) * std::exp(-agl / 1500.0);
       return static_cast<float>(upslope + 1.2 * cloud_shape(c, agl));
     }
+    case ModelField::kPressure:
+      return static_cast<float>(column_pressure(z, p_sea_[c], dt_[c]));
   }
   throw make_error(ErrorCode::kInternal, "model sample: unknown field {}", static_cast<int>(field));
 }

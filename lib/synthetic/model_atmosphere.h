@@ -22,7 +22,7 @@
 namespace strielad::synthetic {
 
 enum class ModelField { kTemperature, kCloudWater, kSpecificHumidity, kEastward, kNorthward,
-                        kUpward };
+                        kUpward, kPressure };
 
 class ModelAtmosphere {
  public:

@@ -16,6 +16,7 @@
 #include "synthetic/sample_grid.h"
 #include "synthetic/sample_terrain.h"
 #include "synthetic/sample_writer.h"
+#include "synthetic/wrf_like_file.h"
 
 namespace strielad::synthetic {
 namespace {
@@ -63,6 +64,8 @@ const char* file_prefix(SampleModel model) {
       return "icon_cf";
     case SampleModel::kSigmaPressure:
       return "sigma_pressure";
+    case SampleModel::kWrf:
+      return "wrfout";
     case SampleModel::kSample:
       break;
   }
@@ -193,6 +196,7 @@ FileIds define_file(ModelNetcdfFile& f, SampleModel model, const SampleSpec& spe
       break;
     }
     case SampleModel::kSample:
+    case SampleModel::kWrf:
       break;
   }
 
@@ -275,6 +279,7 @@ void write_time_invariant(ModelNetcdfFile& f, const FileIds& ids, const DatasetC
       break;
     }
     case SampleModel::kSample:
+    case SampleModel::kWrf:
       break;
   }
 }
@@ -350,12 +355,15 @@ std::string_view sample_model_name(SampleModel model) noexcept {
       return "icon-cf";
     case SampleModel::kSigmaPressure:
       return "sigma-pressure";
+    case SampleModel::kWrf:
+      return "wrf";
   }
   return "?";
 }
 
 std::vector<std::string> model_sample_variable_names(SampleModel model) {
   file_prefix(model);  // throws for kSample
+  if (model == SampleModel::kWrf) return wrf_sample_variable_names();
   std::vector<std::string> names;
   for (const ModelVariable& v : model_variables(model)) names.emplace_back(v.name);
   return names;
@@ -363,6 +371,7 @@ std::vector<std::string> model_sample_variable_names(SampleModel model) {
 
 std::vector<std::string> model_sample_file_names(const SampleSpec& spec, SampleModel model) {
   const char* prefix = file_prefix(model);
+  if (model == SampleModel::kWrf) return wrf_sample_file_names(spec);
   std::vector<std::string> names;
   if (!spec.file_per_step) {
     names.push_back(fmt::format("{}.nc", prefix));
@@ -376,6 +385,7 @@ SampleResult write_model_like_dataset(const SampleSpec& spec, SampleModel model,
                                       const std::filesystem::path& out_dir,
                                       const ModelSampleOptions& options,
                                       SampleProgress progress) {
+  if (model == SampleModel::kWrf) return write_wrf_like_dataset(spec, out_dir, std::move(progress));
   validate_sample_spec(spec);
   const std::vector<std::string> names = model_sample_file_names(spec, model);
   prepare_sample_directory(out_dir);

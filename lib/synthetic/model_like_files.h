@@ -10,7 +10,9 @@
 //   icon-cf: the same fields with the CF atmosphere_hybrid_height_coordinate lev
 //     (a: lev, b: b, orog: orog) and time in seconds;
 //   sigma-pressure: IFS/CAM-like hybrid sigma-pressure levels lev (ap: hyam, b: hybm,
-//     ps: ps), top to bottom, ps(time, lat, lon), orog, and t, q, u, v.
+//     ps: ps), top to bottom, ps(time, lat, lon), orog, and t, q, u, v;
+//   wrf: WRF ARW history files wrfout_d01_<date> on a Lambert conformal C grid
+//     (wrf_like_file.h).
 // The grid, steps, seed, step length, file split and deflate level come from SampleSpec
 // (its variable list is not used: each model writes its own variables).
 #pragma once
@@ -25,9 +27,10 @@
 
 namespace strielad::synthetic {
 
-enum class SampleModel { kSample, kIcon, kIconCf, kSigmaPressure };
+enum class SampleModel { kSample, kIcon, kIconCf, kSigmaPressure, kWrf };
 
-// "sample" (the default sample_dataset.h writes), "icon", "icon-cf", "sigma-pressure".
+// "sample" (the default sample_dataset.h writes), "icon", "icon-cf", "sigma-pressure",
+// "wrf".
 std::string_view sample_model_name(SampleModel model) noexcept;
 
 // The 3-D variables a model writes, in file order (kInvalidArgument for kSample).
@@ -38,7 +41,8 @@ struct ModelSampleOptions {
 };
 
 // File names of a model-like sample: "<prefix>_t000.nc", ... or "<prefix>.nc" with
-// the prefix icon, icon_cf or sigma_pressure. kInvalidArgument for kSample.
+// the prefix icon, icon_cf or sigma_pressure; wrf_sample_file_names for kWrf.
+// kInvalidArgument for kSample.
 std::vector<std::string> model_sample_file_names(const SampleSpec& spec, SampleModel model);
 
 // Validates `spec` (validate_sample_spec), creates `out_dir` if missing and writes the

@@ -18,10 +18,11 @@ using ingest::netcdf_mutex;
 
 static_assert(ModelNetcdfFile::kGlobal == NC_GLOBAL);
 
-ModelNetcdfFile::ModelNetcdfFile(std::filesystem::path path)
+ModelNetcdfFile::ModelNetcdfFile(std::filesystem::path path, Format format)
     : path_(std::move(path)), temp_path_(temporary_sibling(path_)) {
   std::lock_guard lock(netcdf_mutex());
-  const int status = nc_create(temp_path_.c_str(), NC_NETCDF4 | NC_CLOBBER, &ncid_);
+  const int mode = format == Format::kNetcdf4 ? NC_NETCDF4 : NC_64BIT_OFFSET;
+  const int status = nc_create(temp_path_.c_str(), mode | NC_CLOBBER, &ncid_);
   if (status != NC_NOERR) {
     throw make_error(ErrorCode::kIo, "{}: cannot create {}: {}", path_.string(),
                      temp_path_.string(), nc_strerror(status));
@@ -71,7 +72,8 @@ int ModelNetcdfFile::variable(const std::string& name, Type type, std::initializ
   std::lock_guard lock(netcdf_mutex());
   int varid = -1;
   const std::vector<int> ids(dims);
-  nc_check(nc_def_var(ncid_, name.c_str(), type == Type::kFloat ? NC_FLOAT : NC_DOUBLE,
+  const nc_type nc = type == Type::kFloat ? NC_FLOAT : type == Type::kDouble ? NC_DOUBLE : NC_CHAR;
+  nc_check(nc_def_var(ncid_, name.c_str(), nc,
                       static_cast<int>(ids.size()), ids.data(), &varid),
            context("define variable " + name));
   if (var_names_.size() <= static_cast<std::size_t>(varid)) {
@@ -107,6 +109,18 @@ void ModelNetcdfFile::unsigned_number(int varid, const std::string& name, std::u
   std::lock_guard lock(netcdf_mutex());
   const unsigned long long v = value;
   nc_check(nc_put_att_ulonglong(ncid_, varid, name.c_str(), NC_UINT64, 1, &v),
+           var_context(varid, "attribute " + name));
+}
+
+void ModelNetcdfFile::float_number(int varid, const std::string& name, float value) {
+  std::lock_guard lock(netcdf_mutex());
+  nc_check(nc_put_att_float(ncid_, varid, name.c_str(), NC_FLOAT, 1, &value),
+           var_context(varid, "attribute " + name));
+}
+
+void ModelNetcdfFile::integer(int varid, const std::string& name, int value) {
+  std::lock_guard lock(netcdf_mutex());
+  nc_check(nc_put_att_int(ncid_, varid, name.c_str(), NC_INT, 1, &value),
            var_context(varid, "attribute " + name));
 }
 
@@ -148,6 +162,14 @@ void ModelNetcdfFile::put(int varid, std::span<const std::size_t> start,
   check_block(varid, start, count, values.size());
   std::lock_guard lock(netcdf_mutex());
   nc_check(nc_put_vara_double(ncid_, varid, start.data(), count.data(), values.data()),
+           var_context(varid, "write"));
+}
+
+void ModelNetcdfFile::put_text(int varid, std::span<const std::size_t> start,
+                               std::span<const std::size_t> count, std::string_view values) {
+  check_block(varid, start, count, values.size());
+  std::lock_guard lock(netcdf_mutex());
+  nc_check(nc_put_vara_text(ncid_, varid, start.data(), count.data(), values.data()),
            var_context(varid, "write"));
 }
 

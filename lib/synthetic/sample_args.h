@@ -26,7 +26,7 @@ std::uint64_t parse_unsigned(std::string_view text, std::string_view what);
 // throws kInvalidArgument on an empty list, an empty item or an unknown name.
 std::vector<std::string> parse_variable_list(std::string_view text);
 
-// "sample" (default), "icon", "icon-cf" or "sigma-pressure" (--model). Throws
+// "sample" (default), "icon", "icon-cf", "sigma-pressure" or "wrf" (--model). Throws
 // kInvalidArgument quoting the text and listing the names.
 SampleModel parse_sample_model(std::string_view text);
 

@@ -256,21 +256,36 @@ SampleTerrainResult write_sample_terrain(const SampleTerrainSpec& spec,
 std::vector<float> sample_terrain_heights(std::span<const double> lon, std::span<const double> lat,
                                           std::uint64_t seed) {
   const std::size_t nx = lon.size(), ny = lat.size();
+  std::vector<double> point_lon(nx * ny), point_lat(nx * ny);
+  for (std::size_t j = 0; j < ny; ++j) {
+    for (std::size_t i = 0; i < nx; ++i) {
+      point_lon[j * nx + i] = lon[i];
+      point_lat[j * nx + i] = lat[j];
+    }
+  }
+  return sample_terrain_heights_at(point_lon, point_lat, seed);
+}
+
+std::vector<float> sample_terrain_heights_at(std::span<const double> lon,
+                                             std::span<const double> lat, std::uint64_t seed) {
+  if (lon.size() != lat.size()) {
+    throw make_error(ErrorCode::kInternal, "sample terrain: {} longitudes for {} latitudes",
+                     lon.size(), lat.size());
+  }
+  const std::size_t n = lon.size();
   const geo::GridProjection pole = pole_projection();
   // The rotated position of every point (serial: a PROJ object serves one thread), then
   // the noise of write_sample_terrain's planes at that position, one point at a time.
-  std::vector<double> x_km(nx * ny), y_km(nx * ny);
-  for (std::size_t j = 0; j < ny; ++j) {
-    for (std::size_t i = 0; i < nx; ++i) {
-      const auto r = pole.to_axis(lon[i], lat[j]);
-      x_km[j * nx + i] = r[0] * 111.195;
-      y_km[j * nx + i] = r[1] * 111.195;
-    }
+  std::vector<double> x_km(n), y_km(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    const auto r = pole.to_axis(lon[p], lat[p]);
+    x_km[p] = r[0] * 111.195;
+    y_km[p] = r[1] * 111.195;
   }
   const std::uint64_t detail_key = noise_key(seed, kDetailSalt), ridges_key = noise_key(seed, kRidgeSalt);
-  std::vector<float> out(nx * ny);
-  tbb::parallel_for(std::size_t{0}, nx * ny, [&](std::size_t p) {
-    const geo::LonLat g{lon[p % nx], lat[p / nx]};
+  std::vector<float> out(n);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t p) {
+    const geo::LonLat g{lon[p], lat[p]};
     if (is_sea(g.lon, g.lat)) return;  // out[p] stays 0
     const std::span<const double> x(&x_km[p], 1), y(&y_km[p], 1);
     const float d = FbmPlane(kDetailNoise, detail_key, x, y, 0.0).at(0, 0);

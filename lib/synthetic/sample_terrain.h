@@ -40,4 +40,9 @@ SampleTerrainResult write_sample_terrain(const SampleTerrainSpec& spec,
 std::vector<float> sample_terrain_heights(std::span<const double> lon, std::span<const double> lat,
                                           std::uint64_t seed);
 
+// The same surface at arbitrary points (lon[p], lat[p]) in degrees, e.g. the mass points
+// of a projected model grid; kInternal when the spans differ in length.
+std::vector<float> sample_terrain_heights_at(std::span<const double> lon,
+                                             std::span<const double> lat, std::uint64_t seed);
+
 }  // namespace strielad::synthetic

@@ -87,7 +87,7 @@ TEST(SampleCliTest, BadArgumentsExitWithTheirStatus) {
                 .status,
             7);
   EXPECT_NE(run_sample("--dims 4x4x3").status, 0) << "-o is required";
-  EXPECT_EQ(run_sample(o.substr(1) + " --dims 4x4x3 --model wrf").status, 2);
+  EXPECT_EQ(run_sample(o.substr(1) + " --dims 4x4x3 --model mm5").status, 2);
   EXPECT_EQ(run_sample(o.substr(1) + " --dims 4x4x3 --model icon --vars ta").status, 2);
   EXPECT_EQ(run_sample(o.substr(1) + " --dims 4x4x3 --model icon-cf --z-mc").status, 2);
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "x"));
@@ -113,6 +113,17 @@ TEST(SampleCliTest, ModelFlagWritesModelLikeFiles) {
   EXPECT_EQ(sigma.dim_length("time"), 2u);
   EXPECT_TRUE(sigma.has_var("ps"));
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "sample.nc"));
+
+  r = run_sample("-q -o " + dir.path().string() +
+                 " --dims 6x5x4 --steps 2 --step-seconds 3600 --model wrf --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  json = nlohmann::json::parse(r.out);
+  EXPECT_EQ(json.at("model"), "wrf");
+  ASSERT_EQ(json.at("files").size(), 2u);
+  const NcFile wrf(dir.path() / "wrfout_d01_2013-04-26_13:00:00");
+  EXPECT_EQ(wrf.dim_length("Time"), 1u);
+  EXPECT_EQ(wrf.dim_length("west_east_stag"), 7u);
+  EXPECT_TRUE(wrf.has_var("PHB"));
 }
 
 }  // namespace
