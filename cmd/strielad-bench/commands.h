@@ -17,6 +17,7 @@ void register_advect(CLI::App& app, cli::Action& action, std::string command_lin
 void register_robustness(CLI::App& app, cli::Action& action, std::string command_line);
 void register_scene(CLI::App& app, cli::Action& action, std::string command_line);
 void register_grib(CLI::App& app, cli::Action& action, std::string command_line);
+void register_geometry(CLI::App& app, cli::Action& action, std::string command_line);
 void register_scaling(CLI::App& app, cli::Action& action, std::string command_line);
 void register_soak(CLI::App& app, cli::Action& action, std::string command_line);
 void register_report(CLI::App& app, cli::Action& action, std::string command_line);

@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
   const cli::ToolSpec spec{
       "strielad-bench",
       "Benchmark suites for STRIELAD (io, extract, latency, view, advect, robustness, "
-      "scene, scaling, soak) and the report that runs them all",
+      "scene, scaling, soak, grib, geometry) and the report that runs them all",
       [&command_line](CLI::App& app, cli::Action& action) {
         bench_cmd::register_io(app, action, command_line);
         bench_cmd::register_extract(app, action, command_line);
@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
         bench_cmd::register_scene(app, action, command_line);
         bench_cmd::register_scaling(app, action, command_line);
         bench_cmd::register_grib(app, action, command_line);
+        bench_cmd::register_geometry(app, action, command_line);
         bench_cmd::register_soak(app, action, command_line);
         bench_cmd::register_report(app, action, command_line);
       }};
