@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "format/geometry_field.h"
 #include "geo/time_axis_dates.h"
 #include "vdb/level_grid.h"
 
@@ -27,7 +28,10 @@ void register_export_vdb(CLI::App& app, cli::Action& action) {
       "export-vdb", "Write one variable, time step and octree level as a standard .vdb file");
   auto f = std::make_shared<ExportFlags>();
   sub->add_option("store", f->store, "Store directory")->required();
-  sub->add_option("--var", f->var, "Variable name")->required();
+  sub->add_option("--var", f->var,
+                  "Variable name (geometry_height or geometry_pressure: the grid geometry's "
+                  "field of a terrain-following store)")
+      ->required();
   sub->add_option("--time", f->step, "Time-step index")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
@@ -42,7 +46,10 @@ void register_export_vdb(CLI::App& app, cli::Action& action) {
   sub->callback([&action, f] {
     action = [f] {
       const auto store = Store::open(f->store);
-      const auto var = static_cast<std::uint32_t>(store->manifest().variable_index(f->var));
+      const auto& m = store->manifest();
+      const auto var = f->var == format::geometry_field_name(m) && !f->var.empty()
+                           ? *format::geometry_field_variable(m)
+                           : static_cast<std::uint32_t>(m.variable_index(f->var));
       const auto s = vdb::write_level_vdb(*store, f->step, var, f->level, f->out,
                                           vdb::LevelGridOptions{f->background});
       spdlog::info("wrote {}: {} active voxels from {} bricks ({} skipped), values {} .. {}",

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "format/geometry_field.h"
 #include "extract/geographic_conditions.h"
 #include "extract/node_extraction.h"
 #include "grid/longitude_turns.h"
@@ -52,6 +53,24 @@ void add_place_metadata(openvdb::GridBase& grid, const format::Manifest& m, std:
   add_axis_metadata(grid, "z", m.z);
 }
 
+// Name, units and long name of variable index `variable`, the grid geometry's field
+// (index variables.size(), format/geometry_field.h) included.
+struct GridVariable {
+  std::string name, units, long_name;
+};
+GridVariable grid_variable(const format::Manifest& m, std::uint32_t variable) {
+  if (variable < m.variables.size()) {
+    const auto& v = m.variables[variable];
+    return {v.name, v.units, v.long_name};
+  }
+  if (const auto field = format::geometry_field_variable(m); field && *field == variable) {
+    return {format::geometry_field_name(m), m.geometry->vertical.units,
+            fmt::format("grid geometry: {} of every sample", format::vertical_quantity_name(
+                                                               m.geometry->vertical.quantity))};
+  }
+  throw make_error(ErrorCode::kNotFound, "variable index {} is not in the store", variable);
+}
+
 }  // namespace
 
 openvdb::FloatGrid::Ptr build_level_grid(const Store& store, std::uint32_t step,
@@ -64,7 +83,7 @@ openvdb::FloatGrid::Ptr build_level_grid(const Store& store, std::uint32_t step,
     throw make_error(ErrorCode::kNotFound, "{}: level {} does not exist (the octree has {} levels)",
                      store.path().string(), level, layout.level_count());
   }
-  const auto& var = store.manifest().variables.at(variable);
+  const GridVariable var = grid_variable(store.manifest(), variable);
   const float background = static_cast<float>(options.background);
   auto grid = openvdb::FloatGrid::create(background);
   grid->setName(var.name);
