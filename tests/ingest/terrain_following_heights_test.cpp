@@ -147,17 +147,35 @@ TEST(TerrainFollowingHeightsTest, HeightVarChoosesAmongAutomaticCandidates) {
   g.fixture()
       .dimension("height_2", g.nz + 1)
       .variable("z_mc", NC_DOUBLE, {"lev", "lat", "lon"}, field(1, g.nz, g.plane(), z), {kMetres})
+      .variable("HHL", NC_DOUBLE, {"height_2", "lat", "lon"}, field(1, g.nz + 1, g.plane(), z),
+                {kMetres})
+      .write(dir / "two.nc");
+  expect_error([&] { scan_inputs({dir / "two.nc"}, only_t()); }, ErrorCode::kInvalidInput,
+               {"'z_mc'", "'HHL'", "--height-var", "two.nc"});
+  ScanOptions o;
+  o.variables = {"T"};
+  o.height_var = "HHL";
+  const InputCatalog c = scan_inputs({dir / "two.nc"}, o);
+  ASSERT_TRUE(c.vertical_geometry);
+  EXPECT_EQ(c.vertical_geometry->sources, std::vector<std::string>{"HHL"});
+}
+
+TEST(TerrainFollowingHeightsTest, IconsZmcIsPreferredToItsZifc) {
+  TempDir dir;
+  const ModelLevels g;
+  auto z = [](std::size_t, std::size_t k, std::size_t s) { return half_level_height(0, k, s); };
+  g.fixture()
+      .dimension("height_2", g.nz + 1)
+      .variable("z_mc", NC_DOUBLE, {"lev", "lat", "lon"}, field(1, g.nz, g.plane(), z), {kMetres})
       .variable("z_ifc", NC_DOUBLE, {"height_2", "lat", "lon"}, field(1, g.nz + 1, g.plane(), z),
                 {kMetres})
       .write(dir / "icon.nc");
-  expect_error([&] { scan_inputs({dir / "icon.nc"}, only_t()); }, ErrorCode::kInvalidInput,
-               {"'z_mc'", "'z_ifc'", "--height-var", "icon.nc"});
-  ScanOptions o;
-  o.variables = {"T"};
-  o.height_var = "z_mc";
-  const InputCatalog c = scan_inputs({dir / "icon.nc"}, o);
+  const InputCatalog c = scan_inputs({dir / "icon.nc"}, {});
   ASSERT_TRUE(c.vertical_geometry);
   EXPECT_EQ(c.vertical_geometry->sources, std::vector<std::string>{"z_mc"});
+  // The height fields place the grid: by default they are not converted as data.
+  ASSERT_EQ(c.variables.size(), 1u);
+  EXPECT_EQ(c.variables[0].name, "T");
 }
 
 TEST(TerrainFollowingHeightsTest, HeightVarMissingFromTheInputsIsNotFound) {
