@@ -3,6 +3,7 @@
 # strielad-view --offscreen on a terrain-following store: the ICON-like sample converted
 # to store format 5 renders end to end, placed by its geometry field (the log says so),
 # with the model's surface as the default terrain; a scene of cold air and cloud water.
+# Through --connect (strielad-serve) it is refused for now.
 # Usage: view_terrain_following_cli_test.sh STRIELAD_CONVERT WORK_DIR
 set -uo pipefail
 convert=$1
@@ -34,4 +35,26 @@ if "$view" "$work/store" --scene "$work/scene.json" --offscreen --size 480x270 -
 else
   fail "offscreen view of a terrain-following store"; cat "$work/icon.err"
 fi
+
+# Through --connect the store is refused for now, naming the dataset (exit status 5).
+serve="$(dirname "$convert")/../strielad-serve/strielad-serve"
+mkdir -p "$work/root" && cp -r "$work/store" "$work/root/icon"
+umask 077 && echo "s3cret" > "$work/token" && umask 022
+"$serve" --root "$work/root" --listen 127.0.0.1:0 --token-file "$work/token" --threads 2 --json -q \
+  >"$work/endpoint" 2>"$work/serve.err" &
+serve_pid=$!
+for _ in $(seq 100); do [[ -s "$work/endpoint" ]] && break; sleep 0.1; done
+port=$(sed -n 's/.*"port": *\([0-9]*\).*/\1/p' "$work/endpoint")
+if [[ -n "$port" ]]; then
+  "$view" --connect "127.0.0.1:$port" --dataset icon --token-file "$work/token" --offscreen \
+    --out "$work/remote.png" >/dev/null 2>"$work/remote.err"
+  status=$?
+  [[ $status -eq 5 ]] || fail "--connect: exit status $status, expected 5"
+  want="icon: a terrain-following store (geometry field 'geometry_height') is viewed on its own"
+  grep -q "$want" "$work/remote.err" || fail "--connect refusal: $(cat "$work/remote.err")"
+  echo "ok: --connect refuses a terrain-following store"
+else
+  fail "strielad-serve did not start: $(cat "$work/serve.err")"
+fi
+kill -TERM "$serve_pid" 2>/dev/null; wait "$serve_pid" 2>/dev/null
 exit $((failures > 0))
