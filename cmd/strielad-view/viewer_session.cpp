@@ -17,10 +17,12 @@
 #include "net/socket.h"
 #include "net/token_file.h"
 #include "view/default_exaggeration.h"
+#include "format/geometry_field.h"
 #include "store/store.h"
 #include "view/default_scene.h"
 #include "view/height_placement.h"
 #include "view/local_server.h"
+#include "view/model_surface_dem.h"
 #include "view/simulation_time.h"
 #include "view/sun_direction.h"
 #include "view/view_choices.h"
@@ -191,11 +193,19 @@ ViewerSession open_session(const ViewerArgs& args) {
   } else {
     session.shader_name = "built-in clouds.glsl";
   }
-  // Heights from a geopotential variable need the store's index for the node boxes: a
-  // local store is opened (for its index only) when it has such a variable.
+  // Heights from a geopotential variable or a terrain-following geometry field need the
+  // store's index for the node boxes (and the field's centre column for the frame): a
+  // local store is opened for them.
   std::shared_ptr<const Store> local_store;
-  if (!args.store.empty() && manifest.z.kind == AxisKind::kPressure) {
+  if (!args.store.empty() && (manifest.z.kind == AxisKind::kPressure || manifest.geometry)) {
     local_store = Store::open(args.store);
+  }
+  if (format::has_geometry_field(manifest) && !local_store) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "{}: a terrain-following store (geometry field '{}') is viewed on its own "
+                     "machine for now (strielad-view STORE): its vertices are placed by the "
+                     "field, and the node boxes and vertical map need the store's files",
+                     session.dataset_name, format::geometry_field_name(manifest));
   }
   view::HeightPlacement heights = view::choose_height_placement(manifest, local_store.get());
   session.vertical_placement = heights.description;
@@ -213,7 +223,18 @@ ViewerSession open_session(const ViewerArgs& args) {
                           .sun = sun_choice(args, session)});
   open_advection(args, session);
   if (!args.tracks_file.empty()) session.tracks = open_tracks(args, manifest, frame);
-  if (!args.terrain_file.empty()) session.terrain = open_terrain(args, frame);
+  if (!args.terrain_file.empty()) {
+    session.terrain = open_terrain(args, frame);
+  } else if (local_store && manifest.geometry && manifest.geometry->surface && frame.on_earth()) {
+    // The model's own surface as the default terrain.
+    auto dem = std::make_shared<const view::ModelSurfaceDem>(
+        manifest, frame, local_store->horizontal_coordinates(), session.dataset_name);
+    view::TerrainOptions options;
+    options.error_pixels = args.terrain_error;
+    options.cache_bytes = static_cast<std::size_t>(args.terrain_cache_mib * 1048576.0);
+    spdlog::info("terrain: {}", dem->describe());
+    session.terrain = std::make_unique<view::TerrainTiles>(std::move(dem), frame, options);
+  }
   spdlog::info("{}: {} x {} x {} grid, {} variables, {} time steps, {} octree nodes",
                session.dataset_name, manifest.x.size(), manifest.y.size(), manifest.z.size(),
                manifest.variables.size(), manifest.time.values.size(),

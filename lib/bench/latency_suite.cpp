@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "bench/cut_client.h"
+#include "view/level_heights.h"
 #include "bench/machine_info.h"
 #include "bench/page_cache.h"
 #include "bench/server_process.h"
@@ -321,7 +322,9 @@ LatencySuiteReport run_latency_suite(const LatencySuiteOptions& o) {
   report.octree_nodes = store->octree().node_count();
   const EvictableFolder files(store_dir);
 
-  const lod::WorldFrame frame(store->manifest());
+  const lod::WorldFrame frame(
+      store->manifest(),
+      lod::WorldFrameOptions{}, view::representative_level_heights_m(*store));
   const lod::CameraPath path = o.camera_path.empty()
                                    ? lod::default_fly_in_path(frame, o.fly_seconds)
                                    : lod::load_camera_path_file(o.camera_path);

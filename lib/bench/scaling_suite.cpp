@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "bench/cut_client.h"
+#include "view/level_heights.h"
 #include "bench/machine_info.h"
 #include "bench/page_cache.h"
 #include "bench/sample_input.h"
@@ -132,7 +133,9 @@ GridScaling measure_grid(const ScalingSuiteOptions& o, double fraction,
     g.level.push_back({threads, timed_batches(store_dir, clouds, leaves, threads, o.repeat,
                                               g.level_cost)});
   }
-  const lod::WorldFrame frame(store->manifest());
+  const lod::WorldFrame frame(
+      store->manifest(),
+      lod::WorldFrameOptions{}, view::representative_level_heights_m(*store));
   const auto overview = typical_cameras(frame, o.aspect).front().camera;
   g.cut_seconds = timed_batches(store_dir, clouds, cut_nodes(*store, frame, overview),
                                 most_threads(o), o.repeat, g.cut_cost);

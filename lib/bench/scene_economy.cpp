@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "bench/machine_info.h"
+#include "view/level_heights.h"
 #include "bench/node_batch.h"
 #include "bench/sample_input.h"
 #include "core/error.h"
@@ -136,7 +137,9 @@ SceneEconomyReport run_scene_economy(const SceneEconomyOptions& o) {
   const auto store_dir = o.work / "store";
   convert_sample_store(input, o.variables, o.brick, o.convert_threads, store_dir);
   const auto store = Store::open(store_dir);
-  const lod::WorldFrame frame(store->manifest());
+  const lod::WorldFrame frame(
+      store->manifest(),
+      lod::WorldFrameOptions{}, view::representative_level_heights_m(*store));
   report.step_file_bytes = std::filesystem::file_size(store->step_path(0));
   const SceneCost step = whole_step(*store, 0);
   const auto all_leaves = level_nodes(store->octree(), 0);

@@ -42,6 +42,15 @@ std::size_t cell_of(const std::vector<double>& v, double value) {
   return std::min(i, v.size() - 2);
 }
 
+// Piecewise-linear from `from` to `to` (both strictly monotonic, the same size >= 2),
+// linearly continued beyond the ends.
+double interpolate_levels(const std::vector<double>& from, const std::vector<double>& to,
+                          double value) {
+  const std::size_t i = cell_of(from, value);
+  const double t = (value - from[i]) / (from[i + 1] - from[i]);
+  return to[i] + t * (to[i + 1] - to[i]);
+}
+
 double largest_spacing(const std::vector<double>& v) {
   double h = 0;
   for (std::size_t i = 1; i < v.size(); ++i) h = std::max(h, std::fabs(v[i] - v[i - 1]));
@@ -212,8 +221,51 @@ void WorldFrame::place_horizontal(const format::Manifest& m) {
   }
 }
 
-void WorldFrame::place_vertical(const Axis& z) {
-  if (z.kind == AxisKind::kHeight) {
+void WorldFrame::place_level_heights(const Axis& z, std::vector<double> heights) {
+  if (heights.size() != z.size()) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "vertical axis '{}': {} level heights for its {} samples", z.name,
+                     heights.size(), z.size());
+  }
+  for (std::size_t k = 0; k < heights.size(); ++k) {
+    const bool monotonic = k == 0 || (heights.size() > 1 && (heights[1] > heights[0]
+                                                                 ? heights[k] > heights[k - 1]
+                                                                 : heights[k] < heights[k - 1]));
+    if (!std::isfinite(heights[k]) || !monotonic) {
+      throw make_error(ErrorCode::kInvalidArgument,
+                       "vertical axis '{}': level height {} m at index {} is not finite or not "
+                       "strictly monotonic",
+                       z.name, heights[k], k);
+    }
+  }
+  vertical_ = VerticalMap::kLevelHeights;
+  level_heights_m_ = std::move(heights);
+  const double span = z.values.back() - z.values.front();
+  vertical_unit_ =
+      z.size() > 1 ? (level_heights_m_.back() - level_heights_m_.front()) / span : 1.0;
+}
+
+void WorldFrame::place_vertical(const format::Manifest& m, std::vector<double> level_heights) {
+  const Axis& z = m.z;
+  const format::VerticalGeometry* geometry = m.geometry ? &m.geometry->vertical : nullptr;
+  if (!level_heights.empty()) {
+    place_level_heights(z, std::move(level_heights));
+  } else if (geometry && geometry->kind == format::VerticalGeometry::Kind::kLevels) {
+    std::vector<double> heights;
+    for (double v : geometry->levels) {
+      heights.push_back(geometry->quantity == format::VerticalGeometry::Quantity::kPressure
+                            ? geo::standard_height_m(v)
+                            : v);
+    }
+    place_level_heights(z, std::move(heights));
+  } else if (geometry && geometry->kind == format::VerticalGeometry::Kind::kField) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "vertical axis '{}' ({}) of a terrain-following store is placed by its "
+                     "geometry field ({}, per sample): the world frame needs one representative "
+                     "height per level (level_heights_m)",
+                     z.name, axis_kind_name(z.kind),
+                     format::vertical_quantity_name(geometry->quantity));
+  } else if (z.kind == AxisKind::kHeight) {
     vertical_ = VerticalMap::kHeight;
     const auto km = z.units.empty() ? std::optional<double>(1e-3) : km_per_length_unit(z.units);
     if (!km) {
@@ -310,7 +362,8 @@ void WorldFrame::place_mapped(const format::Manifest& m, bool z_negative) {
   domain_.hi[1] = all.hi[1];
 }
 
-WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options)
+WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options,
+                       std::vector<double> level_heights_m)
     : exaggeration_(options.vertical_exaggeration), dims_(m.dims()) {
   if (!std::isfinite(exaggeration_) || exaggeration_ <= 0) {
     throw make_error(ErrorCode::kInvalidArgument,
@@ -320,7 +373,7 @@ WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options)
   check_axis_values(m.y, "grid.y");
   check_axis_values(m.z, "grid.z");
   place_horizontal(m);
-  place_vertical(m.z);
+  place_vertical(m, std::move(level_heights_m));
   // Whether the vertical map decreases, at the middle of the domain's height.
   const double z_mid = world_to_vertical(0.5 * (domain_.lo[2] + domain_.hi[2]));
   const double hz = std::max(std::abs(z_mid), 1.0) * 1e-6;
@@ -366,16 +419,34 @@ double WorldFrame::separable_to_axis(int axis, double world) const {
 }
 
 double WorldFrame::vertical_to_world(double value) const {
-  const double metres = vertical_ == VerticalMap::kHeight
-                            ? value * vertical_unit_
-                            : geo::standard_height_m(value * vertical_unit_);
+  double metres = 0;
+  switch (vertical_) {
+    case VerticalMap::kHeight:
+      metres = value * vertical_unit_;
+      break;
+    case VerticalMap::kPressure:
+      metres = geo::standard_height_m(value * vertical_unit_);
+      break;
+    case VerticalMap::kLevelHeights:
+      metres = z_axis_.size() < 2 ? level_heights_m_[0]
+                                  : interpolate_levels(z_axis_, level_heights_m_, value);
+      break;
+  }
   return metres * 1e-3 * exaggeration_;
 }
 
 double WorldFrame::world_to_vertical(double world) const {
   const double metres = world / exaggeration_ * 1e3;
-  return vertical_ == VerticalMap::kHeight ? metres / vertical_unit_
-                                           : geo::standard_pressure_pa(metres) / vertical_unit_;
+  switch (vertical_) {
+    case VerticalMap::kHeight:
+      return metres / vertical_unit_;
+    case VerticalMap::kPressure:
+      return geo::standard_pressure_pa(metres) / vertical_unit_;
+    case VerticalMap::kLevelHeights:
+      return z_axis_.size() < 2 ? z_axis_[0]
+                                : interpolate_levels(level_heights_m_, z_axis_, metres);
+  }
+  return metres;
 }
 
 std::array<double, 2> WorldFrame::mapped_xy(double x, double y) const {

@@ -23,6 +23,15 @@
 // - height (m or km; no units means metres): z = height_km * vertical_exaggeration.
 // - pressure (Pa, hPa, mbar, kPa, bar, atm): the ICAO standard atmosphere height of the
 //   pressure (geo/standard_atmosphere.h), then as height.
+// - terrain-following levels (a store with a grid geometry, formats/store.md "Grid geometry
+//   (version 5)"): a table of one representative height in metres per level-0 z sample,
+//   strictly monotonic (VerticalMap::kLevelHeights). z maps piecewise-linearly between the
+//   table's heights in the axis's value (a model-level index, a hybrid coordinate ...),
+//   linearly continued beyond the ends. A geometry of `levels` gives the table itself
+//   (pressures through the standard atmosphere); a per-sample geometry field needs the
+//   caller's table (the constructor's level_heights_m, e.g. the field's column at the
+//   domain's centre: view/level_heights.h), as the field's own heights vary from column to
+//   column and only the vertices placed by it (view/height_placement.h) are exact.
 // Descending axes (latitude north to south, height top down, pressure) map the same way:
 // world coordinates do not depend on storage order.
 //
@@ -58,7 +67,7 @@ struct WorldFrameOptions {
 };
 
 enum class HorizontalMap { kGeographic, kMapped, kMetric };
-enum class VerticalMap { kHeight, kPressure };
+enum class VerticalMap { kHeight, kPressure, kLevelHeights };
 
 // True longitude/latitude extent of a domain (degrees): longitudes continuous about the
 // domain's centre (lon_lo may be < -180 or lon_hi > 180), lon_lo <= lon_hi.
@@ -70,14 +79,20 @@ class WorldFrame {
  public:
   // \error kUnsupported naming the axis for axes without a world position: x/y neither
   // longitude/latitude, nor mapped by a grid mapping, nor in length units; a vertical
-  // axis that is neither height nor pressure (model levels, depth, unknown), or has units
-  // it cannot convert; a grid mapping PROJ rejects, that leaves a sample without a
+  // axis that is neither height nor pressure (model levels, depth, unknown) and has no
+  // level heights, or has units it cannot convert; a store whose geometry is a per-sample
+  // field given no level_heights_m; a grid mapping PROJ rejects, that leaves a sample without a
   // geographic position, or whose image folds or crosses the meridian opposite the
   // domain's centre (naming the sample).
   // \error kInvalidInput for empty, non-finite or non-monotonic axis values (as
   // check_axis_values) and for a pressure axis with a value <= 0.
-  // \error kInvalidArgument for a vertical exaggeration that is not finite and > 0.
-  explicit WorldFrame(const format::Manifest& manifest, WorldFrameOptions options = {});
+  // \error kInvalidArgument for a vertical exaggeration that is not finite and > 0, and for
+  // level_heights_m not one finite, strictly monotonic value per z sample.
+  // `level_heights_m`: one representative height in metres per level-0 z sample, strictly
+  // monotonic: the vertical map of a terrain-following store (VerticalMap::kLevelHeights).
+  // Empty: the axis's own map, or the manifest's geometry `levels`.
+  explicit WorldFrame(const format::Manifest& manifest, WorldFrameOptions options = {},
+                      std::vector<double> level_heights_m = {});
   // The same frame at another vertical exaggeration, without redoing the horizontal
   // placement (a mapped frame's sample table is shared).
   // \error kInvalidArgument for an exaggeration that is not finite and > 0.
@@ -144,8 +159,12 @@ class WorldFrame {
   // map coordinates, not distances on the ground); 0 for degrees (longitude/latitude,
   // a rotated pole).
   double axis_length_km(int axis) const { return axis_km_[axis]; }
-  // Metres (height) or pascals (pressure) per unit of the vertical axis.
+  // Metres (height) or pascals (pressure) per unit of the vertical axis; with level
+  // heights, the mean metres per unit over the axis (negative where heights fall as the
+  // axis's value grows, as on model levels counted from the top).
   double vertical_unit() const { return vertical_unit_; }
+  // kLevelHeights: the table's heights in metres, one per z sample; empty otherwise.
+  const std::vector<double>& level_heights_m() const { return level_heights_m_; }
   // "longitude/latitude axes", "grid mapping 'rotated_pole' (rotated_latitude_longitude)
   // through PROJ, centred at 50.75 N, 18.00 E", "Cartesian axes 'x' and 'y' (m) ...".
   std::string describe_horizontal() const;
@@ -155,7 +174,9 @@ class WorldFrame {
 
   // Parts of the constructor.
   void place_horizontal(const format::Manifest& manifest);
-  void place_vertical(const Axis& z);  // also samples z and sets the domain's z range
+  // Also samples z and sets the domain's z range.
+  void place_vertical(const format::Manifest& manifest, std::vector<double> level_heights_m);
+  void place_level_heights(const Axis& z, std::vector<double> heights_m);
   void place_mapped(const format::Manifest& manifest, bool z_negative);
 
   double separable_to_world(int axis, double value) const;
@@ -180,6 +201,7 @@ class WorldFrame {
   Dims3 dims_;
   std::array<std::vector<double>, 2> xy_samples_;  // separable frames
   std::vector<double> z_axis_, z_samples_;
+  std::vector<double> level_heights_m_;  // kLevelHeights
   std::shared_ptr<const Mapped> mapped_;
   WorldBox domain_;
 };

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "view/level_heights.h"
 
 namespace strielad::view {
 
@@ -13,7 +14,9 @@ AdvectionWorker::AdvectionWorker(std::shared_ptr<const Store> store, AdvectionSe
     : store_(std::move(store)),
       settings_(std::move(settings)),
       level_(settings_.level.value_or(choose_wind_level(store_->octree()))),
-      frame_(store_->manifest(), lod::WorldFrameOptions{.vertical_exaggeration = 1.0}) {
+      frame_(store_->manifest(),
+             lod::WorldFrameOptions{.vertical_exaggeration = 1.0},
+             representative_level_heights_m(*store_)) {
   wind_variables(*store_, settings_.names, level_);  // refuse a store without wind up front
   thread_ = std::thread([this] { run(); });
 }

@@ -10,7 +10,8 @@
 
 namespace strielad::view {
 GeometryPlacer::GeometryPlacer(const format::Manifest& manifest, HeightPlacement heights)
-    : frame_(manifest, lod::WorldFrameOptions{.vertical_exaggeration = 1.0}),
+    : frame_(manifest, lod::WorldFrameOptions{.vertical_exaggeration = 1.0},
+             heights.level_heights_m),
       mirrored_(frame_.mirrored()),
       heights_(std::move(heights)) {}
 
@@ -124,7 +125,7 @@ void GeometryPlacer::place_heights(const std::vector<float>& values, std::size_t
     const float value = values[v];
     if (!std::isfinite(value)) continue;
     out.vertices[(first + v) * kVertexFloats + kVertexPosition + 2] =
-        static_cast<float>(double(value) * heights_.metres_per_unit * 1e-3);
+        static_cast<float>(heights_.metres(value) * 1e-3);
   }
   // Normals of the placed surface: area-weighted face normals, outward (flipped where
   // the map reverses orientation, as the renderer's front-face rule is).

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "view/level_heights.h"
 #include "store/level_samples.h"
 #include "view/default_scene.h"
 
@@ -102,7 +103,8 @@ WindStep load_wind_step(const Store& store, std::uint32_t step, const WindNames&
                      store.path().string(), step, step + 1, seconds);
   }
 
-  const lod::WorldFrame frame(manifest, lod::WorldFrameOptions{.vertical_exaggeration = 1.0});
+  const lod::WorldFrame frame(manifest, lod::WorldFrameOptions{.vertical_exaggeration = 1.0},
+                              representative_level_heights_m(store));
   const WindUnits units = wind_units(frame);
   advect::WindGrid grid;
   grid.horizontal = units.horizontal;
