@@ -98,6 +98,21 @@ void perturb_xlat(const std::filesystem::path& file, std::size_t step, std::size
   ASSERT_EQ(nc_close(nc), NC_NOERR);
 }
 
+// Sets global attribute `name` of `file` to `value` (float, or int for MAP_PROJ).
+void set_global(const std::filesystem::path& file, const char* name, double value) {
+  int nc = 0;
+  ASSERT_EQ(nc_open(file.c_str(), NC_WRITE, &nc), NC_NOERR);
+  ASSERT_EQ(nc_redef(nc), NC_NOERR);
+  if (std::string(name) == "MAP_PROJ") {
+    const int v = static_cast<int>(value);
+    ASSERT_EQ(nc_put_att_int(nc, NC_GLOBAL, name, NC_INT, 1, &v), NC_NOERR);
+  } else {
+    const float v = static_cast<float>(value);
+    ASSERT_EQ(nc_put_att_float(nc, NC_GLOBAL, name, NC_FLOAT, 1, &v), NC_NOERR);
+  }
+  ASSERT_EQ(nc_close(nc), NC_NOERR);
+}
+
 TEST(WrfInputTest, LambertMappingPlacesEveryMassPointOnXlatXlong) {
   const testing::TempDir dir;
   const auto files = write_wrf(dir.path(), 1, false);
@@ -281,6 +296,27 @@ TEST(WrfInputTest, XlatMovingBetweenStepsIsRefused) {
   }
   expect_error([&] { scan_inputs(files, {}); }, ErrorCode::kInvalidInput,
                {"at step 1", "moving nest"});
+}
+
+TEST(WrfInputTest, AttributesThatDoNotDescribeTheGridAreRefused) {
+  const testing::TempDir dir;
+  const auto files = write_wrf(dir.path(), 1, false);
+  set_global(files[0], "TRUELAT2", 45.0);  // another cone: the points no longer fit
+  expect_error([&] { scan_inputs(files, {}); }, ErrorCode::kInvalidInput,
+               {"XLAT/XLONG of mass point", "m from where MAP_PROJ 1", "inconsistent attributes"});
+}
+
+TEST(WrfInputTest, RotatedLatitudeLongitudeIsUnsupported) {
+  const testing::TempDir dir;
+  const auto files = write_wrf(dir.path(), 1, false);
+  set_global(files[0], "MAP_PROJ", 6);
+  set_global(files[0], "POLE_LAT", 40.0);
+  expect_error([&] { scan_inputs(files, {}); }, ErrorCode::kUnsupported,
+               {"MAP_PROJ 6 with POLE_LAT 40", "rotated"});
+  // POLE_LAT 90: a regular latitude/longitude grid, which this Lambert grid is not.
+  set_global(files[0], "POLE_LAT", 90.0);
+  expect_error([&] { scan_inputs(files, {}); }, ErrorCode::kInvalidInput,
+               {"degrees from where MAP_PROJ 6"});
 }
 
 }  // namespace
