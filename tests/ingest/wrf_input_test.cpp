@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -317,6 +318,99 @@ TEST(WrfInputTest, RotatedLatitudeLongitudeIsUnsupported) {
   set_global(files[0], "POLE_LAT", 90.0);
   expect_error([&] { scan_inputs(files, {}); }, ErrorCode::kInvalidInput,
                {"degrees from where MAP_PROJ 6"});
+}
+
+// Replaces XLONG and XLAT of a one-step file by `lonlat` (ny x nx, x fastest).
+void write_lonlat(const std::filesystem::path& file,
+                  const std::vector<std::array<double, 2>>& lonlat) {
+  int nc = 0, lon = 0, lat = 0;
+  ASSERT_EQ(nc_open(file.c_str(), NC_WRITE, &nc), NC_NOERR);
+  ASSERT_EQ(nc_inq_varid(nc, "XLONG", &lon), NC_NOERR);
+  ASSERT_EQ(nc_inq_varid(nc, "XLAT", &lat), NC_NOERR);
+  std::vector<float> lons, lats;
+  for (const auto& p : lonlat) {
+    lons.push_back(static_cast<float>(p[0]));
+    lats.push_back(static_cast<float>(p[1]));
+  }
+  ASSERT_EQ(nc_put_var_float(nc, lon, lons.data()), NC_NOERR);
+  ASSERT_EQ(nc_put_var_float(nc, lat, lats.data()), NC_NOERR);
+  ASSERT_EQ(nc_close(nc), NC_NOERR);
+}
+
+struct OtherProjection {
+  int map_proj;
+  double truelat1, stand_lon;
+  std::string proj;  // written here by hand, as WRF defines the projection
+  std::string mapping;
+  double x0, y0;
+};
+
+// Polar stereographic and Mercator grids (XLAT/XLONG from PROJ's cs2cs) are placed on
+// axes that step by DX, DY from where cs2cs puts mass point (0, 0).
+TEST(WrfInputTest, PolarStereographicAndMercatorGridsArePlaced) {
+  if (!testing::have_cs2cs()) GTEST_SKIP() << "cs2cs (proj-bin) not installed";
+  constexpr double kDx = 20000;
+  const std::vector<OtherProjection> cases{
+      {2, 60, -100, "+proj=stere +lat_0=90 +lat_ts=60 +lon_0=-100 +R=6370000 +units=m",
+       "polar_stereographic", -130000, -4000000},
+      {3, 30, 10, "+proj=merc +lat_ts=30 +lon_0=10 +R=6370000 +units=m", "mercator", -60000,
+       4800000}};
+  for (const OtherProjection& p : cases) {
+    const testing::TempDir dir;
+    const auto files = write_wrf(dir.path(), 1, false);
+    std::vector<std::array<double, 2>> points;
+    for (std::size_t j = 0; j < kDims.y; ++j) {
+      for (std::size_t i = 0; i < kDims.x; ++i) {
+        points.push_back({p.x0 + static_cast<double>(i) * kDx, p.y0 + static_cast<double>(j) * kDx});
+      }
+    }
+    const auto lonlat = testing::cs2cs(p.proj, "+proj=longlat +R=6370000", points);
+    ASSERT_TRUE(lonlat);
+    write_lonlat(files[0], *lonlat);
+    set_global(files[0], "MAP_PROJ", p.map_proj);
+    set_global(files[0], "TRUELAT1", p.truelat1);
+    set_global(files[0], "STAND_LON", p.stand_lon);
+    set_global(files[0], "DX", kDx);
+    set_global(files[0], "DY", kDx);
+    const InputCatalog c = scan_inputs(files, {});
+    ASSERT_TRUE(c.grid_mapping) << p.mapping;
+    EXPECT_EQ(c.grid_mapping->name, p.mapping);
+    for (std::size_t i = 0; i < kDims.x; ++i) {
+      EXPECT_NEAR(c.x.values[i], p.x0 + static_cast<double>(i) * kDx, 0.5) << p.mapping << " " << i;
+    }
+    for (std::size_t j = 0; j < kDims.y; ++j) {
+      EXPECT_NEAR(c.y.values[j], p.y0 + static_cast<double>(j) * kDx, 0.5) << p.mapping << " " << j;
+    }
+  }
+}
+
+// MAP_PROJ 6 with POLE_LAT 90: longitude and latitude axes stepping DX / (R pi / 180).
+TEST(WrfInputTest, RegularLatitudeLongitudeGridHasGeographicAxes) {
+  const testing::TempDir dir;
+  const auto files = write_wrf(dir.path(), 1, false);
+  constexpr double kStep = 0.25, kLon0 = 5.0, kLat0 = 40.0;
+  std::vector<std::array<double, 2>> lonlat;
+  for (std::size_t j = 0; j < kDims.y; ++j) {
+    for (std::size_t i = 0; i < kDims.x; ++i) {
+      lonlat.push_back({kLon0 + static_cast<double>(i) * kStep, kLat0 + static_cast<double>(j) * kStep});
+    }
+  }
+  write_lonlat(files[0], lonlat);
+  set_global(files[0], "MAP_PROJ", 6);
+  const double dx = kStep * 6370000.0 * std::numbers::pi / 180.0;
+  set_global(files[0], "DX", dx);
+  set_global(files[0], "DY", dx);
+  const InputCatalog c = scan_inputs(files, {});
+  EXPECT_FALSE(c.grid_mapping);
+  EXPECT_EQ(c.x.kind, AxisKind::kLongitude);
+  EXPECT_EQ(c.y.kind, AxisKind::kLatitude);
+  // DX is a float attribute: its rounding moves the last column by up to 1e-6 degrees.
+  for (std::size_t i = 0; i < kDims.x; ++i) {
+    EXPECT_NEAR(c.x.values[i], kLon0 + static_cast<double>(i) * kStep, 2e-6) << i;
+  }
+  for (std::size_t j = 0; j < kDims.y; ++j) {
+    EXPECT_NEAR(c.y.values[j], kLat0 + static_cast<double>(j) * kStep, 2e-6) << j;
+  }
 }
 
 }  // namespace
