@@ -19,6 +19,7 @@
 #include "ingest/netcdf_file.h"
 #include "ingest/sample_conversion.h"
 #include "ingest/variable_meta.h"
+#include "ingest/wrf_destagger.h"
 
 namespace strielad::build {
 
@@ -28,6 +29,8 @@ struct BoxReader::Impl {
   ingest::NcFile file;
   int grpid = -1, varid = -1;
   bool has_time = false;
+  // WRF's U, V, W: the box is read one sample longer along this axis and destaggered.
+  ingest::StaggeredAxis stagger = ingest::StaggeredAxis::kNone;
   std::size_t time_index = 0;
   bool filtered = false;
   bool nan_as_fill = false;
@@ -132,9 +135,15 @@ void BoxReader::open_variable(Impl& m, Dims3 dims) {
   if (ok) {
     m.has_time = dimids.size() == 4;
     const std::size_t s = dimids.size() - 3;
-    ok = ingest::dimension_length(m.grpid, dimids[s]) == dims.z &&
-         ingest::dimension_length(m.grpid, dimids[s + 1]) == dims.y &&
-         ingest::dimension_length(m.grpid, dimids[s + 2]) == dims.x &&
+    const auto stagger = ingest::staggered_axis(
+        {ingest::dimension_name(m.grpid, dimids[s]), ingest::dimension_name(m.grpid, dimids[s + 1]),
+         ingest::dimension_name(m.grpid, dimids[s + 2])},
+        {ingest::dimension_length(m.grpid, dimids[s]),
+         ingest::dimension_length(m.grpid, dimids[s + 1]),
+         ingest::dimension_length(m.grpid, dimids[s + 2])},
+        dims);
+    if (stagger) m.stagger = *stagger;
+    ok = stagger.has_value() &&
          (m.has_time ? m.time_index < ingest::dimension_length(m.grpid, dimids[0])
                      : m.time_index == 0);
   }
@@ -156,7 +165,7 @@ void BoxReader::open_variable(Impl& m, Dims3 dims) {
       nc_inq_var_deflate(m.grpid, m.varid, &shuffle, &deflate, &level) == NC_NOERR &&
       (shuffle != 0 || deflate != 0);
   m.filtered = has_filters || has_shuffle;
-  if (m.filtered) return;
+  if (m.filtered || m.stagger != ingest::StaggeredAxis::kNone) return;
   nc_set_var_chunk_cache(m.grpid, m.varid, 0, 0, 0.75f);
   std::string why_not;
   m.planes = ingest::Hdf5PlaneLayout::open(m.path, m.name, m.attrs.type, m.has_time, dims, &why_not);
@@ -227,6 +236,10 @@ void BoxReader::Impl::read(const IndexBox& box, std::span<Out> out) {
     read_grib(box, out);
     return;
   }
+  IndexBox file_box = box;  // one longer along a staggered axis
+  if (stagger == ingest::StaggeredAxis::kX) ++file_box.hi[0];
+  if (stagger == ingest::StaggeredAxis::kY) ++file_box.hi[1];
+  if (stagger == ingest::StaggeredAxis::kZ) ++file_box.hi[2];
   {
     std::lock_guard lock(ingest::netcdf_mutex());
     std::array<std::size_t, 4> start{}, edge{};
@@ -236,17 +249,23 @@ void BoxReader::Impl::read(const IndexBox& box, std::span<Out> out) {
       edge[d++] = 1;
     }
     for (int a = 2; a >= 0; --a) {
-      start[d] = box.lo[a];
-      edge[d++] = box.extent(a);
+      start[d] = file_box.lo[a];
+      edge[d++] = file_box.extent(a);
     }
-    const std::size_t bytes = out.size() * ingest::nc_type_size(attrs.type);
+    const std::size_t bytes = file_box.count() * ingest::nc_type_size(attrs.type);
     if (buffer_size < bytes) {
       buffer.reset(new std::byte[bytes]);
       buffer_size = bytes;
     }
     ingest::nc_check(nc_get_vara(grpid, varid, start.data(), edge.data(), buffer.get()), context);
   }
-  convert_any<Out>(buffer.get(), attrs, nan_as_fill, out);
+  if (stagger == ingest::StaggeredAxis::kNone) {
+    convert_any<Out>(buffer.get(), attrs, nan_as_fill, out);
+    return;
+  }
+  std::vector<double> staggered(file_box.count());
+  convert_any<double>(buffer.get(), attrs, nan_as_fill, std::span<double>(staggered));
+  ingest::destagger(staggered, Dims3{box.extent(0), box.extent(1), box.extent(2)}, stagger, out);
 }
 
 namespace {

@@ -20,6 +20,8 @@
 #include "ingest/netcdf_call.h"
 #include "ingest/netcdf_file.h"
 #include "ingest/source_file.h"
+#include "ingest/wrf_grid_reader.h"
+#include "ingest/wrf_scan.h"
 
 namespace strielad::ingest {
 
@@ -606,8 +608,13 @@ ScannedFile scan_file(const std::filesystem::path& path) {
     std::lock_guard lock(netcdf_mutex());
     NcFile file{std::filesystem::path(display)};
     out.format = file.format();
-    FileScanner scanner(display, file.id());
-    out.variables = scanner.scan_all();
+    // WRF output: its 2-D XLAT/XLONG lie on a map projection its attributes describe.
+    if (is_wrf_file(file.id())) {
+      out.variables = scan_wrf_variables(file.id(), display);
+    } else {
+      FileScanner scanner(display, file.id());
+      out.variables = scanner.scan_all();
+    }
   } catch (const Error& e) {
     if (std::string_view(e.what()).substr(0, display.size()) == display) throw;
     throw e.with_context(display);

@@ -56,6 +56,9 @@ struct VerticalGeometrySource {
   // (z_mc, z_ifc, HHL, --height-var) or the two geopotentials summed (WRF's PH + PHB).
   std::vector<std::string> sources;
   bool varies_in_time = false;               // differs between time steps
+  // The g (m s-2) that turns geopotential sources into heights: WRF's 9.81 for PH + PHB
+  // (WRF computes them with it); 0: the WMO's standard gravity.
+  double geopotential_gravity = 0;
   friend bool operator==(const VerticalGeometrySource&, const VerticalGeometrySource&) = default;
 };
 

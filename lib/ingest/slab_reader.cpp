@@ -32,6 +32,7 @@
 #include "ingest/netcdf_file.h"
 #include "ingest/sample_conversion.h"
 #include "ingest/variable_meta.h"
+#include "ingest/wrf_destagger.h"
 
 namespace strielad::ingest {
 namespace {
@@ -58,6 +59,7 @@ struct VariableHandle {
   std::size_t time_length = 0;
   CfValueAttributes attrs;
   std::shared_ptr<const Hdf5PlaneLayout> planes;  // null: read through netCDF
+  StaggeredAxis stagger = StaggeredAxis::kNone;   // WRF's U, V, W: read destaggered
 };
 
 struct OpenFile {
@@ -75,6 +77,7 @@ struct SlabSource {
   std::byte* raw = nullptr;
   std::shared_ptr<const DirectReadFile> direct;
   std::optional<std::vector<FileRange>> ranges;
+  StaggeredAxis stagger = StaggeredAxis::kNone;  // raw holds the staggered samples
 };
 
 }  // namespace
@@ -186,9 +189,14 @@ const VariableHandle& SlabReader::Impl::variable(OpenFile& of, std::size_t file,
   if (ok) {
     h.has_time = dimids.size() == 4;
     const std::size_t s = dimids.size() - 3;
-    ok = dimension_length(h.grpid, dimids[s]) == dims.z &&
-         dimension_length(h.grpid, dimids[s + 1]) == dims.y &&
-         dimension_length(h.grpid, dimids[s + 2]) == dims.x;
+    const auto stagger = staggered_axis(
+        {dimension_name(h.grpid, dimids[s]), dimension_name(h.grpid, dimids[s + 1]),
+         dimension_name(h.grpid, dimids[s + 2])},
+        {dimension_length(h.grpid, dimids[s]), dimension_length(h.grpid, dimids[s + 1]),
+         dimension_length(h.grpid, dimids[s + 2])},
+        dims);
+    ok = stagger.has_value();
+    if (ok) h.stagger = *stagger;
     if (h.has_time) h.time_length = dimension_length(h.grpid, dimids[0]);
   }
   if (!ok) {
@@ -201,7 +209,7 @@ const VariableHandle& SlabReader::Impl::variable(OpenFile& of, std::size_t file,
                      name, nc_type_name(h.attrs.type));
   }
   check_usable(h.attrs);  // before any read: scale_factor 0, an empty valid range...
-  if (of.direct) {
+  if (of.direct && h.stagger == StaggeredAxis::kNone) {
     std::string why_not;
     h.planes = Hdf5PlaneLayout::open(path, name, h.attrs.type, h.has_time, dims, &why_not);
     if (!h.planes) {
@@ -334,8 +342,9 @@ std::byte* reusable_buffer(std::size_t bytes) {
   return buffer.get();
 }
 
-// Levels [z0, z1) of time index `time_in_file` of a variable, read through netCDF into `raw`.
-void get_slab(const VariableHandle& h, std::size_t time_in_file, std::size_t z0, std::size_t z1,
+// Levels [z0, z0 + dims.z) of time index `time_in_file` of a variable, dims.y x dims.x
+// samples each, read through netCDF into `raw`.
+void get_slab(const VariableHandle& h, std::size_t time_in_file, std::size_t z0,
               const Dims3& dims, std::byte* raw, const std::string& context) {
   std::array<std::size_t, 4> start{}, edge{};
   std::size_t d = 0;
@@ -344,7 +353,7 @@ void get_slab(const VariableHandle& h, std::size_t time_in_file, std::size_t z0,
     edge[d++] = 1;
   }
   start[d] = z0;
-  edge[d++] = z1 - z0;
+  edge[d++] = dims.z;
   start[d] = 0;
   edge[d++] = dims.y;
   start[d] = 0;
@@ -403,6 +412,14 @@ SlabSource SlabReader::Impl::fetch_slab(std::size_t v, const VariableLocation& l
   }
   SlabSource s;
   s.attrs = h.attrs;
+  if (h.stagger != StaggeredAxis::kNone) {
+    const Dims3 slab{catalog.dims().x, catalog.dims().y, z1 - z0};
+    const Dims3 extent = staggered_extent(slab, h.stagger);
+    s.stagger = h.stagger;
+    s.raw = reusable_buffer(extent.count() * nc_type_size(s.attrs.type));
+    get_slab(h, loc.time_in_file, z0, extent, s.raw, context);
+    return s;
+  }
   if (h.planes && of.direct) s.ranges = h.planes->planes(loc.time_in_file, z0, z1);
   if (s.ranges) {
     s.direct = of.direct;  // kept alive should another thread close the file
@@ -415,7 +432,8 @@ SlabSource SlabReader::Impl::fetch_slab(std::size_t v, const VariableLocation& l
   } else {
     s.raw = reusable_buffer(out.size() * nc_type_size(s.attrs.type));
   }
-  get_slab(h, loc.time_in_file, z0, z1, catalog.dims(), s.raw, context);
+  get_slab(h, loc.time_in_file, z0, Dims3{catalog.dims().x, catalog.dims().y, z1 - z0}, s.raw,
+           context);
   return s;
 }
 
@@ -450,6 +468,18 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
   ConversionResult r;
   for (;;) {
     s = fetch_slab(v, loc, z0, z1, out, context);
+    if (s.stagger != StaggeredAxis::kNone) {
+      // Converted (unpacked, missing values NaN) in double, then destaggered.
+      const Dims3 slab{catalog.dims().x, catalog.dims().y, z1 - z0};
+      const Dims3 extent = staggered_extent(slab, s.stagger);
+      std::vector<double> staggered(extent.count());
+      r = convert_any<double>(s.attrs.type, s.raw, staggered.size(), s.attrs,
+                              options.nan_as_fill, std::span<double>(staggered));
+      check_converted<double>(r, s.attrs, Dims3{extent.x, extent.y, catalog.dims().z}, z0,
+                              context + " (staggered)");
+      destagger(staggered, slab, s.stagger, out.first(count));
+      return;
+    }
     if (!s.ranges) {
       r = convert_any<Out>(s.attrs.type, s.raw, count, s.attrs, options.nan_as_fill, out);
       break;

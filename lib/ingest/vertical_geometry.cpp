@@ -68,7 +68,10 @@ void evaluate_from_variables(const VerticalGeometrySource& g, TermSource& terms,
     }
     const TermValues v = terms.read(source, step, z0, half ? z1 + 1 : z1);
     check_size(v, (z1 - z0 + (half ? 1 : 0)) * plane, source, "height");
-    const std::optional<double> f = metres_per_height_unit(v.units);
+    std::optional<double> f = metres_per_height_unit(v.units);
+    if (f && *f == 1.0 / kStandardGravity && g.geopotential_gravity > 0) {
+      f = 1.0 / g.geopotential_gravity;
+    }
     if (!f) {
       throw make_error(ErrorCode::kInvalidInput,
                        "height variable '{}' has units '{}'; a height needs m, km or gpm, a "

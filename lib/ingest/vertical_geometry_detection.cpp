@@ -14,6 +14,7 @@
 #include "ingest/formula_terms.h"
 #include "ingest/netcdf_call.h"
 #include "ingest/term_reader.h"
+#include "ingest/wrf_grid_reader.h"
 
 namespace strielad::ingest {
 namespace {
@@ -122,6 +123,11 @@ std::optional<VerticalGeometrySource> Detector::explicit_height() {
   auto phb = reader_.find("PHB");
   if (ph && phb) candidates.push_back({"PH + PHB", {*ph, *phb}});
   if (candidates.empty()) return std::nullopt;
+  if (candidates.size() == 1 && candidates[0].first == "PH + PHB") {
+    VerticalGeometrySource g = height_source(candidates[0].second);
+    g.geopotential_gravity = kWrfGravity;
+    return g;
+  }
   if (candidates.size() > 1) {
     std::vector<std::string> named;
     for (const auto& [name, vars] : candidates) {

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: Apache-2.0
+// A WRF history file converted end to end: a version-5 store on the Lambert conformal
+// mapping whose time-varying height field is, at every sample of every step, the mean of
+// the w levels' (PH + PHB) / 9.81 around it (WRF's g, computed here from the file read
+// with netCDF), with HGT as the surface.
+#include <gtest/gtest.h>
+#include <netcdf.h>
+
+#include <cmath>
+#include <vector>
+
+#include "convert/converter.h"
+#include "format/geometry_field.h"
+#include "store/level_samples.h"
+#include "store/store.h"
+#include "support/temp_dir.h"
+#include "synthetic/model_like_files.h"
+
+namespace strielad {
+namespace {
+
+constexpr Dims3 kDims{12, 10, 7};
+
+std::vector<double> read_netcdf(const std::filesystem::path& file, const char* name) {
+  int nc = 0, var = 0, ndims = 0;
+  EXPECT_EQ(nc_open(file.c_str(), NC_NOWRITE, &nc), NC_NOERR);
+  EXPECT_EQ(nc_inq_varid(nc, name, &var), NC_NOERR);
+  EXPECT_EQ(nc_inq_varndims(nc, var, &ndims), NC_NOERR);
+  std::vector<int> dims(static_cast<std::size_t>(ndims));
+  nc_inq_vardimid(nc, var, dims.data());
+  std::size_t count = 1;
+  for (int d : dims) {
+    std::size_t n = 0;
+    nc_inq_dimlen(nc, d, &n);
+    count *= n;
+  }
+  std::vector<double> out(count);
+  EXPECT_EQ(nc_get_var_double(nc, var, out.data()), NC_NOERR);
+  nc_close(nc);
+  return out;
+}
+
+TEST(WrfConversionTest, PhPlusPhbPlaceTheLevelsOfEveryStep) {
+  const testing::TempDir dir;
+  synthetic::SampleSpec s;
+  s.dims = kDims;
+  s.steps = 2;
+  s.step_seconds = 3600;
+  s.file_per_step = false;
+  const auto input =
+      synthetic::write_model_like_dataset(s, synthetic::SampleModel::kWrf, dir / "in").files[0].path;
+  build::ConvertOptions o;
+  o.inputs = {input};
+  o.store = dir / "store";
+  o.brick = 8;
+  o.threads = 1;
+  build::convert(o);
+
+  const auto store = Store::open(dir / "store");
+  const format::Manifest& m = store->manifest();
+  EXPECT_EQ(m.format_version, 5u);
+  ASSERT_TRUE(m.geometry);
+  EXPECT_EQ(m.geometry->vertical.kind, format::VerticalGeometry::Kind::kField);
+  EXPECT_EQ(m.geometry->vertical.sources, (std::vector<std::string>{"PH", "PHB"}));
+  EXPECT_TRUE(m.geometry->vertical.varies_in_time);
+  ASSERT_TRUE(m.geometry->surface);
+  EXPECT_EQ(m.geometry->surface->variable, "HGT");
+
+  const std::vector<double> ph = read_netcdf(input, "PH"), phb = read_netcdf(input, "PHB");
+  const std::size_t plane = kDims.x * kDims.y, w_levels = kDims.z + 1;
+  ASSERT_EQ(ph.size(), 2 * w_levels * plane);
+  const auto v = *format::geometry_field_variable(m);
+  for (std::uint32_t step = 0; step < 2; ++step) {
+    const auto heights = read_level_samples<float>(*store, step, v, 0);
+    ASSERT_EQ(heights.values.size(), kDims.z * plane);
+    for (std::size_t k = 0; k < kDims.z; ++k) {
+      for (std::size_t c = 0; c < plane; ++c) {
+        const std::size_t below = (step * w_levels + k) * plane + c, above = below + plane;
+        const double want =
+            0.5 * ((ph[below] + phb[below]) / 9.81 + (ph[above] + phb[above]) / 9.81);
+        // float32 in the store: within an ulp (1.2e-7 relative), which g = 9.80665
+        // (3.4e-4 relative) is far outside.
+        ASSERT_NEAR(heights.values[k * plane + c], want, 1.2e-7 * std::abs(want))
+            << "step " << step << " k " << k << " column " << c;
+      }
+    }
+  }
+  // The surface, HGT of the first step, exactly.
+  const auto coordinates = store->horizontal_coordinates();
+  ASSERT_TRUE(coordinates && coordinates->surface_m);
+  const std::vector<double> hgt = read_netcdf(input, "HGT");
+  EXPECT_EQ(*coordinates->surface_m, std::vector<double>(hgt.begin(), hgt.begin() + plane));
+}
+
+}  // namespace
+}  // namespace strielad
