@@ -103,8 +103,8 @@ InputCatalog grib_catalog(const std::vector<std::filesystem::path>& inputs,
     }
     std::size_t lead = candidates.front(), lead_count = 0;
     for (const std::size_t i : candidates) {
-      const auto count =
-          static_cast<std::size_t>(std::count_if(candidates.begin(), candidates.end(), [&](std::size_t e) {
+      const auto count = static_cast<std::size_t>(
+          std::count_if(candidates.begin(), candidates.end(), [&](std::size_t e) {
             return same_levels_and_grid(*all[e].second.front().variable,
                                         *all[i].second.front().variable);
           }));

@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ingest/grib_vertical_detection.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
 #include <optional>
-
-#include <fmt/format.h>
-#include <fmt/ranges.h>
-#include <spdlog/spdlog.h>
 
 #include "core/error.h"
 

@@ -36,7 +36,6 @@ bool grib_field_places_levels(std::string_view short_name);
 // message, HHL without a half level that a level needs, and a placing field on another
 // grid than the variables.
 void detect_grib_vertical_geometry(const std::vector<GribScan>& scans,
-                                   const std::vector<GribVariablePart>& chosen,
-                                   InputCatalog& c);
+                                   const std::vector<GribVariablePart>& chosen, InputCatalog& c);
 
 }  // namespace strielad::ingest

@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "ingest/grib_vertical_reader.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <limits>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "core/error.h"
 #include "core/file_io.h"
@@ -29,9 +30,8 @@ DecodedField decode(const InputCatalog& c, const VariableLocation& loc, std::siz
                     std::size_t plane, std::string_view field) {
   const std::string& path = c.files[loc.file].path;
   const GribMessageRef& m = loc.grib_levels.at(level);
-  const std::string where =
-      fmt::format("{}: GRIB message at byte {} ('{}', which places the levels)", path, m.offset,
-                  field);
+  const std::string where = fmt::format(
+      "{}: GRIB message at byte {} ('{}', which places the levels)", path, m.offset, field);
   std::vector<std::byte> bytes(static_cast<std::size_t>(m.size));
   ReadOnlyFile(path).read_at(m.offset, bytes);
   DecodedField out;
@@ -72,8 +72,8 @@ double metres_per_unit(const std::string& units, const std::string& where) {
   const std::optional<double> f = units.empty() ? 1.0 : metres_per_height_unit(units);
   if (!f) {
     throw make_error(ErrorCode::kInvalidInput,
-                     "{}: units '{}' are not those of a height (m) or geopotential (m2 s-2)",
-                     where, units);
+                     "{}: units '{}' are not those of a height (m) or geopotential (m2 s-2)", where,
+                     units);
   }
   return *f;
 }
@@ -135,8 +135,8 @@ void evaluate_half_level_heights(const InputCatalog& c, const VerticalGeometrySo
   for (std::size_t k = z0; k < z1; ++k) {
     double* dst = out.data() + (k - z0) * plane;
     const DecodedField& a = half(k * per_level);
-    const std::string where = fmt::format("{}: GRIB '{}' at byte {}", c.files[loc.file].path,
-                                          name, loc.grib_levels[k * per_level].offset);
+    const std::string where = fmt::format("{}: GRIB '{}' at byte {}", c.files[loc.file].path, name,
+                                          loc.grib_levels[k * per_level].offset);
     const double f = metres_per_unit(a.units, where);
     if (per_level == 1) {
       for (std::size_t s = 0; s < plane; ++s) dst[s] = a.values[s] * f;

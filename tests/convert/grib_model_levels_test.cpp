@@ -4,9 +4,8 @@
 // with HSURF as the surface. The catalog finds them, SlabReader evaluates them (checked
 // against the formulas computed here from the decoded messages), a conversion stores them
 // (format 5); what cannot be placed is refused.
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
@@ -77,7 +76,8 @@ std::vector<GribFixtureMessage> ifs_messages() {
   return m;
 }
 
-std::vector<double> decoded(const std::filesystem::path& path, const ingest::GribMessageSummary& m) {
+std::vector<double> decoded(const std::filesystem::path& path,
+                            const ingest::GribMessageSummary& m) {
   std::lock_guard lock(ingest::eccodes_mutex());
   return ingest::read_grib_message(path, m).double_array_key("values", path.string());
 }
@@ -126,7 +126,8 @@ TEST(GribModelLevelsTest, HybridLevelsArePlacedByPressureFromPvAndLnsp) {
   const auto& g = *c.vertical_geometry;
   EXPECT_EQ(g.quantity, ingest::VerticalGeometrySource::Quantity::kPressure);
   EXPECT_EQ(g.formula, "atmosphere_hybrid_sigma_pressure_coordinate");
-  EXPECT_EQ(g.terms, (std::map<std::string, std::string>{{"a", "pv"}, {"b", "pv"}, {"ps", "lnsp"}}));
+  EXPECT_EQ(g.terms,
+            (std::map<std::string, std::string>{{"a", "pv"}, {"b", "pv"}, {"ps", "lnsp"}}));
   EXPECT_TRUE(g.varies_in_time);
   EXPECT_FALSE(c.surface);
 
@@ -189,7 +190,8 @@ TEST(GribModelLevelsTest, SurfacePressureSpServesAsWellAsLnsp) {
   EXPECT_EQ(c.vertical_geometry->terms.at("ps"), "sp");
   const ingest::GribScan scan = ingest::scan_grib_file(dir / "sp.grb2");
   const std::vector<double> ps = decoded(dir / "sp.grb2", plane_named(scan, "sp").messages[0][0]);
-  const std::vector<double> pv = decoded_pv(dir / "sp.grb2", variable_named(scan, "t").messages[0][0]);
+  const std::vector<double> pv =
+      decoded_pv(dir / "sp.grb2", variable_named(scan, "t").messages[0][0]);
   std::vector<double> got(2 * kPlane);
   ingest::SlabReader(c, {}).read_vertical_geometry(0, 0, 2, got);
   const std::size_t n = 5;
