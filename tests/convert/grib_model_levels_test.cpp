@@ -203,6 +203,26 @@ TEST(GribModelLevelsTest, SurfacePressureSpServesAsWellAsLnsp) {
   }
 }
 
+TEST(GribModelLevelsTest, SurfaceGeopotentialBecomesTheSurfaceHeight) {
+  const testing::TempDir dir;
+  const auto path = dir / "ifs.grb2";
+  auto m = ifs_messages();
+  m.push_back({kSample,
+               {{"typeOfLevel", std::string("surface")},
+                {"shortName", std::string("z")},
+                {"bitsPerValue", 24L}},
+               field(500.0, 900.0)});
+  testing::write_grib_file(path, m);
+  const ingest::InputCatalog c = ingest::grib_catalog({path}, {});
+  ASSERT_TRUE(c.surface);
+  EXPECT_EQ(c.surface->variable, "z");
+  const ingest::GribScan scan = ingest::scan_grib_file(path);
+  const std::vector<double> z = decoded(path, plane_named(scan, "z").messages[0][0]);
+  std::vector<double> got(kPlane);
+  ingest::SlabReader(c, {}).read_surface(got);
+  for (std::size_t s = 0; s < kPlane; ++s) EXPECT_DOUBLE_EQ(got[s], z[s] / 9.80665) << s;
+}
+
 TEST(GribModelLevelsTest, LnspMissingAtOneStepIsRefusedNamingTheStep) {
   const testing::TempDir dir;
   auto m = ifs_messages();
