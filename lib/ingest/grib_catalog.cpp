@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "ingest/grib_grid.h"
+#include "ingest/grib_vertical_detection.h"
 #include "ingest/requested_steps.h"
 #include "ingest/source_file.h"
 
@@ -89,17 +90,33 @@ InputCatalog grib_catalog(const std::vector<std::filesystem::path>& inputs,
   // The variables: those asked for, or every one on the first one's levels and grid.
   std::vector<std::size_t> chosen;
   if (options.variables.empty()) {
-    // The levels and grid most variables share (the first such set on a tie).
-    std::size_t lead = 0, lead_count = 0;
+    // The levels and grid most variables share (the first such set on a tie); fields
+    // that place the levels (HHL) are not variables of their own.
+    std::vector<std::size_t> candidates;
     for (std::size_t i = 0; i < all.size(); ++i) {
-      const auto count =
-          static_cast<std::size_t>(std::count_if(all.begin(), all.end(), [&](const auto& e) {
-            return same_levels_and_grid(*e.second.front().variable,
+      if (!grib_field_places_levels(all[i].second.front().variable->short_name)) {
+        candidates.push_back(i);
+      }
+    }
+    if (candidates.empty()) {
+      for (std::size_t i = 0; i < all.size(); ++i) candidates.push_back(i);
+    }
+    std::size_t lead = candidates.front(), lead_count = 0;
+    for (const std::size_t i : candidates) {
+      const auto count = static_cast<std::size_t>(
+          std::count_if(candidates.begin(), candidates.end(), [&](std::size_t e) {
+            return same_levels_and_grid(*all[e].second.front().variable,
                                         *all[i].second.front().variable);
           }));
       if (count > lead_count) lead = i, lead_count = count;
     }
     for (std::size_t i = 0; i < all.size(); ++i) {
+      if (std::find(candidates.begin(), candidates.end(), i) == candidates.end()) {
+        spdlog::info("GRIB field '{}' places the levels and is not converted as a variable "
+                     "(ask for it with --vars)",
+                     all[i].first);
+        continue;
+      }
       if (same_levels_and_grid(*all[i].second.front().variable,
                                *all[lead].second.front().variable)) {
         chosen.push_back(i);
@@ -204,6 +221,11 @@ InputCatalog grib_catalog(const std::vector<std::filesystem::path>& inputs,
     for (const double t : c.time.values)
       c.locations[v].push_back(at[v].at(static_cast<std::int64_t>(t)));
   }
+  std::vector<GribVariablePart> parts;
+  for (const std::size_t i : chosen) {
+    for (const Found& f : all[i].second) parts.push_back({f.file, f.variable});
+  }
+  detect_grib_vertical_geometry(scans, parts, c);
   std::vector<std::string> names;
   for (const auto& m : c.variables) names.push_back(m.name);
   spdlog::info(

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "core/checksum.h"
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/io_error.h"
@@ -48,6 +49,11 @@ GribMessageSummary summarise(const GribHandle& message, const std::string& where
   s.validity_date = message.long_key("validityDate");
   s.validity_time = message.long_key("validityTime");
   s.number_of_values = message.long_key("numberOfValues");
+  if (message.long_key("PVPresent") != 0) {
+    const std::vector<double> pv = message.double_array_key("pv", where);
+    s.pv_size = pv.size();
+    s.pv_checksum = checksum64(std::as_bytes(std::span(pv)));
+  }
   take_eccodes_log();  // a key some messages lack is not an error of the message
   return s;
 }

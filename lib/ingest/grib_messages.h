@@ -29,6 +29,10 @@ struct GribMessageSummary {
   long validity_date = 0;     // YYYYMMDD
   long validity_time = 0;     // HHMM
   long number_of_values = 0;
+  // The vertical coordinate parameters (key "pv": hybrid levels' a then b), when the
+  // message has them: how many, and checksum64 of their float64 bytes.
+  std::size_t pv_size = 0;
+  std::uint64_t pv_checksum = 0;
 };
 
 // Every message, in file order. \error kNotFound, kIo; kInvalidInput naming the file, the

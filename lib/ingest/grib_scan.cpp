@@ -25,7 +25,8 @@ std::optional<VerticalType> vertical_type(const std::string& type_of_level) {
   if (type_of_level == "heightAboveGround" || type_of_level == "heightAboveSea") {
     return VerticalType{AxisKind::kHeight, "m", "up"};
   }
-  if (type_of_level == "hybrid" || type_of_level == "generalVertical") {
+  if (type_of_level == "hybrid" || type_of_level == "generalVertical" ||
+      type_of_level == "generalVerticalLayer") {
     return VerticalType{AxisKind::kModelLevel, "1", "down"};
   }
   return std::nullopt;
@@ -123,12 +124,21 @@ GribScan scan_grib_file(const std::filesystem::path& path) {
   for (const Key& key : order) {
     const Group& group = groups.at(key);
     const auto vertical = vertical_type(key.second);
+    std::set<double> levels;
+    for (const auto& m : group.messages) levels.insert(m.level_value);
+    if (levels.size() == 1) {
+      try {
+        scan.planes.push_back(build_variable(
+            key, group, vertical.value_or(VerticalType{AxisKind::kOther, "1", ""}),
+            path.string()));
+      } catch (const Error&) {
+        // Not usable as a plane either; listed as skipped below.
+      }
+    }
     if (!vertical) {
       scan.skipped.push_back({key.first, key.second, "not a vertical level type of a 3-D field"});
       continue;
     }
-    std::set<double> levels;
-    for (const auto& m : group.messages) levels.insert(m.level_value);
     if (levels.size() < 2) {
       scan.skipped.push_back({key.first, key.second, "on one level only"});
       continue;

@@ -3,9 +3,10 @@
 // typeOfLevel), each variable's levels sorted into a vertical axis, and its validity
 // times into steps, with every (step, level) found exactly once.
 // Vertical level types: isobaricInhPa and isobaricInPa (pressure), heightAboveGround and
-// heightAboveSea (height in metres), hybrid and generalVertical (model levels). Fields on
-// one level, on layers (pressureFromGroundLayer ...) or on other level types are not 3-D
-// fields: they are listed as skipped, with why.
+// heightAboveSea (height in metres), hybrid, generalVertical and generalVerticalLayer
+// (model levels). Fields on one level, on other layers (pressureFromGroundLayer ...) or on
+// other level types are not 3-D fields: they are listed as skipped, with why; those on one
+// level (surface pressure, orography) are also kept as planes, for placing the levels.
 #pragma once
 
 #include <cstdint>
@@ -35,6 +36,10 @@ struct GribScan {
   std::filesystem::path path;
   std::vector<GribVariable> variables;  // in the order of their first message
   std::vector<GribSkipped> skipped;
+  // Fields on one level of any type (lnsp on hybrid level 1, sp or orog on the surface),
+  // as one-level variables; those whose messages clash (two grids, a step twice) are
+  // only skipped.
+  std::vector<GribVariable> planes;
 };
 
 // \error what list_grib_messages throws; kInvalidInput naming the file, the variable and

@@ -120,6 +120,11 @@ struct InputCatalog {
   // axis places every sample).
   std::optional<VerticalGeometrySource> vertical_geometry;
   std::optional<SurfaceSource> surface;
+  // GRIB inputs: where the fields that vertical_geometry and surface name lie (lnsp or
+  // sp, HHL, orog ...), by shortName: one location per time step, or a single one when
+  // the field does not vary in time. HHL lists, per level of z, the half levels to
+  // average (two for generalVerticalLayer, one for generalVertical); a plane lists one.
+  std::map<std::string, std::vector<VariableLocation>> grib_fields;
 
   Dims3 dims() const { return Dims3{x.size(), y.size(), z.size()}; }
   std::size_t variable_index(std::string_view name) const;  // throws kNotFound

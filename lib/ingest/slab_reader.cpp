@@ -28,6 +28,7 @@
 #include "ingest/vertical_geometry.h"
 
 #include "ingest/grib_catalog.h"
+#include "ingest/grib_vertical_reader.h"
 #include "ingest/netcdf_call.h"
 #include "ingest/netcdf_file.h"
 #include "ingest/sample_conversion.h"
@@ -577,6 +578,12 @@ std::size_t checked_output_size(std::size_t z0, std::size_t z1, const Dims3& dim
   return (z1 - z0) * dims.y * dims.x;
 }
 
+// Whether the catalog's inputs are GRIB: its locations name messages.
+bool from_grib(const InputCatalog& c) {
+  return !c.locations.empty() && !c.locations.front().empty() &&
+         !c.locations.front().front().grib_levels.empty();
+}
+
 }  // namespace
 
 void SlabReader::read_vertical_geometry(std::size_t step, std::size_t z0, std::size_t z1,
@@ -598,7 +605,11 @@ void SlabReader::read_vertical_geometry(std::size_t step, std::size_t z0, std::s
                                           g.formula, fmt::join(g.sources, ", "), step);
   const std::span<double> in_files = out.first(count);
   try {
-    evaluate_vertical_geometry(g, impl_->term_reader(), step, z0, z1, dims, in_files);
+    if (from_grib(c)) {
+      evaluate_grib_vertical_geometry(c, step, z0, z1, dims, in_files);
+    } else {
+      evaluate_vertical_geometry(g, impl_->term_reader(), step, z0, z1, dims, in_files);
+    }
   } catch (const Error& e) {
     rethrow_with_context(e, path, context);
   }
@@ -620,7 +631,11 @@ void SlabReader::read_surface(std::span<double> out) {
                                                 repeat_first_column_, out.size());
   const std::string& path = c.files.front().path;
   try {
-    evaluate_surface(*c.surface, impl_->term_reader(), dims, out.first(count));
+    if (from_grib(c)) {
+      evaluate_grib_surface(c, dims, out.first(count));
+    } else {
+      evaluate_surface(*c.surface, impl_->term_reader(), dims, out.first(count));
+    }
   } catch (const Error& e) {
     rethrow_with_context(e, path,
                          fmt::format("{}: surface height '{}'", path, c.surface->variable));

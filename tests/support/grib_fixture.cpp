@@ -25,6 +25,9 @@ void write_grib_file(const std::filesystem::path& path,
         ingest::eccodes_check(codes_set_long(h.get(), key.c_str(), *l), what);
       } else if (const auto* d = std::get_if<double>(&value)) {
         ingest::eccodes_check(codes_set_double(h.get(), key.c_str(), *d), what);
+      } else if (const auto* a = std::get_if<std::vector<double>>(&value)) {
+        ingest::eccodes_check(codes_set_double_array(h.get(), key.c_str(), a->data(), a->size()),
+                              what);
       } else {
         const auto& s = std::get<std::string>(value);
         std::size_t length = s.size();

@@ -14,7 +14,9 @@ namespace strielad::testing {
 
 struct GribFixtureMessage {
   std::string sample;  // template name without ".tmpl", e.g. "regular_ll_pl_grib2"
-  std::vector<std::pair<std::string, std::variant<long, double, std::string>>> keys;
+  // A vector sets a numeric array key ("pv"; set "NV" before it).
+  std::vector<std::pair<std::string, std::variant<long, double, std::string, std::vector<double>>>>
+      keys;
   std::vector<double> values;  // empty: the template's
 };
 
