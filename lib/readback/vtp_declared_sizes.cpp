@@ -182,7 +182,16 @@ class DeclaredSizeCheck {
     const double n =
         count(tag, "NumberOfTuples", tuples) * std::max(1.0, count(tag, "NumberOfComponents", 1));
     if (n > limit_) refuse(name, n);
+    // VTK 9.1 reads an array of any other format as appended data whenever the file has
+    // some (a mistyped "appunded" reached its compressed reader unchecked): only its
+    // format names pass.
     const auto format = attribute(tag, "format");
+    if (format && *format != "ascii" && *format != "binary" && *format != "appended") {
+      throw make_error(ErrorCode::kInvalidInput,
+                       "{}: not a readable VTK XML PolyData file: {} '{}' of format '{}' (not "
+                       "ascii, binary or appended)",
+                       what_, name, attribute(tag, "Name").value_or(""), *format);
+    }
     if (!compressed_ || !format) return;
     if (const auto start = compressed_start(tag, *format, close)) {
       check_compressed_header(name, n, *start);

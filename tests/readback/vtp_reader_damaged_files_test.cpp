@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // read_vtp on damaged .vtp files (the fuzzer's reproducers in
 // tests/fuzz/regressions/vtp_reader/): sizes the file's bytes cannot back, array types
-// VTK does not know and compressed arrays of zero blocks are refused with kInvalidInput
+// or formats VTK does not know and compressed arrays of zero blocks are refused with kInvalidInput
 // naming the file, before VTK allocates terabytes (std::bad_alloc thrown through VTK) or
 // dereferences null (SEGV); so are polygons that refer to points the file does not have.
 #include <gtest/gtest.h>
@@ -43,6 +43,14 @@ TEST(VtpReaderDamagedFilesTest, CompressedBlockSizeOfZeroIsRefused) {
   const auto path = kRegressions / "compressed-block-size-zero-sigfpe.vtp";
   expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput,
                {path.string(), "compressed header has", "blocks of 0 bytes"});
+}
+
+TEST(VtpReaderDamagedFilesTest, ArrayOfAnUnknownFormatIsRefused) {
+  // "appunded": VTK reads it as appended data, whose compressed header (block size 0)
+  // the check skipped for a format it did not know: SIGFPE in VTK.
+  const auto path = kRegressions / "unknown-array-format-sigfpe.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput,
+               {path.string(), "Points", "format 'appunded'"});
 }
 
 TEST(VtpReaderDamagedFilesTest, FieldArrayOfAnUnknownTypeIsRefused) {
