@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Terrain-following model output through the tools as a user runs them: the ICON-like,
-# CF hybrid-height and hybrid sigma-pressure samples convert into stores that record their
+# CF hybrid-height, hybrid sigma-pressure and WRF-like (a file per step, Lambert, PH+PHB)
+# samples convert into stores that record their
 # grid geometry (info, info --json, verify), extract into every output frame with heights
 # from the geometry, cut a height band by the geometry's field, export it as a .vdb; NCAR's
 # CCM hybrid file (libncarg-data vinth2p.nc) is refused without P0 and converts with it;
@@ -19,21 +20,24 @@ source "$(dirname "$0")/../support/expect_cli_error.sh"
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
-declare -A temperature=([icon]=temp [icon-cf]=temp [sigma-pressure]=t)
+declare -A limit=([icon]='"var": "temp", "max": 265' [icon-cf]='"var": "temp", "max": 265'
+  [sigma-pressure]='"var": "t", "max": 265' [wrf]='"var": "QCLOUD", "min": 1e-5')
 declare -A placed_by=([icon]="variable z_ifc" [icon-cf]="atmosphere_hybrid_height_coordinate"
-  [sigma-pressure]="atmosphere_hybrid_sigma_pressure_coordinate")
-for model in icon icon-cf sigma-pressure; do
-  "$sample" -o "$work/in-$model" --model "$model" --dims 40x36x16 --steps 2 --single-file -q ||
-    fail "$model sample"
-  "$convert" "$work/in-$model"/*.nc -o "$work/$model" -q || { fail "$model conversion"; continue; }
+  [sigma-pressure]="atmosphere_hybrid_sigma_pressure_coordinate" [wrf]="variable PH + PHB")
+for model in icon icon-cf sigma-pressure wrf; do
+  # WRF writes a file per step (wrfout_d01_<date>); the others one file.
+  "$sample" -o "$work/in-$model" --model "$model" --dims 40x36x16 --steps 2 \
+    $([[ $model == wrf ]] || echo --single-file) -q || fail "$model sample"
+  "$convert" "$work/in-$model"/* -o "$work/$model" -q || { fail "$model conversion"; continue; }
   "$convert" info "$work/$model" >"$work/$model.info" || fail "$model info"
   grep -q "^geometry " "$work/$model.info" || fail "$model info shows no geometry"
+  [[ $model != wrf ]] || grep -q "(lambert_conformal_conic)" "$work/$model.info" ||
+    fail "the WRF store is not placed by its Lambert projection"
   "$convert" info "$work/$model" --json >"$work/$model.info.json" || fail "$model info --json"
   grep -q '"geometry"' "$work/$model.info.json" || fail "$model info --json has no geometry"
   grep -q '"format_version": 5' "$work/$model.info.json" || fail "$model store is not version 5"
   "$convert" verify "$work/$model" >"$work/$model.verify" || fail "$model verify"
-  echo "{\"subvolumes\": [{\"id\": 1, \"limits\": [{\"var\": \"${temperature[$model]}\", \"max\": 265}]}]}" \
-    >"$work/$model.scene.json"
+  echo "{\"subvolumes\": [{\"id\": 1, \"limits\": [{${limit[$model]}}]}]}" >"$work/$model.scene.json"
   for frame in axis lonlat metric ecef; do
     "$serve" extract --store "$work/$model" --scene "$work/$model.scene.json" \
       -o "$work/$model.$frame.vtp" --frame "$frame" --json >"$work/$model.$frame.json" \
