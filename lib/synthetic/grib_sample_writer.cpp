@@ -210,16 +210,9 @@ void GribSampleFileWriter::write_level(std::size_t variable_index, std::size_t t
 std::uint64_t GribSampleFileWriter::commit() {
   out_.close();
   if (!out_) throw make_error(ErrorCode::kIo, "{}: cannot close", temp_path_.string());
-  fsync_path(temp_path_);
-  std::error_code ec;
-  std::filesystem::rename(temp_path_, path_, ec);
-  if (ec) {
-    throw make_error(ErrorCode::kIo, "{}: cannot rename {} onto it: {}", path_.string(),
-                     temp_path_.string(), ec.message());
-  }
+  const std::uint64_t size = publish_sample_file(temp_path_, path_);
   committed_ = true;
-  fsync_directory(path_.parent_path().empty() ? std::filesystem::path(".") : path_.parent_path());
-  return std::filesystem::file_size(path_);
+  return size;
 }
 
 }  // namespace strielad::synthetic

@@ -396,24 +396,13 @@ SampleResult write_model_like_dataset(const SampleSpec& spec, SampleModel model,
   const HybridPressureLevels pressure_levels = hybrid_pressure_levels(spec.dims.z);
   const DatasetContext ctx{spec, model, grid, surface, height_levels, pressure_levels};
 
-  const std::uint64_t total = static_cast<std::uint64_t>(spec.steps) *
-                              model_variables(model).size() * spec.dims.z;
-  std::uint64_t done = 0;
-  const std::function<void()> level_done = [&] {
-    ++done;
-    if (progress) progress(done, total);
-  };
-  const std::size_t steps_per_file = spec.file_per_step ? 1 : spec.steps;
-  SampleResult result;
-  for (std::size_t f = 0; f < names.size(); ++f) {
-    std::vector<double> times(steps_per_file);
-    for (std::size_t s = 0; s < steps_per_file; ++s) {
-      times[s] = static_cast<double>(f * steps_per_file + s) * spec.step_seconds;
-    }
-    result.files.push_back(write_model_file(out_dir / names[f], ctx, options, times, level_done));
-    result.bytes += result.files.back().bytes;
-  }
-  return result;
+  return write_step_files(
+      spec, out_dir, names, static_cast<std::uint64_t>(model_variables(model).size()) * spec.dims.z,
+      [&](const std::filesystem::path& path, std::span<const double> times,
+          const std::function<void()>& level_done) {
+        return write_model_file(path, ctx, options, times, level_done);
+      },
+      progress);
 }
 
 }  // namespace strielad::synthetic

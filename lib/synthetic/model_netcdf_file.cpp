@@ -183,17 +183,8 @@ std::uint64_t ModelNetcdfFile::commit() {
     ncid_ = -1;
     nc_check(status, fmt::format("{}: close", temp_path_.string()));
   }
-  fsync_path(temp_path_);
-  std::error_code ec;
-  std::filesystem::rename(temp_path_, path_, ec);
-  if (ec) {
-    throw make_error(ErrorCode::kIo, "{}: cannot rename {} onto it: {}", path_.string(),
-                     temp_path_.string(), ec.message());
-  }
+  const std::uint64_t size = publish_sample_file(temp_path_, path_);
   committed_ = true;
-  fsync_directory(path_.parent_path());
-  const std::uintmax_t size = std::filesystem::file_size(path_, ec);
-  if (ec) throw make_error(ErrorCode::kIo, "{}: cannot stat: {}", path_.string(), ec.message());
   return size;
 }
 

@@ -84,36 +84,44 @@ void prepare_sample_directory(const std::filesystem::path& dir) {
   }
 }
 
+SampleResult write_step_files(const SampleSpec& spec, const std::filesystem::path& out_dir,
+                              const std::vector<std::string>& names,
+                              std::uint64_t levels_per_step, const StepFileWriter& write_file,
+                              const SampleProgress& progress) {
+  const std::uint64_t total = static_cast<std::uint64_t>(spec.steps) * levels_per_step;
+  std::uint64_t done = 0;
+  const std::function<void()> level_done = [&] {
+    ++done;
+    if (progress) progress(done, total);
+  };
+  const std::size_t steps_per_file = spec.file_per_step ? 1 : spec.steps;
+  SampleResult result;
+  for (std::size_t f = 0; f < names.size(); ++f) {
+    std::vector<double> times(steps_per_file);
+    for (std::size_t s = 0; s < steps_per_file; ++s) {
+      times[s] = static_cast<double>(f * steps_per_file + s) * spec.step_seconds;
+    }
+    result.files.push_back(write_file(out_dir / names[f], times, level_done));
+    result.bytes += result.files.back().bytes;
+  }
+  return result;
+}
+
 SampleResult write_sample_dataset(const SampleSpec& spec, const std::filesystem::path& out_dir,
                                   SampleProgress progress) {
   const std::vector<SampleVariable> variables = validate_sample_spec(spec);
   prepare_sample_directory(out_dir);
 
   const SampleGrid grid(spec.dims);
-  const std::vector<std::string> names = sample_file_names(spec);
-  const std::size_t steps_per_file = spec.file_per_step ? 1 : spec.steps;
-  const std::uint64_t total = static_cast<std::uint64_t>(spec.steps) * variables.size() *
-                              spec.dims.z;
-  std::uint64_t done = 0;
-  const std::function<void()> level_done = [&] {
-    ++done;
-    if (progress) progress(done, total);
-  };
-
   std::array<std::vector<float>, kLevelsInFlight> buffers;
   for (auto& b : buffers) b.resize(grid.level_size());
-
-  SampleResult result;
-  for (std::size_t f = 0; f < names.size(); ++f) {
-    const std::size_t first_step = f * steps_per_file;
+  const auto write_file = [&](const std::filesystem::path& path, std::span<const double> times,
+                              const std::function<void()>& level_done) {
     SampleFileLayout layout;
     layout.variables = variables;
     layout.seed = spec.seed;
     layout.deflate = spec.deflate;
-    for (std::size_t s = 0; s < steps_per_file; ++s) {
-      layout.times.push_back(static_cast<double>(first_step + s) * spec.step_seconds);
-    }
-    const std::filesystem::path path = out_dir / names[f];
+    layout.times.assign(times.begin(), times.end());
     const auto start = std::chrono::steady_clock::now();
     std::optional<SampleFileWriter> netcdf;
     std::optional<GribSampleFileWriter> grib;
@@ -131,7 +139,7 @@ SampleResult write_sample_dataset(const SampleSpec& spec, const std::filesystem:
         netcdf->write_level(v, t, k, values);
       }
     };
-    for (std::size_t s = 0; s < steps_per_file; ++s) {
+    for (std::size_t s = 0; s < layout.times.size(); ++s) {
       const SampleAtmosphere atmosphere(grid, spec.seed, layout.times[s]);
       write_step(atmosphere, variables, spec.dims.z, write_level, s, level_done, buffers);
     }
@@ -142,10 +150,11 @@ SampleResult write_sample_dataset(const SampleSpec& spec, const std::filesystem:
                   path.string(), bytes,
                   std::chrono::duration<double>(written - start).count(),
                   std::chrono::duration<double>(committed - written).count());
-    result.files.push_back(SampleFile{path, bytes});
-    result.bytes += bytes;
-  }
-  return result;
+    return SampleFile{path, bytes};
+  };
+  return write_step_files(spec, out_dir, sample_file_names(spec),
+                          static_cast<std::uint64_t>(variables.size()) * spec.dims.z, write_file,
+                          progress);
 }
 
 }  // namespace strielad::synthetic

@@ -132,6 +132,21 @@ void fsync_path(const std::filesystem::path& path) {
   ::close(fd);
 }
 
+std::uint64_t publish_sample_file(const std::filesystem::path& temp_path,
+                                  const std::filesystem::path& path) {
+  fsync_path(temp_path);
+  std::error_code ec;
+  std::filesystem::rename(temp_path, path, ec);
+  if (ec) {
+    throw make_error(ErrorCode::kIo, "{}: cannot rename {} onto it: {}", path.string(),
+                     temp_path.string(), ec.message());
+  }
+  fsync_directory(path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path());
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw make_error(ErrorCode::kIo, "{}: cannot stat: {}", path.string(), ec.message());
+  return size;
+}
+
 SampleFileWriter::SampleFileWriter(std::filesystem::path path, const SampleGrid& grid,
                                    SampleFileLayout layout)
     : path_(std::move(path)),
@@ -206,19 +221,8 @@ std::uint64_t SampleFileWriter::commit() {
     ncid_ = -1;
     nc_check(status, fmt::format("{}: close", temp_path_.string()));
   }
-  fsync_path(temp_path_);
-  std::error_code ec;
-  std::filesystem::rename(temp_path_, path_, ec);
-  if (ec) {
-    throw make_error(ErrorCode::kIo, "{}: cannot rename {} onto it: {}", path_.string(),
-                     temp_path_.string(), ec.message());
-  }
+  const std::uint64_t size = publish_sample_file(temp_path_, path_);
   committed_ = true;
-  fsync_directory(path_.parent_path());
-  const std::uintmax_t size = std::filesystem::file_size(path_, ec);
-  if (ec) {
-    throw make_error(ErrorCode::kIo, "{}: cannot stat: {}", path_.string(), ec.message());
-  }
   return size;
 }
 

@@ -30,6 +30,11 @@ inline constexpr const char* kSampleTimeUnits = "seconds since 2013-04-26 12:00:
 // Flushes a written file to disk. Throws kIo naming the file.
 void fsync_path(const std::filesystem::path& path);
 
+// Publishes a closed temporary file: fsyncs it, renames it onto `path` and fsyncs the
+// directory. Returns the file's size in bytes. Throws kIo naming the files.
+std::uint64_t publish_sample_file(const std::filesystem::path& temp_path,
+                                  const std::filesystem::path& path);
+
 class SampleFileWriter {
  public:
   // Creates the temporary file and defines dimensions, coordinates and variables; writes

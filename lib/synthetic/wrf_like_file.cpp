@@ -443,24 +443,13 @@ SampleResult write_wrf_like_dataset(const SampleSpec& spec, const std::filesyste
   rotations(grid, grid.lon_v, ctx.cos_v, ctx.sin_v);
   ctx.ph_phase = 2 * std::numbers::pi * unit_hash(noise_key(spec.seed, kSaltWrfGeopotential), 0);
 
-  const std::uint64_t total = static_cast<std::uint64_t>(spec.steps) *
-                              wrf_sample_variable_names().size() * nz;
-  std::uint64_t done = 0;
-  const std::function<void()> level_done = [&] {
-    ++done;
-    if (progress) progress(done, total);
-  };
-  const std::size_t steps_per_file = spec.file_per_step ? 1 : spec.steps;
-  SampleResult result;
-  for (std::size_t file = 0; file < names.size(); ++file) {
-    std::vector<double> times(steps_per_file);
-    for (std::size_t s = 0; s < steps_per_file; ++s) {
-      times[s] = static_cast<double>(file * steps_per_file + s) * spec.step_seconds;
-    }
-    result.files.push_back(write_wrf_file(out_dir / names[file], ctx, times, level_done));
-    result.bytes += result.files.back().bytes;
-  }
-  return result;
+  return write_step_files(
+      spec, out_dir, names, static_cast<std::uint64_t>(wrf_sample_variable_names().size()) * nz,
+      [&](const std::filesystem::path& path, std::span<const double> times,
+          const std::function<void()>& level_done) {
+        return write_wrf_file(path, ctx, times, level_done);
+      },
+      progress);
 }
 
 }  // namespace strielad::synthetic
