@@ -160,11 +160,6 @@ std::string_view output_frame_name(OutputFrame frame) {
 
 namespace {
 
-// Sign of d(z axis value) / d(k).
-int z_axis_direction(const Axis& z) {
-  return z.size() >= 2 && z.values.back() < z.values.front() ? -1 : 1;
-}
-
 // The placement by a version-5 store's vertical geometry.
 VerticalPlacement geometry_placement(const format::Manifest& m) {
   using format::VerticalGeometry;
@@ -180,7 +175,7 @@ VerticalPlacement geometry_placement(const format::Manifest& m) {
   v.pressure = g.vertical.quantity == VerticalGeometry::Quantity::kPressure;
   // orientation = sign d(east, north, up) / d(i, j, k) = horizontal sign x sign dh/dk.
   const int vertical_per_k = g.orientation * geo::horizontal_orientation(m.x, m.y, m.grid_mapping);
-  v.vertical_sign = vertical_per_k * z_axis_direction(m.z);
+  v.vertical_sign = m.z.descending() ? -vertical_per_k : vertical_per_k;
   const std::string what = v.pressure ? "pressure" : "height";
   const std::string how = g.vertical.formula == format::kGeometryFormulaVariable
                               ? fmt::format("variable {}", fmt::join(g.vertical.sources, " + "))
@@ -351,7 +346,7 @@ double FrameTransform::level_value(double z) const {
   const std::vector<double>& a = manifest_->z.values;
   const std::vector<double>& l = vertical_.levels;
   if (a.size() == 1) return l.front();
-  const bool ascending = a.back() > a.front();
+  const bool ascending = !manifest_->z.descending();
   // First index whose axis value is beyond z, clamped to the last cell.
   const auto beyond = ascending ? std::upper_bound(a.begin(), a.end(), z)
                                 : std::upper_bound(a.begin(), a.end(), z, std::greater<>());

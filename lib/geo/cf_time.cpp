@@ -53,6 +53,17 @@ bool is_month_or_year_unit(std::string_view unit) {
 // (some 950,000 years: six-digit years at most).
 constexpr double kMaxDateSeconds = 3e13;
 
+// Seconds from the reference of coordinate value `value`. \error kInvalidArgument naming
+// `value` when they are not finite or more than kMaxDateSeconds.
+double checked_offset_seconds(double value, double seconds_per_unit) {
+  const double offset = value * seconds_per_unit;
+  if (!std::isfinite(offset) || std::abs(offset) > kMaxDateSeconds) {
+    throw make_error(ErrorCode::kInvalidArgument, "time value {} is {} for a date", value,
+                     std::isfinite(offset) ? "too far from the reference date" : "not finite");
+  }
+  return offset;
+}
+
 std::string year_text(std::int64_t year) {
   if (year < 0) return fmt::format("-{:04}", -year);
   if (year > 9999) return fmt::format("+{}", year);
@@ -208,12 +219,7 @@ CfTimeReference parse_cf_time_reference(const std::string& units, const std::str
 }
 
 std::string cf_date_text(const CfTimeReference& reference, double value) {
-  const double offset = value * reference.seconds_per_unit;
-  if (!std::isfinite(offset) || std::abs(offset) > kMaxDateSeconds) {
-    throw make_error(ErrorCode::kInvalidArgument,
-                     "time value {} is {} for a date", value,
-                     std::isfinite(offset) ? "too far from the reference date" : "not finite");
-  }
+  const double offset = checked_offset_seconds(value, reference.seconds_per_unit);
   constexpr std::int64_t kMsPerDay = 86'400'000;
   const std::int64_t ms =
       std::llround(offset * 1000.0) + std::llround(reference.reference_seconds * 1000.0);
@@ -240,11 +246,7 @@ CfTimeUnits parse_cf_time_units(const std::string& units, const std::string& cal
 }
 
 double sun_julian_day(const CfTimeReference& reference, double value) {
-  const double offset = value * reference.seconds_per_unit;
-  if (!std::isfinite(offset) || std::abs(offset) > kMaxDateSeconds) {
-    throw make_error(ErrorCode::kInvalidArgument, "time value {} is {} for a date", value,
-                     std::isfinite(offset) ? "too far from the reference date" : "not finite");
-  }
+  const double offset = checked_offset_seconds(value, reference.seconds_per_unit);
   const double total = offset + reference.reference_seconds;  // from the reference day's 00:00
   const double whole_days = std::floor(total / 86400.0);
   const double of_day = total - whole_days * 86400.0;
@@ -294,11 +296,7 @@ double convert_time_value(double value, const CfTimeReference& from, const CfTim
                      "time in calendar '{}' cannot be expressed in calendar '{}'",
                      cf_calendar_name(from.calendar), cf_calendar_name(to.calendar));
   }
-  const double offset = value * from.seconds_per_unit;
-  if (!std::isfinite(offset) || std::abs(offset) > kMaxDateSeconds) {
-    throw make_error(ErrorCode::kInvalidInput, "time value {} is {}", value,
-                     std::isfinite(offset) ? "too far from its reference date" : "not finite");
-  }
+  const double offset = checked_offset_seconds(value, from.seconds_per_unit);
   // Seconds from `to`'s reference instant, to the millisecond.
   const double seconds = static_cast<double>(from.reference_day - to.reference_day) * 86400.0 +
                          (from.reference_seconds - to.reference_seconds) + offset;

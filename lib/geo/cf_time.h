@@ -87,8 +87,8 @@ double absolute_day_seconds(double value);
 
 // A value of time axis `from` (units and calendar) in the units of `to`: the same
 // instant, to the millisecond. Calendars must agree ("", standard and gregorian are one).
-// \error as parse_cf_time_reference for either axis; kInvalidInput naming both
-// calendars when they differ.
+// \error kInvalidInput naming both calendars when they differ; kInvalidArgument naming
+// `value` as cf_date_text does.
 double convert_time_value(double value, const CfTimeReference& from, const CfTimeReference& to);
 
 // The Julian day of a (proleptic) Gregorian UTC date and time (seconds may exceed 60:

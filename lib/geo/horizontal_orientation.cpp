@@ -9,14 +9,8 @@
 
 namespace strielad::geo {
 
-namespace {
-
-int direction(const Axis& a) { return a.size() >= 2 && a.values.back() < a.values.front() ? -1 : 1; }
-
-}  // namespace
-
 int horizontal_orientation(const Axis& x, const Axis& y, const std::optional<GridMapping>& mapping) {
-  int sign = direction(x) * direction(y);
+  int sign = (x.descending() ? -1 : 1) * (y.descending() ? -1 : 1);
   if (!mapping || mapping->proj.empty()) return sign;
   const GridProjection projection(mapping->proj);
   const double cx = 0.5 * (x.values.front() + x.values.back());
