@@ -13,6 +13,7 @@
 #include "convert/conversion_limits.h"
 #include "convert/geometry_field_reader.h"
 #include "convert/geometry_plan.h"
+#include "convert/geometry_writer.h"
 #include "convert/step_converter.h"
 #include "core/checksum.h"
 #include "core/error.h"
@@ -344,26 +345,29 @@ std::vector<std::uint32_t> steps_to_convert(const Store& store, std::uint32_t fi
 }
 
 // The store's GEOMETRY file (the surface height) and geometry.bricks (a time-invariant
-// vertical field), each written once, atomically, when absent: Slurm array tasks that
-// race write the same bytes, and a resumed conversion keeps what is there.
+// vertical field), written before any step: GEOMETRY every run (a re-run finds the same
+// bytes; other bytes are refused), geometry.bricks when it is absent (its store_id ties it
+// to this plan; racing Slurm array tasks publish the same bytes or refuse other ones).
 void write_geometry_files(const ingest::InputCatalog& catalog, const format::Manifest& plan,
                           const OctreeLayout& layout, const ConvertOptions& options) {
   if (!plan.geometry) return;
-  const auto geometry_path = options.store / "GEOMETRY";
-  if (plan.geometry->surface && !std::filesystem::exists(geometry_path)) {
+  ingest::SlabReader reader(catalog, options.scan);
+  if (plan.geometry->surface) {
     format::GeometryFile file;
     file.store_id = plan.store_id;
     file.coordinates.nx = static_cast<std::uint32_t>(plan.x.size());
     file.coordinates.ny = static_cast<std::uint32_t>(plan.y.size());
     std::vector<double> surface(plan.x.size() * plan.y.size());
-    ingest::SlabReader(catalog, options.scan).read_surface(surface);
+    reader.read_surface(surface);
     file.coordinates.surface_m = std::move(surface);
-    write_file_atomically(geometry_path, format::encode_geometry_file(file));
+    write_geometry_file(options.store, file);
   }
-  const auto bricks_path = options.store / "geometry.bricks";
-  if (has_time_invariant_geometry(plan) && !std::filesystem::exists(bricks_path)) {
-    ingest::SlabReader reader(catalog, options.scan);
-    const StepCounts c = convert_geometry_bricks(plan, layout, reader, bricks_path);
+  if (has_time_invariant_geometry(plan) &&
+      !std::filesystem::exists(options.store / format::kGeometryBricksFileName)) {
+    StepCounts c;
+    publish_geometry_bricks(options.store, [&](const std::filesystem::path& candidate) {
+      c = convert_geometry_bricks(plan, layout, reader, candidate);
+    });
     spdlog::info("grid geometry: {} bricks ({} with data), {:.1f} MB", c.empty + c.constant + c.data,
                  c.data, static_cast<double>(c.file_bytes) / 1e6);
   }

@@ -36,7 +36,12 @@ GeometryFieldReader::GeometryFieldReader(ingest::SlabReader& reader,
       manifest_(manifest),
       step_(step),
       direction_(field_direction_per_level(manifest)),
-      plane_(manifest.x.size() * manifest.y.size()) {}
+      plane_(manifest.x.size() * manifest.y.size()),
+      columns_(manifest.x.size(), manifest.y.size(),
+               fmt::format("{} ({}), stored as {}, time step {}",
+                           fmt::join(manifest.geometry->vertical.sources, " + "),
+                           manifest.geometry->vertical.formula,
+                           dtype_name(manifest.geometry->vertical.dtype), step)) {}
 
 void GeometryFieldReader::read(std::size_t z0, std::size_t z1, std::span<float> out) {
   read_any(z0, z1, out);
@@ -49,27 +54,23 @@ template <typename T>
 void GeometryFieldReader::read_any(std::size_t z0, std::size_t z1, std::span<T> out) {
   values_.resize(out.size());
   reader_.read_vertical_geometry(step_, z0, z1, values_);
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<T>(values_[i]);
-  const format::VerticalGeometry& g = manifest_.geometry->vertical;
+  // The values as stored: rounded to the field's dtype, then checked again, since two
+  // close levels may round to one value.
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    out[i] = static_cast<T>(values_[i]);
+    values_[i] = static_cast<double>(out[i]);
+  }
   for (std::size_t k = z0; k < z1; ++k) {
-    const T* level = out.data() + (k - z0) * plane_;
-    if (has_previous_ && previous_k_ + 1 == k) {
-      for (std::size_t p = 0; p < plane_; ++p) {
-        const double step = (static_cast<double>(level[p]) - previous_[p]) * direction_;
-        if (!(step > 0)) {
-          throw make_error(ErrorCode::kInvalidInput,
-                           "{} ({}): {} at (i {}, j {}, k {}) of time step {} is {}, at k {} it is "
-                           "{}: every column must {} strictly with k, as column (0, 0) does",
-                           fmt::join(g.sources, " + "), g.formula,
-                           format::vertical_quantity_name(g.quantity), p % manifest_.x.size(),
-                           p / manifest_.x.size(), k, step_, static_cast<double>(level[p]),
-                           previous_k_, previous_[p], direction_ > 0 ? "grow" : "shrink");
-        }
-      }
-    }
-    previous_.assign(level, level + plane_);
-    previous_k_ = k;
-    has_previous_ = true;
+    columns_.add_level(k, std::span<const double>(values_).subspan((k - z0) * plane_, plane_));
+  }
+  if (columns_.direction() != 0 && columns_.direction() != direction_) {
+    const format::VerticalGeometry& g = manifest_.geometry->vertical;
+    throw make_error(ErrorCode::kInvalidInput,
+                     "{} ({}): at time step {} the columns {} with k, at time step 0 they {}: the "
+                     "store records one orientation",
+                     fmt::join(g.sources, " + "), g.formula, step_,
+                     columns_.direction() > 0 ? "grow" : "shrink",
+                     direction_ > 0 ? "grow" : "shrink");
   }
 }
 

@@ -13,6 +13,7 @@
 
 #include "format/manifest.h"
 #include "ingest/slab_reader.h"
+#include "ingest/vertical_columns.h"
 
 namespace strielad::build {
 
@@ -34,8 +35,9 @@ class GeometryFieldReader {
                       std::uint32_t step);
 
   // Planes [z0, z1), x fastest. \error kInvalidInput naming the field's source variables,
-  // the sample (i, j, k) and the step, where a value does not move strictly in the
-  // field's direction from the level below it.
+  // the sample (i, j, k) and the step, where a value as stored does not move strictly in
+  // the direction of column (0, 0) from the level below it (ingest::ColumnOrderCheck), or
+  // the columns run the other way than at time step 0.
   void read(std::size_t z0, std::size_t z1, std::span<float> out);
   void read(std::size_t z0, std::size_t z1, std::span<double> out);
 
@@ -48,10 +50,8 @@ class GeometryFieldReader {
   std::uint32_t step_;
   int direction_;
   std::size_t plane_;
-  std::vector<double> values_;     // the planes just read, in double
-  std::vector<double> previous_;   // the last level checked (as stored)
-  std::size_t previous_k_ = 0;
-  bool has_previous_ = false;
+  std::vector<double> values_;     // the planes just read, as stored
+  ingest::ColumnOrderCheck columns_;
 };
 
 }  // namespace strielad::build

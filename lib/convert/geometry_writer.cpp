@@ -59,22 +59,27 @@ bool write_geometry_file(const std::filesystem::path& store, const format::Geome
   return true;
 }
 
+bool publish_geometry_bricks(const std::filesystem::path& store,
+                             const std::function<void(const std::filesystem::path&)>& write) {
+  const std::filesystem::path path = store / format::kGeometryBricksFileName;
+  // The whole file is written beside the final one first, so a re-run can compare bytes.
+  const std::filesystem::path candidate = temporary_sibling(path);
+  write(candidate);
+  return publish_or_compare(candidate, path);
+}
+
 bool write_geometry_bricks(const std::filesystem::path& store, std::uint64_t store_id,
                            std::vector<EncodedBrick> bricks) {
-  const std::filesystem::path path = store / format::kGeometryBricksFileName;
   format::StepHeader header;
   header.store_id = store_id;
   header.step = format::kGeometryStep;
   header.variable_count = 1;
   header.node_count = static_cast<std::uint32_t>(bricks.size());
-  // The whole file is written beside the final one first, so a re-run can compare bytes.
-  const std::filesystem::path candidate = temporary_sibling(path);
-  {
+  return publish_geometry_bricks(store, [&](const std::filesystem::path& candidate) {
     StepWriter writer(candidate, header);
     for (NodeId n = 0; n < bricks.size(); ++n) writer.add_brick(0, n, std::move(bricks[n]));
     writer.commit();
-  }
-  return publish_or_compare(candidate, path);
+  });
 }
 
 }  // namespace strielad::build

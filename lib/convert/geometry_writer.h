@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 #include "convert/brick_encoder.h"
@@ -19,6 +20,12 @@ namespace strielad::build {
 // were there already; throws kCorrupt naming the file when different bytes are there and
 // kInvalidArgument when the arrays break a rule a reader checks.
 bool write_geometry_file(const std::filesystem::path& store, const format::GeometryFile& file);
+
+// Writes STORE/geometry.bricks through `write`, which writes the complete file at the
+// path it is given (a temporary sibling), then publishes it, or compares it byte for byte
+// with the one there. Returns and throws as write_geometry_file.
+bool publish_geometry_bricks(const std::filesystem::path& store,
+                             const std::function<void(const std::filesystem::path&)>& write);
 
 // Writes STORE/geometry.bricks: the time-invariant vertical field, one encoded brick per
 // node in node-id order (the octree's node_count), as a step file with step

@@ -20,8 +20,10 @@
 #include "scene/scene.h"
 #include "store/level_samples.h"
 #include "store/store.h"
-#include "synthetic/model_like_files.h"
+#include "support/expect_error.h"
+#include "support/model_levels_fixture.h"
 #include "support/temp_dir.h"
+#include "synthetic/model_like_files.h"
 
 namespace strielad {
 namespace {
@@ -52,26 +54,6 @@ build::ConvertOptions options(const std::filesystem::path& input,
   return o;
 }
 
-// A whole netCDF variable in double, read with netCDF itself.
-std::vector<double> read_netcdf(const std::filesystem::path& file, const char* name) {
-  int nc = 0, var = 0, ndims = 0;
-  EXPECT_EQ(nc_open(file.c_str(), NC_NOWRITE, &nc), NC_NOERR);
-  EXPECT_EQ(nc_inq_varid(nc, name, &var), NC_NOERR);
-  EXPECT_EQ(nc_inq_varndims(nc, var, &ndims), NC_NOERR);
-  std::vector<int> dims(static_cast<std::size_t>(ndims));
-  nc_inq_vardimid(nc, var, dims.data());
-  std::size_t count = 1;
-  for (int d : dims) {
-    std::size_t n = 0;
-    nc_inq_dimlen(nc, d, &n);
-    count *= n;
-  }
-  std::vector<double> out(count);
-  EXPECT_EQ(nc_get_var_double(nc, var, out.data()), NC_NOERR);
-  nc_close(nc);
-  return out;
-}
-
 TEST(TerrainFollowingConversionTest, IconHalfLevelsBecomeTheStoresHeightField) {
   const testing::TempDir dir;
   const auto input = write_model(dir.path(), synthetic::SampleModel::kIcon, 2);
@@ -89,7 +71,7 @@ TEST(TerrainFollowingConversionTest, IconHalfLevelsBecomeTheStoresHeightField) {
   EXPECT_TRUE(std::filesystem::exists(dir / "store" / "geometry.bricks"));
 
   // Every level-0 sample: the mean of the half levels above and below it, as float32.
-  const std::vector<double> z_ifc = read_netcdf(input, "z_ifc");
+  const std::vector<double> z_ifc = testing::read_netcdf_variable(input, "z_ifc").values;
   const std::size_t plane = kDims.x * kDims.y;
   ASSERT_EQ(z_ifc.size(), (kDims.z + 1) * plane);
   const auto v = *format::geometry_field_variable(m);
@@ -106,7 +88,7 @@ TEST(TerrainFollowingConversionTest, IconHalfLevelsBecomeTheStoresHeightField) {
   // The surface, from topography_c, exactly.
   const auto coordinates = store->horizontal_coordinates();
   ASSERT_TRUE(coordinates && coordinates->surface_m);
-  EXPECT_EQ(*coordinates->surface_m, read_netcdf(input, "topography_c"));
+  EXPECT_EQ(*coordinates->surface_m, testing::read_netcdf_variable(input, "topography_c").values);
 }
 
 TEST(TerrainFollowingConversionTest, APlacedHeightBandIsExact) {
@@ -170,8 +152,9 @@ TEST(TerrainFollowingConversionTest, SigmaPressureKeepsAPressurePerSampleAndStep
   EXPECT_TRUE(m.geometry->vertical.varies_in_time);
   EXPECT_FALSE(std::filesystem::exists(dir / "store" / "geometry.bricks"));
   // p = hyam + hybm * ps(t), per sample and step, as float32.
-  const std::vector<double> hyam = read_netcdf(input, "hyam"), hybm = read_netcdf(input, "hybm");
-  const std::vector<double> ps = read_netcdf(input, "ps");
+  const std::vector<double> hyam = testing::read_netcdf_variable(input, "hyam").values,
+                            hybm = testing::read_netcdf_variable(input, "hybm").values;
+  const std::vector<double> ps = testing::read_netcdf_variable(input, "ps").values;
   const std::size_t plane = kDims.x * kDims.y;
   const auto v = *format::geometry_field_variable(m);
   for (std::uint32_t step = 0; step < 2; ++step) {
@@ -179,10 +162,28 @@ TEST(TerrainFollowingConversionTest, SigmaPressureKeepsAPressurePerSampleAndStep
     for (std::size_t k = 0; k < kDims.z; ++k) {
       for (std::size_t s = 0; s < plane; ++s) {
         const double want = hyam[k] + hybm[k] * ps[step * plane + s];
-        ASSERT_EQ(p.values[k * plane + s], static_cast<float>(want)) << step << " " << k << " " << s;
+        ASSERT_EQ(p.values[k * plane + s], static_cast<float>(want))
+            << step << " " << k << " " << s;
       }
     }
   }
+}
+
+TEST(TerrainFollowingConversionTest, LevelsThatFloat32CannotTellApartAreRefused) {
+  // 5000 m and 5000.0001 m differ in double (the reader accepts the column) but are one
+  // float32 value: the stored column would not be strictly monotonic.
+  const testing::TempDir dir;
+  const testing::ModelLevels g;
+  const auto z = [](std::size_t, std::size_t k, std::size_t) {
+    return k == 0 ? 4000.0 : k == 1 ? 5000.0 : 5000.0001;
+  };
+  g.fixture()
+      .variable("z_mc", NC_DOUBLE, {"lev", "lat", "lon"}, testing::field(1, g.nz, g.plane(), z),
+                {testing::NcAttr::text_value("units", "m")})
+      .write(dir / "close.nc");
+  testing::expect_error([&] { build::convert(options(dir / "close.nc", dir / "store")); },
+                        ErrorCode::kInvalidInput,
+                        {"z_mc", "stored as float32", "not strictly monotonic"});
 }
 
 }  // namespace
