@@ -9,6 +9,7 @@
 #include "extract/node_extractor.h"
 #include "extract/output_frame.h"
 #include "support/expect_error.h"
+#include "support/mesh_normals.h"
 
 namespace strielad {
 namespace {
@@ -64,16 +65,7 @@ TEST(OutputFrameTest, ClosedMeshesStayClosedAndOutward) {
     const double expected = 4.0 / 3.0 * M_PI * std::pow(std::sqrt(0.6), 3) * 14.88e3 * 11.12e3 * 5e3;
     EXPECT_NEAR(v / expected, 1.0, 0.03) << static_cast<int>(frame);
     // Normals point away from the blob's centre.
-    std::array<double, 3> centre{0, 0, 0};
-    for (const auto& p : mesh.positions)
-      for (int a = 0; a < 3; ++a) centre[a] += p[a] / double(mesh.positions.size());
-    std::size_t outward = 0;
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-      double d = 0;
-      for (int a = 0; a < 3; ++a) d += (mesh.positions[i][a] - centre[a]) * mesh.normals[i][a];
-      outward += d > 0;
-    }
-    EXPECT_EQ(outward, mesh.positions.size());
+    EXPECT_EQ(testing::normals_away_from_centroid(mesh), mesh.positions.size());
   }
 }
 

@@ -12,6 +12,7 @@
 #include "extract/node_extractor.h"
 #include "extract/output_frame.h"
 #include "support/expect_error.h"
+#include "support/mesh_normals.h"
 
 namespace strielad {
 namespace {
@@ -108,16 +109,7 @@ TEST(TerrainFollowingPlacementTest, MeshesStayClosedAndOutwardWhenLevelsCountDow
     // About an ellipsoid of semi-axes sqrt(0.6) * (11.2 km, 7.8 km, 3 km).
     const double expected = 4.0 / 3.0 * M_PI * std::pow(std::sqrt(0.6), 3) * 11.16e3 * 7.78e3 * 3e3;
     EXPECT_NEAR(enclosed_volume(mesh) / expected, 1.0, 0.05);
-    std::array<double, 3> centre{0, 0, 0};
-    for (const auto& p : mesh.positions)
-      for (int a = 0; a < 3; ++a) centre[a] += p[a] / double(mesh.positions.size());
-    std::size_t outward = 0;
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-      double d = 0;
-      for (int a = 0; a < 3; ++a) d += (mesh.positions[i][a] - centre[a]) * mesh.normals[i][a];
-      outward += d > 0;
-    }
-    EXPECT_EQ(outward, mesh.positions.size());
+    EXPECT_EQ(testing::normals_away_from_centroid(mesh), mesh.positions.size());
   }
 }
 

@@ -13,6 +13,7 @@
 #include "format/geometry_field.h"
 #include "store/level_samples.h"
 #include "store/store.h"
+#include "support/netcdf_fixture.h"
 #include "support/temp_dir.h"
 #include "synthetic/model_like_files.h"
 
@@ -20,25 +21,6 @@ namespace strielad {
 namespace {
 
 constexpr Dims3 kDims{12, 10, 7};
-
-std::vector<double> read_netcdf(const std::filesystem::path& file, const char* name) {
-  int nc = 0, var = 0, ndims = 0;
-  EXPECT_EQ(nc_open(file.c_str(), NC_NOWRITE, &nc), NC_NOERR);
-  EXPECT_EQ(nc_inq_varid(nc, name, &var), NC_NOERR);
-  EXPECT_EQ(nc_inq_varndims(nc, var, &ndims), NC_NOERR);
-  std::vector<int> dims(static_cast<std::size_t>(ndims));
-  nc_inq_vardimid(nc, var, dims.data());
-  std::size_t count = 1;
-  for (int d : dims) {
-    std::size_t n = 0;
-    nc_inq_dimlen(nc, d, &n);
-    count *= n;
-  }
-  std::vector<double> out(count);
-  EXPECT_EQ(nc_get_var_double(nc, var, out.data()), NC_NOERR);
-  nc_close(nc);
-  return out;
-}
 
 TEST(WrfConversionTest, PhPlusPhbPlaceTheLevelsOfEveryStep) {
   const testing::TempDir dir;
@@ -48,7 +30,9 @@ TEST(WrfConversionTest, PhPlusPhbPlaceTheLevelsOfEveryStep) {
   s.step_seconds = 3600;
   s.file_per_step = false;
   const auto input =
-      synthetic::write_model_like_dataset(s, synthetic::SampleModel::kWrf, dir / "in").files[0].path;
+      synthetic::write_model_like_dataset(s, synthetic::SampleModel::kWrf, dir / "in")
+          .files[0]
+          .path;
   build::ConvertOptions o;
   o.inputs = {input};
   o.store = dir / "store";
@@ -66,7 +50,8 @@ TEST(WrfConversionTest, PhPlusPhbPlaceTheLevelsOfEveryStep) {
   ASSERT_TRUE(m.geometry->surface);
   EXPECT_EQ(m.geometry->surface->variable, "HGT");
 
-  const std::vector<double> ph = read_netcdf(input, "PH"), phb = read_netcdf(input, "PHB");
+  const std::vector<double> ph = testing::read_netcdf_variable(input, "PH").values,
+                            phb = testing::read_netcdf_variable(input, "PHB").values;
   const std::size_t plane = kDims.x * kDims.y, w_levels = kDims.z + 1;
   ASSERT_EQ(ph.size(), 2 * w_levels * plane);
   const auto v = *format::geometry_field_variable(m);
@@ -88,7 +73,7 @@ TEST(WrfConversionTest, PhPlusPhbPlaceTheLevelsOfEveryStep) {
   // The surface, HGT of the first step, exactly.
   const auto coordinates = store->horizontal_coordinates();
   ASSERT_TRUE(coordinates && coordinates->surface_m);
-  const std::vector<double> hgt = read_netcdf(input, "HGT");
+  const std::vector<double> hgt = testing::read_netcdf_variable(input, "HGT").values;
   EXPECT_EQ(*coordinates->surface_m, std::vector<double>(hgt.begin(), hgt.begin() + plane));
 }
 

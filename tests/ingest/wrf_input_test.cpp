@@ -5,8 +5,8 @@
 // mass points as the mean of their two neighbours; Times become seconds since the first
 // one; files of one step each merge; a perturbed XLAT, or one that moves between steps,
 // is refused naming the deviation.
-#include <gtest/gtest.h>
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <netcdf.h>
 
 #include <algorithm>
@@ -23,6 +23,7 @@
 #include "ingest/wrf_times.h"
 #include "support/cs2cs.h"
 #include "support/expect_error.h"
+#include "support/netcdf_fixture.h"
 #include "support/temp_dir.h"
 #include "synthetic/model_like_files.h"
 #include "synthetic/wrf_grid.h"
@@ -43,37 +44,11 @@ std::vector<std::filesystem::path> write_wrf(const std::filesystem::path& dir, s
   s.step_seconds = kStepSeconds;
   s.file_per_step = file_per_step;
   std::vector<std::filesystem::path> paths;
-  for (const auto& f : synthetic::write_model_like_dataset(s, synthetic::SampleModel::kWrf, dir).files) {
+  for (const auto& f :
+       synthetic::write_model_like_dataset(s, synthetic::SampleModel::kWrf, dir).files) {
     paths.push_back(f.path);
   }
   return paths;
-}
-
-// A whole variable in double, and its dimension lengths, read with netCDF itself.
-struct NcValues {
-  std::vector<double> values;
-  std::vector<std::size_t> shape;
-};
-
-NcValues read_netcdf(const std::filesystem::path& file, const char* name) {
-  int nc = 0, var = 0, ndims = 0;
-  EXPECT_EQ(nc_open(file.c_str(), NC_NOWRITE, &nc), NC_NOERR);
-  EXPECT_EQ(nc_inq_varid(nc, name, &var), NC_NOERR);
-  EXPECT_EQ(nc_inq_varndims(nc, var, &ndims), NC_NOERR);
-  std::vector<int> dims(static_cast<std::size_t>(ndims));
-  nc_inq_vardimid(nc, var, dims.data());
-  NcValues out;
-  std::size_t count = 1;
-  for (int d : dims) {
-    std::size_t n = 0;
-    nc_inq_dimlen(nc, d, &n);
-    out.shape.push_back(n);
-    count *= n;
-  }
-  out.values.resize(count);
-  EXPECT_EQ(nc_get_var_double(nc, var, out.values.data()), NC_NOERR);
-  nc_close(nc);
-  return out;
 }
 
 float global_float(const std::filesystem::path& file, const char* name) {
@@ -86,8 +61,8 @@ float global_float(const std::filesystem::path& file, const char* name) {
 }
 
 // Adds `delta` to XLAT at (step, j, i) of `file`, in place.
-void perturb_xlat(const std::filesystem::path& file, std::size_t step, std::size_t j,
-                  std::size_t i, float delta) {
+void perturb_xlat(const std::filesystem::path& file, std::size_t step, std::size_t j, std::size_t i,
+                  float delta) {
   int nc = 0, var = 0;
   ASSERT_EQ(nc_open(file.c_str(), NC_WRITE, &nc), NC_NOERR);
   ASSERT_EQ(nc_inq_varid(nc, "XLAT", &var), NC_NOERR);
@@ -131,18 +106,21 @@ TEST(WrfInputTest, LambertMappingPlacesEveryMassPointOnXlatXlong) {
   EXPECT_EQ(c.z.values.back(), static_cast<double>(kDims.z - 1));
   // DX and DY steps, exactly.
   const double dx = global_float(files[0], "DX"), dy = global_float(files[0], "DY");
-  for (std::size_t i = 1; i < c.x.size(); ++i) EXPECT_NEAR(c.x.values[i] - c.x.values[i - 1], dx, 1e-6);
-  for (std::size_t j = 1; j < c.y.size(); ++j) EXPECT_NEAR(c.y.values[j] - c.y.values[j - 1], dy, 1e-6);
+  for (std::size_t i = 1; i < c.x.size(); ++i)
+    EXPECT_NEAR(c.x.values[i] - c.x.values[i - 1], dx, 1e-6);
+  for (std::size_t j = 1; j < c.y.size(); ++j)
+    EXPECT_NEAR(c.y.values[j] - c.y.values[j - 1], dy, 1e-6);
 
   // The axes through PROJ's cs2cs with the projection written out here, against the
   // file's float XLAT/XLONG and the generator's exact positions (double).
-  const NcValues xlat = read_netcdf(files[0], "XLAT"), xlong = read_netcdf(files[0], "XLONG");
+  const testing::NetcdfValues xlat = testing::read_netcdf_variable(files[0], "XLAT"),
+                              xlong = testing::read_netcdf_variable(files[0], "XLONG");
   const synthetic::WrfGrid exact = synthetic::wrf_grid(kDims.x, kDims.y);
   if (!testing::have_cs2cs()) GTEST_SKIP() << "cs2cs (proj-bin) not installed";
-  const std::string lcc = fmt::format(
-      "+proj=lcc +lat_1=30 +lat_2=60 +lat_0={} +lon_0={} +R=6370000 +units=m",
-      static_cast<double>(global_float(files[0], "MOAD_CEN_LAT")),
-      static_cast<double>(global_float(files[0], "STAND_LON")));
+  const std::string lcc =
+      fmt::format("+proj=lcc +lat_1=30 +lat_2=60 +lat_0={} +lon_0={} +R=6370000 +units=m",
+                  static_cast<double>(global_float(files[0], "MOAD_CEN_LAT")),
+                  static_cast<double>(global_float(files[0], "STAND_LON")));
   std::vector<std::array<double, 2>> points;
   for (std::size_t j = 0; j < c.y.size(); ++j) {
     for (std::size_t i = 0; i < c.x.size(); ++i) points.push_back({c.x.values[i], c.y.values[j]});
@@ -173,7 +151,7 @@ TEST(WrfInputTest, StaggeredWindsAreTheMeanOfTheirTwoNeighbours) {
   const std::size_t nx = kDims.x, ny = kDims.y, plane = nx * ny;
   const std::size_t z0 = 1, z1 = 4, step = 1;
   for (const char* name : {"U", "V", "W", "T"}) {
-    const NcValues file = read_netcdf(files[0], name);
+    const testing::NetcdfValues file = testing::read_netcdf_variable(files[0], name);
     ASSERT_EQ(file.shape.size(), 4u);
     const std::size_t fz = file.shape[1], fy = file.shape[2], fx = file.shape[3];
     const auto at = [&](std::size_t k, std::size_t j, std::size_t i) {
@@ -221,9 +199,9 @@ TEST(WrfInputTest, DestaggerTakesTheMeanInDouble) {
   EXPECT_EQ(out[1], 1.5f);
   EXPECT_FALSE(staggered_axis({"bottom_top", "south_north", "west_east"}, {2, 3, 5},
                               Dims3{4, 3, 2}));  // one longer but not *_stag
-  EXPECT_EQ(staggered_axis({"bottom_top", "south_north", "west_east_stag"}, {2, 3, 5},
-                           Dims3{4, 3, 2}),
-            StaggeredAxis::kX);
+  EXPECT_EQ(
+      staggered_axis({"bottom_top", "south_north", "west_east_stag"}, {2, 3, 5}, Dims3{4, 3, 2}),
+      StaggeredAxis::kX);
 }
 
 TEST(WrfInputTest, DefaultSelectionSkipsGeometrySourcesAndPlanes) {
@@ -254,10 +232,13 @@ TEST(WrfInputTest, TimesBecomeSecondsSinceTheFirst) {
       "f");
   EXPECT_EQ(t.units, "seconds since 2016-02-28 23:00:00");
   EXPECT_EQ(t.values, (std::vector<double>{0, 9000, 90000}));
-  expect_error([] { wrf_time_coordinate({"2015-02-29_00:00:00"}, "f"); },
-               ErrorCode::kInvalidInput, {"f: Times of step 0", "2015-02-29_00:00:00"});
-  expect_error([] { wrf_time_coordinate({"2015-02-01_00:00:00", "2015-01-01_00:00:00"}, "f"); },
-               ErrorCode::kInvalidInput, {"step 1", "does not follow"});
+  expect_error([] { wrf_time_coordinate({"2015-02-29_00:00:00"}, "f"); }, ErrorCode::kInvalidInput,
+               {"f: Times of step 0", "2015-02-29_00:00:00"});
+  expect_error(
+      [] {
+        wrf_time_coordinate({"2015-02-01_00:00:00", "2015-01-01_00:00:00"}, "f");
+      },
+      ErrorCode::kInvalidInput, {"step 1", "does not follow"});
 }
 
 TEST(WrfInputTest, OneFilePerStepMerges) {
@@ -361,7 +342,8 @@ TEST(WrfInputTest, PolarStereographicAndMercatorGridsArePlaced) {
     std::vector<std::array<double, 2>> points;
     for (std::size_t j = 0; j < kDims.y; ++j) {
       for (std::size_t i = 0; i < kDims.x; ++i) {
-        points.push_back({p.x0 + static_cast<double>(i) * kDx, p.y0 + static_cast<double>(j) * kDx});
+        points.push_back(
+            {p.x0 + static_cast<double>(i) * kDx, p.y0 + static_cast<double>(j) * kDx});
       }
     }
     const auto lonlat = testing::cs2cs(p.proj, "+proj=longlat +R=6370000", points);
@@ -392,7 +374,8 @@ TEST(WrfInputTest, RegularLatitudeLongitudeGridHasGeographicAxes) {
   std::vector<std::array<double, 2>> lonlat;
   for (std::size_t j = 0; j < kDims.y; ++j) {
     for (std::size_t i = 0; i < kDims.x; ++i) {
-      lonlat.push_back({kLon0 + static_cast<double>(i) * kStep, kLat0 + static_cast<double>(j) * kStep});
+      lonlat.push_back(
+          {kLon0 + static_cast<double>(i) * kStep, kLat0 + static_cast<double>(j) * kStep});
     }
   }
   write_lonlat(files[0], lonlat);

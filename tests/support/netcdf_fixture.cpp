@@ -231,4 +231,31 @@ void copy_truncated(const std::filesystem::path& from, const std::filesystem::pa
   std::filesystem::resize_file(to, size);
 }
 
+NetcdfValues read_netcdf_variable(const std::filesystem::path& file, const std::string& name) {
+  const std::string what = file.string() + ": " + name;
+  int nc = 0, var = 0, ndims = 0;
+  check(nc_open(file.c_str(), NC_NOWRITE, &nc), what);
+  NetcdfValues out;
+  try {
+    check(nc_inq_varid(nc, name.c_str(), &var), what);
+    check(nc_inq_varndims(nc, var, &ndims), what);
+    std::vector<int> dims(static_cast<std::size_t>(ndims));
+    check(nc_inq_vardimid(nc, var, dims.data()), what);
+    std::size_t count = 1;
+    for (int d : dims) {
+      std::size_t n = 0;
+      check(nc_inq_dimlen(nc, d, &n), what);
+      out.shape.push_back(n);
+      count *= n;
+    }
+    out.values.resize(count);
+    check(nc_get_var_double(nc, var, out.values.data()), what);
+  } catch (...) {
+    nc_close(nc);
+    throw;
+  }
+  nc_close(nc);
+  return out;
+}
+
 }  // namespace strielad::testing

@@ -114,4 +114,12 @@ std::vector<double> read_vara(const std::filesystem::path& path, const std::stri
 void copy_truncated(const std::filesystem::path& from, const std::filesystem::path& to,
                     std::uintmax_t size);
 
+// A whole variable of `file` in double (netCDF's own conversion), read with netCDF itself,
+// and its dimension lengths. Throws std::runtime_error naming the file and variable.
+struct NetcdfValues {
+  std::vector<double> values;
+  std::vector<std::size_t> shape;
+};
+NetcdfValues read_netcdf_variable(const std::filesystem::path& file, const std::string& name);
+
 }  // namespace strielad::testing
