@@ -5,42 +5,38 @@
 #include <charconv>
 #include <cstdint>
 #include <optional>
+#include <sstream>
 #include <string_view>
 
+#include <vtkNew.h>
+#include <vtkType.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
+
 #include "core/error.h"
+#include "export/vtk_error_capture.h"
 
 namespace strielad::vtp {
 namespace {
 
-// The value of attribute `name` in the element text `tag` ("<DataArray a="1" ...>").
-std::optional<std::string_view> attribute(std::string_view tag, std::string_view name) {
-  for (std::size_t at = tag.find(name); at != std::string_view::npos; at = tag.find(name, at + 1)) {
-    const bool starts = at > 0 && (tag[at - 1] == ' ' || tag[at - 1] == '\t' || tag[at - 1] == '\n' ||
-                                   tag[at - 1] == '\r');
-    std::size_t p = at + name.size();
-    while (p < tag.size() && (tag[p] == ' ' || tag[p] == '\t' || tag[p] == '\n' || tag[p] == '\r')) ++p;
-    if (!starts || p >= tag.size() || tag[p] != '=') continue;
-    ++p;
-    while (p < tag.size() && (tag[p] == ' ' || tag[p] == '\t' || tag[p] == '\n' || tag[p] == '\r')) ++p;
-    if (p >= tag.size() || (tag[p] != '"' && tag[p] != '\'')) continue;
-    const auto end = tag.find(tag[p], p + 1);
-    if (end == std::string_view::npos) return std::nullopt;
-    return tag.substr(p + 1, end - p - 1);
-  }
-  return std::nullopt;
-}
-
 // A declared count: digits (VTK reads them as 64-bit integers); a sign, anything else or
 // an overflow counts as "too large" (VTK would reject or misread it later).
-double count(std::string_view tag, std::string_view name, double if_missing) {
-  const auto text = attribute(tag, name);
-  if (!text) return if_missing;
-  std::string_view t = *text;
+double count(vtkXMLDataElement* element, const char* name, double if_missing) {
+  const char* value = element->GetAttribute(name);
+  if (value == nullptr) return if_missing;
+  std::string_view t = value;
   while (!t.empty() && (t.front() == ' ' || t.front() == '+')) t.remove_prefix(1);
   std::uint64_t v = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
   if (ec != std::errc() || t.empty()) return t.empty() || t.front() == '-' ? 0 : 1e300;
   return double(v);
+}
+
+// The value of attribute `name`, if the element has it.
+std::optional<std::string_view> attribute(vtkXMLDataElement* element, const char* name) {
+  const char* value = element->GetAttribute(name);
+  if (value == nullptr) return std::nullopt;
+  return std::string_view(value);
 }
 
 std::uint64_t little_endian(const unsigned char* p, std::size_t bytes) {
@@ -81,8 +77,8 @@ std::string decode_base64_prefix(std::string_view text, std::size_t bytes) {
 }
 
 bool known_type(std::string_view type) {
-  for (const char* known : {"Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32", "Int64", "UInt64",
-                            "Float32", "Float64", "String", "Char"}) {
+  for (const char* known : {"Int8", "UInt8", "Int16", "UInt16", "Int32", "UInt32", "Int64",
+                            "UInt64", "Float32", "Float64", "String", "Char"}) {
     if (type == known) return true;
   }
   return false;
@@ -95,71 +91,85 @@ struct CompressedStart {
   std::size_t room = 0;
 };
 
-// Checks one file's declared sizes against what its bytes can hold.
+// The element counts of the piece being checked, and how many tuples the arrays of the
+// current section hold.
+struct Section {
+  double points = 0, verts = 0, lines = 0, strips = 0, polys = 0;
+  double tuples = 0;
+};
+
+// Checks one file's declared sizes against what its bytes can hold, on the element tree
+// VTK's own XML parser builds from them: every element and attribute exactly as
+// vtkXMLPolyDataReader will see it (a text scan disagreed with expat about quotes inside
+// attribute values, comments and entities).
 class DeclaredSizeCheck {
  public:
   DeclaredSizeCheck(std::span<const char> file, const std::string& what)
       : text_(file.data(), file.size()),
         what_(what),
-        limit_(kMaxExpansion * double(file.size()) + double(1 << 20)) {
-    // The XML part ends where raw appended data begins (after "<AppendedData ...>_").
-    const auto appended = text_.find("<AppendedData");
-    xml_ = text_.substr(0, appended);
-    appended_start_ = text_.size();
-    if (const auto file_tag_at = xml_.find("<VTKFile"); file_tag_at != std::string_view::npos) {
-      const auto tag = xml_.substr(file_tag_at, xml_.find('>', file_tag_at) - file_tag_at);
-      if (attribute(tag, "header_type") == "UInt64") header_bytes_ = 8;
-      compressed_ = attribute(tag, "compressor").has_value();
-    }
-    if (appended != std::string_view::npos) {
-      const auto close = text_.find('>', appended);
-      const auto tag = text_.substr(appended, close - appended);
-      raw_appended_ = attribute(tag, "encoding") == "raw";
-      const auto underscore = close == std::string_view::npos ? close : text_.find('_', close);
-      if (underscore != std::string_view::npos) appended_start_ = underscore + 1;
-    }
-  }
+        limit_(kMaxExpansion * double(file.size()) + double(1 << 20)) {}
 
-  void run() const {
-    double points = 0, cells = 0;  // of the current piece
-    double verts = 0, lines = 0, strips = 0, polys = 0;
-    double tuples = 0;  // of the arrays in the current section
-    constexpr auto npos = std::string_view::npos;
-    for (std::size_t at = xml_.find('<'); at != npos; at = xml_.find('<', at + 1)) {
-      const auto close = xml_.find('>', at);
-      const auto tag = xml_.substr(at, close == npos ? close : close - at);
-      const auto name_end = tag.find_first_of(" \t\r\n/>", 1);
-      const std::string_view name = tag.substr(1, name_end == npos ? name_end : name_end - 1);
-      if (name == "Piece") {
-        points = count(tag, "NumberOfPoints", 0);
-        verts = count(tag, "NumberOfVerts", 0);
-        lines = count(tag, "NumberOfLines", 0);
-        strips = count(tag, "NumberOfStrips", 0);
-        polys = count(tag, "NumberOfPolys", 0);
-        cells = verts + lines + strips + polys;
-        if (points * 3 > limit_) refuse("Piece NumberOfPoints", points * 3);
-        if (cells > limit_) refuse("Piece cell counts", cells);
-      } else if (name == "PointData" || name == "Points") {
-        tuples = points;
-      } else if (name == "CellData") {
-        tuples = cells;
-      } else if (name == "Verts" || name == "Lines" || name == "Strips" || name == "Polys") {
-        // The section's own cells: an empty section's arrays hold no values whatever the
-        // other sections hold. (Its connectivity holds more than one value per cell; the
-        // limit below is far above that.)
-        tuples = name == "Verts"    ? verts
-                 : name == "Lines"  ? lines
-                 : name == "Strips" ? strips
-                                    : polys;
-      } else if (name == "FieldData") {
-        tuples = 0;
-      } else if (name == "DataArray" || name == "Array") {
-        check_array(tag, name, close, tuples);
+  void run() {
+    vtkNew<vtk_support::ErrorCapture> errors;
+    vtkNew<vtkXMLDataParser> parser;
+    errors->watch(parser);
+    std::istringstream stream(std::string(text_), std::ios::in | std::ios::binary);
+    parser->SetStream(&stream);
+    const int parsed = parser->Parse();
+    vtkXMLDataElement* root = parser->GetRootElement();
+    if (!parsed || errors->failed() || root == nullptr) {
+      throw make_error(ErrorCode::kInvalidInput, "{}: not a readable VTK XML PolyData file: {}",
+                       what_, errors->failed() ? errors->message() : "not XML");
+    }
+    if (attribute(root, "header_type") == "UInt64") header_bytes_ = 8;
+    compressed_ = root->GetAttribute("compressor") != nullptr;
+    for (int i = 0; i < root->GetNumberOfNestedElements(); ++i) {
+      vtkXMLDataElement* nested = root->GetNestedElement(i);
+      if (std::string_view(nested->GetName()) == "AppendedData") {
+        raw_appended_ = attribute(nested, "encoding") == "raw";
+        appended_start_ = std::size_t(std::clamp<vtkTypeInt64>(parser->GetAppendedDataPosition(), 0,
+                                                               vtkTypeInt64(text_.size())));
       }
     }
+    Section section;
+    walk(root, section);
   }
 
  private:
+  // Checks `element` and everything nested in it; `section` is what its parent declared.
+  void walk(vtkXMLDataElement* element, Section section) const {
+    const std::string_view name = element->GetName() != nullptr ? element->GetName() : "";
+    if (name == "Piece") {
+      section.points = count(element, "NumberOfPoints", 0);
+      section.verts = count(element, "NumberOfVerts", 0);
+      section.lines = count(element, "NumberOfLines", 0);
+      section.strips = count(element, "NumberOfStrips", 0);
+      section.polys = count(element, "NumberOfPolys", 0);
+      const double cells = section.verts + section.lines + section.strips + section.polys;
+      if (section.points * 3 > limit_) refuse("Piece NumberOfPoints", section.points * 3);
+      if (cells > limit_) refuse("Piece cell counts", cells);
+    } else if (name == "PointData" || name == "Points") {
+      section.tuples = section.points;
+    } else if (name == "CellData") {
+      section.tuples = section.verts + section.lines + section.strips + section.polys;
+    } else if (name == "Verts" || name == "Lines" || name == "Strips" || name == "Polys") {
+      // The section's own cells: an empty section's arrays hold no values whatever the
+      // other sections hold. (Its connectivity holds more than one value per cell; the
+      // limit below is far above that.)
+      section.tuples = name == "Verts"    ? section.verts
+                       : name == "Lines"  ? section.lines
+                       : name == "Strips" ? section.strips
+                                          : section.polys;
+    } else if (name == "FieldData") {
+      section.tuples = 0;
+    } else if (name == "DataArray" || name == "Array") {
+      check_array(element, name, section.tuples);
+    }
+    for (int i = 0; i < element->GetNumberOfNestedElements(); ++i) {
+      walk(element->GetNestedElement(i), section);
+    }
+  }
+
   [[noreturn]] void refuse(std::string_view element, double values) const {
     throw make_error(ErrorCode::kInvalidInput,
                      "{}: not a readable VTK XML PolyData file: {} declares {:.4g} values, more "
@@ -167,53 +177,53 @@ class DeclaredSizeCheck {
                      what_, element, values, text_.size());
   }
 
-  // An array element `tag` ending at `close`, in a section whose arrays hold `tuples`.
-  void check_array(std::string_view tag, std::string_view name, std::size_t close,
-                   double tuples) const {
-    // VTK 9.1 dereferences the null array it makes for a FieldData array of an unknown
-    // type: only its type names pass.
-    const auto type = attribute(tag, "type");
+  // An array element in a section whose arrays hold `tuples`.
+  void check_array(vtkXMLDataElement* element, std::string_view name, double tuples) const {
+    // VTK 9.1 dereferences the null array it makes for a FieldData array of a missing or
+    // unknown type: only its type names pass.
+    const auto type = attribute(element, "type");
     if (!type || !known_type(*type)) {
       throw make_error(ErrorCode::kInvalidInput,
-                       "{}: not a readable VTK XML PolyData file: {} of type '{}' (not a VTK XML "
-                       "data type)",
-                       what_, name, type ? *type : "");
+                       "{}: not a readable VTK XML PolyData file: {} '{}' of type '{}' (not a VTK "
+                       "XML data type)",
+                       what_, name, attribute(element, "Name").value_or(""), type.value_or(""));
     }
-    const double n =
-        count(tag, "NumberOfTuples", tuples) * std::max(1.0, count(tag, "NumberOfComponents", 1));
+    const double n = count(element, "NumberOfTuples", tuples) *
+                     std::max(1.0, count(element, "NumberOfComponents", 1));
     if (n > limit_) refuse(name, n);
     // VTK 9.1 reads an array of any other format as appended data whenever the file has
     // some (a mistyped "appunded" reached its compressed reader unchecked): only its
     // format names pass.
-    const auto format = attribute(tag, "format");
+    const auto format = attribute(element, "format");
     if (format && *format != "ascii" && *format != "binary" && *format != "appended") {
       throw make_error(ErrorCode::kInvalidInput,
                        "{}: not a readable VTK XML PolyData file: {} '{}' of format '{}' (not "
                        "ascii, binary or appended)",
-                       what_, name, attribute(tag, "Name").value_or(""), *format);
+                       what_, name, attribute(element, "Name").value_or(""), *format);
     }
     if (!compressed_ || !format) return;
-    if (const auto start = compressed_start(tag, *format, close)) {
+    if (const auto start = compressed_start(element, *format)) {
       check_compressed_header(name, n, *start);
     }
   }
 
   // The compressed header of an appended or binary array; nothing where VTK refuses the
   // array itself (an offset beyond the data, a short header) or for other formats.
-  std::optional<CompressedStart> compressed_start(std::string_view tag, std::string_view format,
-                                                  std::size_t close) const {
+  std::optional<CompressedStart> compressed_start(vtkXMLDataElement* element,
+                                                  std::string_view format) const {
     const std::size_t header = 3 * header_bytes_;
     CompressedStart start;
     if (format == "appended" && raw_appended_) {
-      const double offset = count(tag, "offset", 0);
+      const double offset = count(element, "offset", 0);
       const std::size_t appended_bytes = text_.size() - std::min(text_.size(), appended_start_);
       if (offset >= double(appended_bytes)) return std::nullopt;  // VTK refuses
       const std::size_t p = appended_start_ + std::size_t(offset);
       if (text_.size() - p < header) return std::nullopt;  // VTK refuses a short header
       start.words = std::string(text_.substr(p, header));
       start.room = text_.size() - p - header;
-    } else if (format == "binary" && close != std::string_view::npos) {
-      const std::string_view body = xml_.substr(close + 1, xml_.find('<', close) - close - 1);
+    } else if (format == "binary") {
+      const std::string_view body =
+          element->GetCharacterData() != nullptr ? element->GetCharacterData() : "";
       start.words = decode_base64_prefix(body, header);
       if (start.words.size() < header) return std::nullopt;
       start.room = body.size();
@@ -256,7 +266,6 @@ class DeclaredSizeCheck {
   }
 
   std::string_view text_;
-  std::string_view xml_;
   const std::string& what_;
   double limit_;
   std::size_t header_bytes_ = 4;  // header_type UInt32 (VTK's default) or UInt64

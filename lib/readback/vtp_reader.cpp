@@ -9,7 +9,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkXMLPolyDataReader.h>
+#include <vtkStringArray.h>
 
 #include <new>
 #include <stdexcept>
@@ -18,6 +18,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "export/vtk_error_capture.h"
+#include "readback/bounded_string_polydata_reader.h"
 #include "readback/vtp_declared_sizes.h"
 
 namespace strielad {
@@ -68,13 +69,16 @@ VtpContents read_vtp(const std::filesystem::path& path) {
     throw make_error(ErrorCode::kNotFound, "{}: no such file", path.string());
   }
   const std::vector<std::byte> bytes = read_file_bytes(path);
-  vtp::check_declared_sizes({reinterpret_cast<const char*>(bytes.data()), bytes.size()}, path.string());
+  vtp::check_declared_sizes({reinterpret_cast<const char*>(bytes.data()), bytes.size()},
+                            path.string());
   vtkNew<vtk_support::ErrorCapture> errors;
-  vtkNew<vtkXMLPolyDataReader> reader;
+  vtkNew<vtp::BoundedStringPolyDataReader> reader;
   errors->watch(reader);
   reader->SetReaderErrorObserver(errors);  // its internal readers and XML parser
   reader->SetParserErrorObserver(errors);
-  reader->SetFileName(path.c_str());
+  // VTK reads the very bytes checked above (a second open could see another file).
+  reader->ReadFromInputStringOn();
+  reader->SetInputString(std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   // VTK allocates what the file declares before it reads the data; sizes the bytes cannot
   // back are refused above, and a size that still cannot be allocated ends here.
   try {
@@ -127,6 +131,13 @@ VtpContents read_vtp(const std::filesystem::path& path) {
                                         poly->GetNumberOfStrips());
   contents.point_arrays = read_arrays(poly->GetPointData());
   contents.cell_arrays = read_arrays(poly->GetCellData());
+  vtkFieldData* field = poly->GetFieldData();
+  for (int i = 0; i < field->GetNumberOfArrays(); ++i) {
+    auto* strings = vtkStringArray::SafeDownCast(field->GetAbstractArray(i));
+    if (strings == nullptr || strings->GetNumberOfValues() == 0) continue;
+    contents.field_strings.emplace_back(strings->GetName() != nullptr ? strings->GetName() : "",
+                                        strings->GetValue(0));
+  }
   if (vtkDataArray* normals = poly->GetPointData()->GetNormals()) {
     contents.normals_name = normals->GetName() != nullptr ? normals->GetName() : "";
   }

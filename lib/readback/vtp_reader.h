@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace strielad {
@@ -22,12 +23,14 @@ struct VtpArray {
 
 struct VtpContents {
   std::vector<std::array<double, 3>> points;
-  std::string points_type;  // "float" or "double"
+  std::string points_type;                              // "float" or "double"
   std::vector<std::array<std::uint32_t, 3>> triangles;  // the triangle Polys
   std::uint64_t other_cells = 0;  // verts, lines, strips and non-triangle polys
   std::vector<VtpArray> point_arrays;
   std::vector<VtpArray> cell_arrays;
   std::string normals_name;  // the point data's active normals, "" if none
+  // The field data's string arrays: name and first value (write_vtp's text metadata).
+  std::vector<std::pair<std::string, std::string>> field_strings;
 
   const VtpArray* point_array(std::string_view name) const;
   const VtpArray* cell_array(std::string_view name) const;

@@ -126,6 +126,26 @@ TEST(VtpWriterTest, ReadsBackWithVtkWithIdsNormalsAndAttributes) {
   }
 }
 
+TEST(VtpWriterTest, FieldDataStringsReadBackWholeEvenAcrossVtksReadBlocks) {
+  // VTK reads string arrays 1024 characters at a time: a value longer than one block and
+  // values that straddle a block boundary must come back whole.
+  testing::TempDir dir;
+  const Mesh m = cube(1, 0.0f);
+  const std::vector<NodeMeshRef> meshes{{.node_id = 3, .mesh = &m}};
+  VtpOptions options;
+  const std::string long_text(2500, 'x');
+  options.field_data = {{"frame", "lonlat"}, {"history", long_text + "end"}, {"empty", ""},
+                        {"units", "m"}};
+  const auto path = dir / "out.vtp";
+  write_vtp(path, meshes, options);
+  const VtpContents c = read_vtp(path);
+  ASSERT_EQ(c.field_strings.size(), 4u);
+  EXPECT_EQ(c.field_strings[0], (std::pair<std::string, std::string>{"frame", "lonlat"}));
+  EXPECT_EQ(c.field_strings[1].second, long_text + "end");
+  EXPECT_EQ(c.field_strings[2].second, "");
+  EXPECT_EQ(c.field_strings[3].second, "m");
+}
+
 TEST(VtpWriterTest, DropNodeBoundaryFacesLeavesOutThoseTrianglesAndTheirOnlyVertices) {
   testing::TempDir dir;
   Mesh m = cube(3, 0.0f);

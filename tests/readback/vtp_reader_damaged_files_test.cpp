@@ -58,6 +58,22 @@ TEST(VtpReaderDamagedFilesTest, FieldArrayOfAnUnknownTypeIsRefused) {
   expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string(), "'Strina'"});
 }
 
+TEST(VtpReaderDamagedFilesTest, FieldArrayTypeInsideAQuotedNameIsRefused) {
+  // Name="TimeValue type='String'": a text scan saw a type, VTK's XML parser sees none
+  // and VTK 9.1 dereferences the null array it makes (SEGV).
+  const auto path = kRegressions / "field-array-type-inside-a-quoted-name.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput,
+               {path.string(), "Array 'TimeValue type='String'' of type ''"});
+}
+
+TEST(VtpReaderDamagedFilesTest, MoreFieldStringsThanTuplesStayWithinTheArray) {
+  // Without its compressor the compressed bytes read as many NUL-terminated strings for
+  // a one-tuple array: VTK 9.1 stored them all past the array's end (heap overflow). The
+  // array takes one; the file is then refused for its other, unreadable arrays.
+  const auto path = kRegressions / "more-field-strings-than-tuples.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput, {path.string()});
+}
+
 TEST(VtpReaderDamagedFilesTest, PointCountBeyondTheFileIsRefused) {
   testing::TempDir dir;
   const auto path = dir / "huge.vtp";
