@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include "core/error.h"
 #include "format/geometry_field.h"
@@ -80,7 +81,29 @@ struct SubVolumePlan {
   std::vector<int> turns{0};
   // A geographic box on a mapped grid: its conditions at the node's horizontal samples.
   std::vector<std::vector<double>> geographic{};
+  // A geographic height range on terrain-following levels that may cut the node: two
+  // conditions on the geometry's height field, h - lo and hi - h.
+  std::optional<AxisRange> geometry_height{};
 };
+
+// A geographic height range on the node, from the index of the geometry's height field:
+// the node is skipped when the field's range misses it; no condition is needed when the
+// field lies within it.
+std::optional<AxisRange> plan_geometry_height(const Store& store, const AxisRange& height,
+                                              std::uint32_t step, NodeId node,
+                                              SubVolumeResult& r) {
+  const format::Manifest& m = store.manifest();
+  const std::uint32_t field = *format::geometry_field_variable(m);
+  const format::IndexEntry& e = store.node_entry(step, field, node);
+  if (limit_excludes_node(e, ResolvedLimit{field, height.lo, height.hi})) {
+    r.outcome = NodeOutcome::kSkippedDomain;
+    r.reason = fmt::format("height range [{}, {}] misses the node ({} in [{}, {}])", height.lo,
+                           height.hi, format::variable_name(m, field), e.min, e.max);
+    return std::nullopt;
+  }
+  if (e.min >= height.lo && e.max <= height.hi) return std::nullopt;
+  return height;
+}
 
 bool bounded(const AxisRange& r) {
   return r.lo != -std::numeric_limits<double>::infinity() ||
@@ -126,6 +149,9 @@ std::vector<SubVolumePlan> plan_subvolumes(const Store& store, const ResolvedSce
           break;
         }
       }
+    }
+    if (sv.geometry_height && r.reason.empty()) {
+      plan.geometry_height = plan_geometry_height(store, *sv.geometry_height, step, node, r);
     }
     for (const ResolvedLimit& limit : sv.limits) {
       if (!r.reason.empty()) break;
@@ -323,6 +349,18 @@ ExtractRequest subvolume_request(const ResolvedSubVolume& sv, const SubVolumePla
   request.attribute_fields = attributes.fields;
   request.attribute_names = attributes.names;
   request.merge_face_squares = merge_face_squares;
+  // A height range: conditions on the geometry's height at every sample.
+  if (plan.geometry_height) {
+    const std::uint32_t f = fields.field(*format::geometry_field_variable(fields.store.manifest()));
+    const std::vector<float>& h = fields.ns.fields[f];
+    std::vector<double> above(h.size()), below(h.size());
+    for (std::size_t s = 0; s < h.size(); ++s) {
+      above[s] = double(h[s]) - plan.geometry_height->lo;
+      below[s] = plan.geometry_height->hi - double(h[s]);
+    }
+    request.sample_conditions.push_back(std::move(above));
+    request.sample_conditions.push_back(std::move(below));
+  }
   // Geographic conditions per horizontal sample, the same on every level of the node.
   const std::size_t samples = fields.ns.sample_count();
   for (const auto& horizontal : plan.geographic) {

@@ -22,12 +22,14 @@ struct Manifest;
 }
 
 // Version of formats/scene.md this library reads and writes, and its size limits.
-inline constexpr std::uint32_t kSceneFormatVersion = 3;
+inline constexpr std::uint32_t kSceneFormatVersion = 4;
 // The first version with slices, terrain, sun and trajectories (formats/scene.md,
 // "Version history"); a scene using one of them must declare at least this version.
 inline constexpr std::uint32_t kSceneVersionGeography = 2;
 // The first version with geographic boxes in sub-volumes.
 inline constexpr std::uint32_t kSceneVersionGeographicBox = 3;
+// The first version with a height range in a geographic box.
+inline constexpr std::uint32_t kSceneVersionGeographicHeight = 4;
 inline constexpr std::size_t kMaxSceneBytes = 1u << 20;
 inline constexpr std::size_t kMaxSceneNesting = 32;
 inline constexpr std::size_t kMaxSubVolumes = 64;
@@ -59,8 +61,11 @@ struct AxisRange {
 // A box in true longitude and latitude (format version 3), whatever the grid's axes: on
 // a rotated-pole or projected grid it is not axis-aligned, and extraction evaluates it
 // per sample (formats/scene.md, "Geographic boxes"). Longitudes in any convention.
+// `height` (version 4): metres, the store's own heights (a height axis's, or the grid
+// geometry's field on terrain-following levels, evaluated per sample).
 struct GeographicBox {
-  std::optional<AxisRange> lon, lat;  // degrees; at least one is present
+  std::optional<AxisRange> lon, lat;  // degrees
+  std::optional<AxisRange> height;    // metres; at least one of the three is present
   friend bool operator==(const GeographicBox&, const GeographicBox&) = default;
 };
 
@@ -124,9 +129,12 @@ struct Scene {
   std::optional<Trajectories> trajectories;  // version 2
   // The format version the canonical form declares: the lowest that has every key used.
   std::uint32_t required_format_version() const {
+    std::uint32_t version = 0;
     for (const SubVolume& sv : subvolumes) {
-      if (sv.geographic) return kSceneVersionGeographicBox;
+      if (sv.geographic && sv.geographic->height) return kSceneVersionGeographicHeight;
+      if (sv.geographic) version = kSceneVersionGeographicBox;
     }
+    if (version != 0) return version;
     return slices.empty() && !terrain && !sun && !trajectories ? 1 : kSceneVersionGeography;
   }
   friend bool operator==(const Scene&, const Scene&) = default;
@@ -176,6 +184,10 @@ struct ResolvedSubVolume {
   // or projected grid): evaluated per sample. On a longitude/latitude grid it is folded
   // into `box` instead.
   std::optional<GeographicBox> geographic = std::nullopt;
+  // A geographic height range on terrain-following levels (the store's geometry field is
+  // a height): evaluated per sample on that field. On a height axis it is folded into
+  // `box` instead. Never has lon or lat.
+  std::optional<AxisRange> geometry_height = std::nullopt;
   friend bool operator==(const ResolvedSubVolume&, const ResolvedSubVolume&) = default;
 };
 

@@ -35,7 +35,8 @@ constexpr std::array<std::string_view, 3> kSunKeys = {"mode", "elevation", "azim
 constexpr std::array<std::string_view, 2> kTrajectoriesKeys = {"file", "minutes"};
 constexpr std::array<std::string_view, 5> kSubVolumeKeys = {"id", "name", "limits", "domain",
                                                             "geographic"};  // the last: version 3
-constexpr std::array<std::string_view, 2> kGeographicKeys = {"lon", "lat"};
+constexpr std::array<std::string_view, 3> kGeographicKeys = {"lon", "lat",
+                                                             "height"};  // the last: version 4
 constexpr std::array<std::string_view, 1> kReservedSubVolumeKeys = {"style"};
 constexpr std::array<std::string_view, 3> kLimitKeys = {"var", "min", "max"};
 
@@ -104,6 +105,15 @@ SubVolume read_subvolume(const Reader& r, const Json& v, const std::string& path
     GeographicBox box;
     if (const Json* lon = r.find(*geographic, "lon")) box.lon = read_range(r, *lon, key_path(p, "lon"));
     if (const Json* lat = r.find(*geographic, "lat")) box.lat = read_range(r, *lat, key_path(p, "lat"));
+    if (const Json* height = r.find(*geographic, "height")) {
+      if (declared < kSceneVersionGeographicHeight) {
+        strict_json::fail(ErrorCode::kInvalidInput, r.what(), key_path(p, "height"),
+                          "was added in format_version {}; the scene declares {} (write "
+                          "\"format_version\": {})",
+                          kSceneVersionGeographicHeight, declared, kSceneVersionGeographicHeight);
+      }
+      box.height = read_range(r, *height, key_path(p, "height"));
+    }
     sv.geographic = box;
   }
   return sv;
@@ -314,6 +324,9 @@ std::string scene_to_json(const Scene& scene) {
       ordered_json geographic = ordered_json::object();
       if (sv.geographic->lon) geographic["lon"] = ordered_json::array({sv.geographic->lon->lo, sv.geographic->lon->hi});
       if (sv.geographic->lat) geographic["lat"] = ordered_json::array({sv.geographic->lat->lo, sv.geographic->lat->hi});
+      if (sv.geographic->height) {
+        geographic["height"] = ordered_json::array({sv.geographic->height->lo, sv.geographic->height->hi});
+      }
       o["geographic"] = std::move(geographic);
     }
     subvolumes.push_back(std::move(o));

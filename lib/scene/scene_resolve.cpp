@@ -36,8 +36,8 @@ class Names {
       list += list.empty() ? v.name : fmt::format(", {}", v.name);
     }
     if (!geometry.empty()) list += fmt::format(", {} (the grid geometry)", geometry);
-    fail(ErrorCode::kNotFound, what_, path, "variable '{}' is not in the store (it has: {})", scene_detail::shown(name),
-         list);
+    fail(ErrorCode::kNotFound, what_, path, "variable '{}' is not in the store (it has: {})",
+         scene_detail::shown(name), list);
   }
 
   std::size_t axis(const std::string& name, const std::string& path) const {
@@ -46,8 +46,8 @@ class Names {
       if (axes[a]->name == name) return a;
     }
     fail(ErrorCode::kNotFound, what_, path,
-         "axis '{}' is not an axis of the store (its axes: x {}, y {}, z {})", scene_detail::shown(name),
-         manifest_.x.name, manifest_.y.name, manifest_.z.name);
+         "axis '{}' is not an axis of the store (its axes: x {}, y {}, z {})",
+         scene_detail::shown(name), manifest_.x.name, manifest_.y.name, manifest_.z.name);
   }
 
  private:
@@ -60,6 +60,43 @@ AxisRange extent(const Axis& axis) {
   if (axis.values.empty()) return AxisRange{kInf, -kInf};  // matches nothing
   return AxisRange{std::min(axis.values.front(), axis.values.back()),
                    std::max(axis.values.front(), axis.values.back())};
+}
+
+// A geographic height range: folded into the box on a height axis (exact planes), kept
+// for per-sample evaluation on a terrain-following grid whose geometry field is a
+// height; refused where the store has no heights (pressure or model levels).
+void resolve_geographic_height(const AxisRange& height, const format::Manifest& m,
+                               std::string_view what, const std::string& path, ResolvedSubVolume& r,
+                               ResolvedScene& out) {
+  const std::string field = format::geometry_field_name(m);
+  if (field == "geometry_height") {
+    r.geometry_height = height;
+    out.needed_variables.push_back(*format::geometry_field_variable(m));
+    return;
+  }
+  if (field.empty() && m.z.kind == AxisKind::kHeight) {
+    const AxisRange e = extent(m.z);
+    if (r.box[2].lo != -kInf || r.box[2].hi != kInf) {
+      fail(ErrorCode::kInvalidInput, what, path,
+           "the store's axis '{}' is the height already bounded in \"domain\"; give the range "
+           "once",
+           m.z.name);
+    }
+    if (height.hi < e.lo || height.lo > e.hi) {
+      fail(ErrorCode::kInvalidInput, what, path,
+           "[{}, {}] lies outside the store's heights [{}, {}] (axis '{}')", height.lo, height.hi,
+           e.lo, e.hi, m.z.name);
+    }
+    r.box[2] = height;
+    return;
+  }
+  fail(ErrorCode::kInvalidInput, what, path,
+       "the store's levels have no height ({}): a height range needs a height axis or "
+       "terrain-following levels placed by heights; bound {} in \"domain\" or with a limit "
+       "instead",
+       field.empty() ? fmt::format("axis '{}' is not a height", m.z.name)
+                     : fmt::format("its grid geometry is the field '{}'", field),
+       field.empty() ? fmt::format("'{}'", m.z.name) : fmt::format("'{}'", field));
 }
 
 // A geographic box on the store's grid: folded into the axis box on a longitude/latitude
@@ -114,12 +151,11 @@ void resolve_geographic(const GeographicBox& g, const format::Manifest& m, std::
 void check_time_step(std::size_t time, std::size_t steps, std::string_view what) {
   if (time < steps) return;
   if (steps == 0) {
-    fail(ErrorCode::kNotFound, what, "time", "time step {} is out of range: the store has no time steps",
-         time);
+    fail(ErrorCode::kNotFound, what, "time",
+         "time step {} is out of range: the store has no time steps", time);
   }
   fail(ErrorCode::kNotFound, what, "time",
-       "time step {} is out of range: the store has {} time steps (0..{})", time, steps,
-       steps - 1);
+       "time step {} is out of range: the store has {} time steps (0..{})", time, steps, steps - 1);
 }
 
 // The axis ranges of a subvolume's "domain" (at `path`) into its box; a longitude range
@@ -167,7 +203,15 @@ ResolvedSubVolume resolve_subvolume(const SubVolume& sv, const std::string& path
   }
   r.box.fill(AxisRange{-kInf, kInf});
   resolve_domain(sv, key_path(path, "domain"), manifest, names, what, r);
-  if (sv.geographic) resolve_geographic(*sv.geographic, manifest, what, key_path(path, "geographic"), r);
+  if (sv.geographic && (sv.geographic->lon || sv.geographic->lat)) {
+    GeographicBox horizontal = *sv.geographic;
+    horizontal.height.reset();
+    resolve_geographic(horizontal, manifest, what, key_path(path, "geographic"), r);
+  }
+  if (sv.geographic && sv.geographic->height) {
+    resolve_geographic_height(*sv.geographic->height, manifest, what,
+                              key_path(key_path(path, "geographic"), "height"), r, out);
+  }
   return r;
 }
 
@@ -222,8 +266,8 @@ ResolvedScene resolve_scene(const Scene& scene, const format::Manifest& manifest
     out.needed_variables.push_back(out.attributes.back());
   }
   for (std::size_t i = 0; i < scene.slices.size(); ++i) {
-    out.slices.push_back(resolve_slice(scene.slices[i], index_path("slices", i), manifest, names,
-                                       what, out));
+    out.slices.push_back(
+        resolve_slice(scene.slices[i], index_path("slices", i), manifest, names, what, out));
   }
   std::sort(out.needed_variables.begin(), out.needed_variables.end());
   out.needed_variables.erase(std::unique(out.needed_variables.begin(), out.needed_variables.end()),

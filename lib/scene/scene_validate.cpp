@@ -108,10 +108,11 @@ void check_subvolume(std::string_view what, const std::string& path, const SubVo
   }
   if (sv.geographic) {
     const std::string p = key_path(path, "geographic");
-    if (!sv.geographic->lon && !sv.geographic->lat) {
-      fail(ErrorCode::kInvalidInput, what, p, "needs 'lon', 'lat' or both");
+    if (!sv.geographic->lon && !sv.geographic->lat && !sv.geographic->height) {
+      fail(ErrorCode::kInvalidInput, what, p, "needs at least one of 'lon', 'lat' and 'height'");
     }
-    for (const auto& [key, range] : {std::pair{"lon", sv.geographic->lon}, std::pair{"lat", sv.geographic->lat}}) {
+    for (const auto& [key, range] : {std::pair{"lon", sv.geographic->lon}, std::pair{"lat", sv.geographic->lat},
+                                     std::pair{"height", sv.geographic->height}}) {
       if (!range) continue;
       const std::string rp = key_path(p, key);
       check_finite(what, index_path(rp, 0), range->lo);

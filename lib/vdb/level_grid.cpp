@@ -149,6 +149,17 @@ bool inside_limits(const std::vector<const Brick*>& bricks, const ResolvedSubVol
   return true;
 }
 
+// The sub-volume with its geographic height range (terrain-following levels) as a limit
+// on the geometry's height field: per sample the two are the same test.
+ResolvedSubVolume height_as_limit(const ResolvedSubVolume& sv, const format::Manifest& m) {
+  ResolvedSubVolume out = sv;
+  if (sv.geometry_height) {
+    out.limits.push_back(ResolvedLimit{*format::geometry_field_variable(m), sv.geometry_height->lo,
+                                       sv.geometry_height->hi});
+  }
+  return out;
+}
+
 void write_grids(const openvdb::GridCPtrVec& grids, const std::filesystem::path& out) {
   const auto temp = temporary_sibling(out);
   try {
@@ -181,7 +192,8 @@ std::vector<SubVolumeGridSummary> write_subvolume_vdb(const Store& store,
   const std::uint32_t step = scene.time;
   openvdb::GridCPtrVec grids;
   std::vector<SubVolumeGridSummary> summaries;
-  for (const ResolvedSubVolume& sv : scene.subvolumes) {
+  for (const ResolvedSubVolume& given : scene.subvolumes) {
+    const ResolvedSubVolume sv = height_as_limit(given, m);
     SubVolumeGridSummary summary;
     summary.subvolume_id = sv.id;
     auto grid = openvdb::FloatGrid::create(0.0f);

@@ -140,6 +140,90 @@ TEST(TerrainFollowingConversionTest, APlacedHeightBandIsExact) {
   EXPECT_GT(on_top, 0u);  // the band's top face lies at 3000 m
 }
 
+// Every mesh of a level-0 extraction of `scene`, placed in longitude/latitude/height.
+// Counts the nodes and those skipped for the domain into `nodes` and `skipped_domain`.
+std::vector<Mesh> placed_meshes(const Store& store, const Scene& scene,
+                                std::size_t* skipped_domain = nullptr,
+                                std::size_t* nodes = nullptr) {
+  const format::Manifest& m = store.manifest();
+  LevelExtractionOptions o;
+  o.merge_face_squares = false;
+  LevelExtraction result = extract_level(store, resolve_scene(scene, m, "test scene"), o);
+  const FrameTransform lonlat(m, OutputFrame::kLonLat, choose_vertical_placement(m));
+  std::vector<Mesh> meshes;
+  if (nodes != nullptr) *nodes = result.nodes.size();
+  for (NodeExtraction& n : result.nodes) {
+    for (SubVolumeResult& r : n.results) {
+      if (skipped_domain != nullptr) *skipped_domain += r.outcome == NodeOutcome::kSkippedDomain;
+      if (r.outcome != NodeOutcome::kMesh) continue;
+      lonlat.apply(r.mesh);
+      meshes.push_back(std::move(r.mesh));
+    }
+  }
+  return meshes;
+}
+
+TEST(TerrainFollowingConversionTest, AGeographicHeightRangeCutsTheBandWithDomainBoxFaces) {
+  const testing::TempDir dir;
+  const auto input = write_model(dir.path(), synthetic::SampleModel::kIcon, 1);
+  build::convert(options(input, dir / "store"));
+  const auto store = Store::open(dir / "store");
+  const format::Manifest& m = store->manifest();
+  // 1000 to 3000 m above sea level, once as a geographic height range and once as a
+  // limit on the geometry's field: the same samples bound both, so the same surfaces;
+  // the range's faces are domain-box faces, the limit's limit faces.
+  Scene box_scene;
+  SubVolume box;
+  box.id = 1;
+  box.geographic.emplace().height = AxisRange{1000.0, 3000.0};
+  box_scene.subvolumes.push_back(box);
+  box_scene.attributes.push_back(format::geometry_field_name(m));
+  EXPECT_EQ(box_scene.required_format_version(), kSceneVersionGeographicHeight);
+  Scene limit_scene;
+  SubVolume limit;
+  limit.id = 1;
+  limit.limits.push_back(Limit{format::geometry_field_name(m), 1000.0, 3000.0});
+  limit_scene.subvolumes.push_back(limit);
+  limit_scene.attributes.push_back(format::geometry_field_name(m));
+
+  const std::vector<Mesh> by_box = placed_meshes(*store, box_scene);
+  const std::vector<Mesh> by_limit = placed_meshes(*store, limit_scene);
+  ASSERT_FALSE(by_box.empty());
+  ASSERT_EQ(by_box.size(), by_limit.size());
+  std::size_t box_faces = 0;
+  for (std::size_t i = 0; i < by_box.size(); ++i) {
+    const Mesh& a = by_box[i];
+    const Mesh& b = by_limit[i];
+    EXPECT_TRUE(check_mesh(a).closed());
+    EXPECT_GT(enclosed_volume(a), 0);
+    EXPECT_NEAR(enclosed_volume(a), enclosed_volume(b), 1e-9 * std::fabs(enclosed_volume(b)));
+    ASSERT_EQ(a.triangles.size(), b.triangles.size());
+    for (std::size_t t = 0; t < a.triangles.size(); ++t) {
+      EXPECT_NE(a.face_kinds[t], FaceKind::kLimit);
+      if (b.face_kinds[t] == FaceKind::kLimit) {
+        EXPECT_EQ(a.face_kinds[t], FaceKind::kDomainBox);
+        ++box_faces;
+      }
+    }
+    // The same vertices (the band's bounds lie where the limit's do).
+    ASSERT_EQ(a.positions.size(), b.positions.size());
+    for (std::size_t v = 0; v < a.positions.size(); ++v) {
+      for (int k = 0; k < 3; ++k) ASSERT_NEAR(a.positions[v][k], b.positions[v][k], 1e-6);
+    }
+  }
+  EXPECT_GT(box_faces, 0u);
+
+  // A range above the model top skips every node from the index alone.
+  Scene above_scene;
+  box.geographic->height = AxisRange{90000.0, 95000.0};
+  above_scene.subvolumes.push_back(box);
+  above_scene.attributes.push_back(format::geometry_field_name(m));
+  std::size_t skipped = 0, nodes = 0;
+  EXPECT_TRUE(placed_meshes(*store, above_scene, &skipped, &nodes).empty());
+  EXPECT_GT(nodes, 0u);
+  EXPECT_EQ(skipped, nodes);
+}
+
 TEST(TerrainFollowingConversionTest, SigmaPressureKeepsAPressurePerSampleAndStep) {
   const testing::TempDir dir;
   const auto input = write_model(dir.path(), synthetic::SampleModel::kSigmaPressure, 2);

@@ -4,6 +4,7 @@
 // and latitude, on a rotated pole and without a place on the Earth.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
 
 #include "format/manifest.h"
@@ -58,13 +59,80 @@ TEST(GeographicBoxTest, ReadersRejectWhatItCannotMean) {
   expect_error([] { parse_scene(R"({"format_version": 2, "subvolumes": [{"id": 1, "geographic": {"lat": [0, 1]}}]})", "s.json"); },
                ErrorCode::kInvalidInput, {"s.json: subvolumes[0].geographic: was added in format_version 3"});
   expect_error([] { parse_scene(R"({"format_version": 3, "subvolumes": [{"id": 1, "geographic": {}}]})", "s.json"); },
-               ErrorCode::kInvalidInput, {"subvolumes[0].geographic: needs 'lon', 'lat' or both"});
+               ErrorCode::kInvalidInput, {"subvolumes[0].geographic: needs at least one of 'lon', 'lat' and 'height'"});
   expect_error([] { parse_scene(R"({"format_version": 3, "subvolumes": [{"id": 1, "geographic": {"lat": [80, 95]}}]})", "s.json"); },
                ErrorCode::kInvalidInput, {"subvolumes[0].geographic.lat: [80, 95] is not within [-90, 90]"});
   expect_error([] { parse_scene(R"({"format_version": 3, "subvolumes": [{"id": 1, "geographic": {"lon": [30, 10]}}]})", "s.json"); },
                ErrorCode::kInvalidInput, {"subvolumes[0].geographic.lon: lo 30 is greater than hi 10"});
   expect_error([] { parse_scene(R"({"format_version": 3, "subvolumes": [{"id": 1, "geographic": {"height": [0, 1]}}]})", "s.json"); },
-               ErrorCode::kInvalidInput, {"unknown key 'height'", "lon, lat"});
+               ErrorCode::kInvalidInput, {"subvolumes[0].geographic.height: was added in format_version 4"});
+  expect_error([] { parse_scene(R"({"format_version": 4, "subvolumes": [{"id": 1, "geographic": {"height": [5000, 1000]}}]})", "s.json"); },
+               ErrorCode::kInvalidInput, {"subvolumes[0].geographic.height: lo 5000 is greater than hi 1000"});
+  expect_error([] { parse_scene(R"({"format_version": 4, "subvolumes": [{"id": 1, "geographic": {"depth": [0, 1]}}]})", "s.json"); },
+               ErrorCode::kInvalidInput, {"unknown key 'depth'", "lon, lat, height"});
+}
+
+TEST(GeographicBoxTest, HeightRangeNeedsFormatFourAndRoundTrips) {
+  const Scene s = parse_scene(R"({"format_version": 4, "subvolumes": [
+      {"id": 1, "geographic": {"height": [1000, 3000]}},
+      {"id": 2, "geographic": {"lat": [45, 55]}}]})", "s.json");
+  ASSERT_TRUE(s.subvolumes[0].geographic.has_value());
+  EXPECT_EQ(s.subvolumes[0].geographic->height, (AxisRange{1000, 3000}));
+  EXPECT_FALSE(s.subvolumes[0].geographic->lon.has_value());
+  EXPECT_EQ(s.required_format_version(), kSceneVersionGeographicHeight);
+  const std::string canonical = scene_to_json(s);
+  EXPECT_NE(canonical.find(R"("geographic":{"height":[1000.0,3000.0]})"), std::string::npos)
+      << canonical;
+  EXPECT_NE(canonical.find(R"("format_version":4)"), std::string::npos) << canonical;
+  EXPECT_EQ(parse_scene(canonical, "c"), s);
+  // Without a height the lowest version that has every key stays 3.
+  Scene lat_only = s;
+  lat_only.subvolumes.erase(lat_only.subvolumes.begin());
+  EXPECT_EQ(lat_only.required_format_version(), kSceneVersionGeographicBox);
+}
+
+TEST(GeographicBoxTest, HeightRangeIsTheHeightAxisRangeOnAHeightAxis) {
+  const ResolvedScene r = resolve(R"({"format_version": 4, "subvolumes": [
+      {"id": 1, "geographic": {"height": [1000, 3000], "lat": [47, 52]}}]})", lonlat({0, 1}));
+  EXPECT_EQ(r.subvolumes[0].box[2], (AxisRange{1000, 3000}));
+  EXPECT_EQ(r.subvolumes[0].box[1], (AxisRange{47, 52}));
+  EXPECT_FALSE(r.subvolumes[0].geometry_height.has_value());
+  expect_error([] { resolve(R"({"format_version": 4, "subvolumes": [
+      {"id": 1, "domain": {"height": [100, 200]}, "geographic": {"height": [1000, 3000]}}]})", lonlat({0, 1})); },
+               ErrorCode::kInvalidInput, {"subvolumes[0].geographic.height: the store's axis 'height' is the height already bounded"});
+  expect_error([] { resolve(R"({"format_version": 4, "subvolumes": [
+      {"id": 1, "geographic": {"height": [6000, 9000]}}]})", lonlat({0, 1})); },
+               ErrorCode::kInvalidInput, {"subvolumes[0].geographic.height: [6000, 9000] lies outside the store's heights [20, 5000]"});
+}
+
+TEST(GeographicBoxTest, HeightRangeOnTerrainFollowingLevelsIsEvaluatedOnTheGeometryField) {
+  format::Manifest m = lonlat({0, 1});
+  m.z = Axis{"level", AxisKind::kModelLevel, "1", "model_level_number", "", "", {1, 2, 3}};
+  format::GridGeometry g;
+  g.vertical.kind = format::VerticalGeometry::Kind::kField;
+  g.vertical.quantity = format::VerticalGeometry::Quantity::kHeight;
+  g.vertical.units = "m";
+  m.geometry = g;
+  const ResolvedScene r = resolve(R"({"format_version": 4, "subvolumes": [
+      {"id": 1, "geographic": {"height": [1000, 3000]}}]})", m);
+  EXPECT_EQ(r.subvolumes[0].geometry_height, (AxisRange{1000, 3000}));
+  EXPECT_EQ(r.subvolumes[0].box[2], (AxisRange{-kInf, kInf}));
+  // The geometry field is read wherever the range is evaluated.
+  EXPECT_NE(std::find(r.needed_variables.begin(), r.needed_variables.end(), 1u), r.needed_variables.end());
+
+  // Levels placed by pressure have no heights to bound: refused, pointing at the field.
+  m.geometry->vertical.quantity = format::VerticalGeometry::Quantity::kPressure;
+  m.geometry->vertical.units = "Pa";
+  expect_error([&] { resolve(R"({"format_version": 4, "subvolumes": [
+      {"id": 1, "geographic": {"height": [1000, 3000]}}]})", m); },
+               ErrorCode::kInvalidInput, {"subvolumes[0].geographic.height: the store's levels have no height",
+                                          "'geometry_pressure'"});
+  // So have pressure levels.
+  format::Manifest p = lonlat({0, 1});
+  p.z = Axis{"plev", AxisKind::kPressure, "Pa", "air_pressure", "", "down", {85000, 50000}};
+  expect_error([&] { resolve(R"({"format_version": 4, "subvolumes": [
+      {"id": 1, "geographic": {"height": [1000, 3000]}}]})", p); },
+               ErrorCode::kInvalidInput, {"axis 'plev' is not a height"});
 }
 
 TEST(LongitudeRangesTest, AnyConventionMeansTheSameLongitudes) {

@@ -179,9 +179,9 @@ TEST(SceneParseTest, DuplicateKeys) {
 }
 
 TEST(SceneParseTest, FormatVersionNewerThanReader) {
-  expect_error([] { parse_scene(R"({"format_version": 4, "slices": [], "subvolumes": []})", "s.json"); },
+  expect_error([] { parse_scene(R"({"format_version": 5, "slices": [], "subvolumes": []})", "s.json"); },
                ErrorCode::kVersionTooNew,
-               {"s.json", "format_version 4 is newer than this reader (max 3)"});
+               {"s.json", "format_version 5 is newer than this reader (max 4)"});
 }
 
 TEST(SceneParseTest, FormatVersionInvalid) {

@@ -77,8 +77,8 @@ TEST(SceneVersion2KeysTest, NewKeysNeedFormatVersion2) {
         R"({{"subvolumes": [{{"id": 1, "limits": [{{"var": "a", "min": 0}}]}}], "{}": {{}}}})", key);
     expect_invalid(json, {key, "added in format_version 2", "declares 1"});
   }
-  expect_error([] { parse_scene(R"({"format_version": 4, "subvolumes": []})", "s"); },
-               ErrorCode::kVersionTooNew, {"format_version 4 is newer than this reader (max 3)"});
+  expect_error([] { parse_scene(R"({"format_version": 5, "subvolumes": []})", "s"); },
+               ErrorCode::kVersionTooNew, {"format_version 5 is newer than this reader (max 4)"});
   expect_invalid(v2(R"("advection": {})"), {"advection", "reserved for a later version"});
 }
 
