@@ -272,8 +272,8 @@ void TerrainFollowingVtkReferenceTest::expect_matches_reference(OutputFrame fram
     EXPECT_EQ(inward_normals(mesh), 0u);
 
     const peers::StructuredClipMeasures ref = reference(*input_, frame, region);
-    EXPECT_EQ(ref.boundary_edges,
-              0u);  // VTK's region is closed too: its area is whole
+    // VTK's region is closed too: its area is whole.
+    EXPECT_EQ(ref.boundary_edges, 0u);
     EXPECT_EQ(ref.non_manifold_edges, 0u);
     const double tolerance = frame == OutputFrame::kEcef ? kEcefChordTolerance : kVolumeTolerance;
     EXPECT_NEAR(volume / ref.volume, 1.0, tolerance) << volume << " m3, VTK " << ref.volume;
@@ -301,8 +301,9 @@ TEST_F(TerrainFollowingVtkReferenceTest, FlatLevelsMissTheReference) {
   format::Manifest flat = store_->manifest();
   ASSERT_TRUE(flat.geometry);
   flat.geometry->vertical.kind = format::VerticalGeometry::Kind::kLevels;
-  for (std::size_t k = 0; k < input_->nz; ++k)
+  for (std::size_t k = 0; k < input_->nz; ++k) {
     flat.geometry->vertical.levels.push_back(input_->level_mean(k));
+  }
   const FrameTransform transform(flat, OutputFrame::kLocalMetric, choose_vertical_placement(flat));
   for (const Region& region : regions()) {
     if (!region.near_ground) continue;
