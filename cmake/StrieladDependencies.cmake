@@ -59,6 +59,8 @@ find_package(VTK 9.1 REQUIRED COMPONENTS
                         # vtkMassProperties, vtkFeatureEdges, vtkThreshold
   FiltersGeneral        # vtkTableBasedClipDataSet
   FiltersGeometry       # vtkDataSetSurfaceFilter
+  FiltersParallel       # vtkIntegrateAttributes (its only factory override is
+                        # vtkConvertToMultiBlockDataSet, unused here)
   IOXML)                # vtkXMLPolyDataWriter/Reader
 
 # The viewer (lib/render, cmd/strielad-view): OpenGL through libepoxy, contexts through
