@@ -177,7 +177,8 @@ void BoxReader::open_variable(Impl& m, Dims3 dims) {
   if (m.filtered || m.stagger != ingest::StaggeredAxis::kNone) return;
   nc_set_var_chunk_cache(m.grpid, m.varid, 0, 0, 0.75f);
   std::string why_not;
-  m.planes = ingest::Hdf5PlaneLayout::open(m.path, m.source_name, m.attrs.type, m.has_time, dims, &why_not);
+  m.planes = ingest::Hdf5PlaneLayout::open(m.path, m.source_name, m.attrs.type, m.has_time, dims,
+                                           &why_not);
   if (m.planes) {
     m.dims = dims;
     m.prefetch_fd = ::open(m.path.c_str(), O_RDONLY | O_CLOEXEC);  // -1: no prefetching

@@ -123,8 +123,8 @@ Axis read_ln_pressure_axis(int grpid, int varid, const std::string& file) {
                      "{}: lev variable '{}' does not lie on the dimension of '{}' alone", context,
                      *lev_name, name);
   }
-  const std::vector<double> lev_values =
-      read_all_as_double(lev.grpid, lev.varid, fmt::format("{}: lev variable '{}'", file, *lev_name));
+  const std::vector<double> lev_values = read_all_as_double(
+      lev.grpid, lev.varid, fmt::format("{}: lev variable '{}'", file, *lev_name));
 
   Axis a;
   a.name = name;
