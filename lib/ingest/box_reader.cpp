@@ -25,6 +25,10 @@ namespace strielad::build {
 
 struct BoxReader::Impl {
   std::string path, name;
+  // The file's variable read: `name`, or the source of a derived variable (WRF's theta
+  // reads T, adding value_offset to every value).
+  std::string source_name;
+  double value_offset = 0;
   std::string context;  // "file: variable 'x' time step t"
   ingest::NcFile file;
   int grpid = -1, varid = -1;
@@ -99,6 +103,10 @@ BoxReader::BoxReader(const ingest::InputCatalog& catalog, const ingest::ScanOpti
   Impl& m = *impl_;
   m.path = catalog.files.at(loc.file).path;
   m.name = catalog.variables[variable].name;
+  m.source_name = catalog.variables[variable].source_variable.empty()
+                      ? m.name
+                      : catalog.variables[variable].source_variable;
+  m.value_offset = catalog.variables[variable].value_offset;
   m.context = fmt::format("{}: variable '{}' time step {}", m.path, m.name, step);
   m.time_index = loc.time_in_file;
   m.nan_as_fill = scan.nan_as_fill;
@@ -122,11 +130,11 @@ BoxReader::BoxReader(const ingest::InputCatalog& catalog, const ingest::ScanOpti
 void BoxReader::open_variable(Impl& m, Dims3 dims) {
   m.file = ingest::NcFile(m.path);
   m.grpid = m.file.id();
-  std::string short_name = m.name;
-  if (const auto slash = m.name.rfind('/'); slash != std::string::npos) {
+  std::string short_name = m.source_name;
+  if (const auto slash = m.source_name.rfind('/'); slash != std::string::npos) {
     std::string group = "/";  // not "/" + substr: GCC 12 -O3 warns falsely (PR 105651)
-    group.append(m.name, 0, slash);
-    short_name = m.name.substr(slash + 1);
+    group.append(m.source_name, 0, slash);
+    short_name = m.source_name.substr(slash + 1);
     ingest::nc_check(nc_inq_grp_full_ncid(m.file.id(), group.c_str(), &m.grpid), m.context);
   }
   ingest::nc_check(nc_inq_varid(m.grpid, short_name.c_str(), &m.varid), m.context);
@@ -152,6 +160,7 @@ void BoxReader::open_variable(Impl& m, Dims3 dims) {
                      m.context);
   }
   m.attrs = ingest::read_value_attributes(m.grpid, m.varid);
+  ingest::add_value_offset(m.attrs, m.value_offset);
   if (!ingest::is_numeric_type(m.attrs.type)) {
     throw make_error(ErrorCode::kInvalidInput, "{}: non-numeric type {}", m.context,
                      ingest::nc_type_name(m.attrs.type));
@@ -168,7 +177,8 @@ void BoxReader::open_variable(Impl& m, Dims3 dims) {
   if (m.filtered || m.stagger != ingest::StaggeredAxis::kNone) return;
   nc_set_var_chunk_cache(m.grpid, m.varid, 0, 0, 0.75f);
   std::string why_not;
-  m.planes = ingest::Hdf5PlaneLayout::open(m.path, m.name, m.attrs.type, m.has_time, dims, &why_not);
+  m.planes = ingest::Hdf5PlaneLayout::open(m.path, m.source_name, m.attrs.type, m.has_time, dims,
+                                           &why_not);
   if (m.planes) {
     m.dims = dims;
     m.prefetch_fd = ::open(m.path.c_str(), O_RDONLY | O_CLOEXEC);  // -1: no prefetching

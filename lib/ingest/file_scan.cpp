@@ -17,6 +17,7 @@
 #include "ingest/cf_axis_detection.h"
 #include "ingest/grid_mapping_reader.h"
 #include "ingest/horizontal_axes.h"
+#include "ingest/ln_pressure_axis.h"
 #include "ingest/netcdf_call.h"
 #include "ingest/netcdf_file.h"
 #include "ingest/source_file.h"
@@ -496,6 +497,11 @@ std::optional<Rejection> FileScanner::check_dimension_roles(
 
 Axis FileScanner::coordinate_axis(const VariableRef& ref, AxisKind kind) {
   const Coordinate& c = coordinate(ref, false);
+  // Pressures known exactly per level: a pressure axis, no geometry field.
+  if (kind == AxisKind::kOther && c.attrs.has_formula_terms &&
+      lower(c.attrs.standard_name) == kLnPressureCoordinate) {
+    return read_ln_pressure_axis(ref.grpid, ref.varid, file_);
+  }
   Axis a;
   a.name = c.attrs.name;
   a.kind = kind == AxisKind::kOther ? detect_vertical_kind(c.attrs) : kind;

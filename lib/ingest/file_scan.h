@@ -37,6 +37,9 @@ struct ScannedVariable {
   VariableClass klass = VariableClass::kNotGridded;
   std::optional<Error> problem;  // why it is not kGrid3D
   bool auxiliary = false;        // a coordinate, bounds or auxiliary coordinate variable
+  // Why the default selection leaves this usable variable out (logged): WRF's T, offered
+  // as theta. Empty: taken by default. Asked for by name, it is converted.
+  std::string not_by_default;
   std::vector<std::string> dimensions;
   // kGrid3D only:
   Axis x, y, z;

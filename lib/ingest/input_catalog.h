@@ -86,6 +86,11 @@ struct VariableMeta {
   std::optional<double> scale_factor, add_offset;
   // Every value of missing_value (CF allows a vector); missing_value is the first one.
   std::vector<double> missing_values;
+  // A variable derived from another one of the same file (WRF's theta from T): the
+  // file's variable that is read, its attributes above; empty: `name` itself.
+  std::string source_variable;
+  // Added to every value once unpacked (WRF's theta: T + 300 K); 0: none.
+  double value_offset = 0;
 };
 
 // Where a GRIB message lies in its file.

@@ -166,7 +166,9 @@ OpenFile& SlabReader::Impl::open_file(std::size_t index) {
 const VariableHandle& SlabReader::Impl::variable(OpenFile& of, std::size_t file, std::size_t v) {
   if (auto it = of.variables.find(v); it != of.variables.end()) return it->second;
   const std::string& path = catalog.files[file].path;
-  const std::string& name = catalog.variables[v].name;
+  const VariableMeta& meta = catalog.variables[v];
+  // A derived variable (WRF's theta) reads its source variable.
+  const std::string& name = meta.source_variable.empty() ? meta.name : meta.source_variable;
   VariableHandle h;
   h.grpid = of.file.id();
   std::string short_name = name;
@@ -205,6 +207,7 @@ const VariableHandle& SlabReader::Impl::variable(OpenFile& of, std::size_t file,
                      "{}: variable '{}' no longer has the shape it had when scanned", path, name);
   }
   h.attrs = read_value_attributes(h.grpid, h.varid);
+  add_value_offset(h.attrs, meta.value_offset);
   if (!is_numeric_type(h.attrs.type)) {
     throw make_error(ErrorCode::kInvalidInput, "{}: variable '{}' has non-numeric type {}", path,
                      name, nc_type_name(h.attrs.type));

@@ -148,6 +148,10 @@ DType store_type_for(int var_type, std::optional<int> packing_type) {
   }
 }
 
+void add_value_offset(CfValueAttributes& a, double offset) {
+  if (offset != 0) a.add_offset = a.add_offset.value_or(0.0) + offset;
+}
+
 VariableMeta read_variable_meta(int grpid, int varid, const std::string& store_name) {
   const CfValueAttributes a = read_value_attributes(grpid, varid);
   VariableMeta m;

@@ -42,6 +42,10 @@ struct CfValueAttributes {
 // netcdf_mutex().
 CfValueAttributes read_value_attributes(int grpid, int varid);
 
+// Adds `offset` to every value `a` unpacks (folded into add_offset): the readers of a
+// derived variable (VariableMeta::value_offset). Nothing for 0.
+void add_value_offset(CfValueAttributes& a, double offset);
+
 // \error kInvalidInput with `a.unusable` when it is set.
 void check_usable(const CfValueAttributes& a);
 

@@ -91,6 +91,13 @@ std::vector<std::string> select_default(const std::vector<ScannedFile>& files,
       }
       switch (v.klass) {
         case VariableClass::kGrid3D:
+          if (!v.not_by_default.empty()) {
+            if (logged.insert(v.name).second) {
+              spdlog::info("{}: '{}' {} (name it in --vars to convert it too)", f.source.path,
+                           v.name, v.not_by_default);
+            }
+            continue;
+          }
           if (reference == nullptr) {
             reference = &v;
             reference_file = &f;

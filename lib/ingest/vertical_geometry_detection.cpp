@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "ingest/cf_attributes.h"
 #include "ingest/formula_terms.h"
+#include "ingest/ln_pressure_axis.h"
 #include "ingest/netcdf_call.h"
 #include "ingest/term_reader.h"
 #include "ingest/wrf_grid_reader.h"
@@ -29,12 +30,17 @@ std::string short_name(const std::string& store_name) {
   return slash == std::string::npos ? store_name : store_name.substr(slash + 1);
 }
 
+// The file's name of a catalog variable (a derived one names its source).
+std::string file_name(const VariableMeta& v) {
+  return short_name(v.source_variable.empty() ? v.name : v.source_variable);
+}
+
 class Detector {
  public:
   Detector(const InputCatalog& catalog, const ScanOptions& options)
       : reader_(catalog.as_in_files()), options_(options), dims_(reader_.catalog().dims()) {
     if (!catalog.variables.empty()) {
-      if (auto v = reader_.find(short_name(catalog.variables[0].name));
+      if (auto v = reader_.find(file_name(catalog.variables[0]));
           v && v->dimensions.size() >= 3) {
         z_dimension_ = v->dimensions[v->dimensions.size() - 3];
       }
@@ -239,18 +245,14 @@ std::optional<VerticalGeometrySource> Detector::cf_formula() {
   if (formula_terms.empty()) return std::nullopt;
   const std::string standard_name = attribute(*z, "standard_name");
   const std::string context = fmt::format("{}: z coordinate '{}'", path(*z), z->name);
-  if (standard_name == "atmosphere_ln_pressure_coordinate") {
-    throw make_error(ErrorCode::kUnsupported,
-                     "{}: atmosphere_ln_pressure_coordinate (p = p0 * exp(-lev)) is not "
-                     "supported yet (supported: {}); interpolate to pressure levels first",
-                     context, supported_formulas());
-  }
+  // Levels that the scan turned into a pressure axis (ln_pressure_axis.h): nothing to place.
+  if (standard_name == kLnPressureCoordinate) return std::nullopt;
   const FormulaDefinition* formula = find_formula(standard_name);
   if (formula == nullptr) {
     throw make_error(ErrorCode::kUnsupported,
                      "{} has formula_terms with standard_name '{}', a formula that is not "
-                     "supported (supported: {})",
-                     context, standard_name, supported_formulas());
+                     "supported (supported: {}, and {} as a pressure axis)",
+                     context, standard_name, supported_formulas(), kLnPressureCoordinate);
   }
   std::map<std::string, std::string> named;
   for (const FormulaTerm& t : parse_formula_terms(formula_terms, context))
@@ -267,7 +269,7 @@ std::optional<VerticalGeometrySource> Detector::ccm_formula() {
   std::vector<TermVariable> holders;
   if (auto z = reader_.find(reader_.catalog().z.name)) holders.push_back(*z);
   if (!reader_.catalog().variables.empty()) {
-    if (auto v = reader_.find(short_name(reader_.catalog().variables[0].name)))
+    if (auto v = reader_.find(file_name(reader_.catalog().variables[0])))
       holders.push_back(*v);
   }
   static const std::map<std::string, std::string> kTermOf{

@@ -26,7 +26,8 @@ struct VerticalDetection {
 // with the wrong dimensions or units; a formula term missing from formula_terms or a
 // term variable missing from every file (suggesting --formula-term NAME=VALUE); a
 // time-varying term missing for a time step. kUnsupported: a formula standard_name not
-// supported (the message lists those that are), atmosphere_ln_pressure_coordinate.
+// supported (the message lists those that are). An atmosphere_ln_pressure_coordinate z
+// axis places every sample itself (the scan made it a pressure axis: ln_pressure_axis.h).
 // The variables that would place the levels rather than be data: ScanOptions::height_var,
 // z_mc, z_ifc, HHL, PH and PHB.
 std::vector<std::string> height_field_names(const ScanOptions& options);

@@ -6,6 +6,7 @@
 #include <netcdf.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <array>
 #include <set>
 
@@ -69,6 +70,44 @@ ScannedVariable scan_one(int ncid, int varid, const WrfLayout& layout, const std
   return sv;
 }
 
+// WRF's base potential temperature t0 (module_model_constants: T = theta - t0). Not the
+// T00 variable, which is the base state's sea-level temperature (290 K by default).
+constexpr double kWrfTheta0 = 300.0;
+
+// theta = T + 300 K, read from T: offered in T's place by default.
+ScannedVariable potential_temperature(ScannedVariable& t) {
+  ScannedVariable theta = t;
+  theta.name = kWrfThetaName;
+  theta.meta.name = kWrfThetaName;
+  theta.meta.source_variable = t.name;
+  theta.meta.value_offset = kWrfTheta0;
+  theta.meta.units = "K";
+  theta.meta.long_name = "potential temperature (T + 300 K)";
+  theta.meta.standard_name = "air_potential_temperature";
+  t.not_by_default =
+      "is WRF's perturbation potential temperature (theta - 300 K): 'theta' (T + 300 K) is "
+      "converted instead";
+  return theta;
+}
+
+// Inserts theta before T when T is a field on the grid in K and the file has no theta.
+void offer_potential_temperature(std::vector<ScannedVariable>& variables, int ncid,
+                                 const std::string& file) {
+  int varid = -1;
+  if (nc_inq_varid(ncid, kWrfThetaName, &varid) == NC_NOERR) return;
+  const auto t = std::find_if(variables.begin(), variables.end(),
+                              [](const ScannedVariable& v) { return v.name == "T"; });
+  if (t == variables.end() || t->klass != VariableClass::kGrid3D) return;
+  if (t->meta.units != "K") {
+    spdlog::info("{}: WRF variable 'T' has units '{}', not K: no potential temperature is "
+                 "derived from it",
+                 file, t->meta.units);
+    return;
+  }
+  ScannedVariable theta = potential_temperature(*t);
+  variables.insert(t, std::move(theta));
+}
+
 }  // namespace
 
 std::vector<ScannedVariable> scan_wrf_variables(int ncid, const std::string& file) {
@@ -81,6 +120,7 @@ std::vector<ScannedVariable> scan_wrf_variables(int ncid, const std::string& fil
   std::vector<ScannedVariable> out;
   const int nvars = variable_count(ncid);
   for (int v = 0; v < nvars; ++v) out.push_back(scan_one(ncid, v, layout, file));
+  offer_potential_temperature(out, ncid, file);
   return out;
 }
 

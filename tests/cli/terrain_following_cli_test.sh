@@ -49,6 +49,37 @@ for model in icon icon-cf sigma-pressure wrf; do
     fail "$model lonlat output does not say the geometry placed it"
 done
 
+# WRF's T is stored as the potential temperature theta = T + 300 K, in T's place.
+grep -Eq "^ +theta +float32 +K +.*potential temperature \(T \+ 300 K\)" "$work/wrf.info" ||
+  fail "the WRF store has no theta"
+grep -Eq "^ +T +float32" "$work/wrf.info" && fail "the WRF store converted T by default"
+
+# CF atmosphere_ln_pressure_coordinate: a plain pressure axis (p0 * exp(-lev), in Pa).
+if command -v ncgen >/dev/null; then
+  {
+    echo 'netcdf ln { dimensions: lev = 4 ; lat = 3 ; lon = 4 ; variables:'
+    echo ' double lev(lev) ; lev:axis = "Z" ;'
+    echo '  lev:standard_name = "atmosphere_ln_pressure_coordinate" ;'
+    echo '  lev:formula_terms = "p0: p0 lev: lev" ;'
+    echo ' double p0 ; p0:units = "hPa" ;'
+    echo ' double lat(lat) ; lat:units = "degrees_north" ;'
+    echo ' double lon(lon) ; lon:units = "degrees_east" ;'
+    echo ' float ta(lev, lat, lon) ; ta:units = "K" ;'
+    echo "data: lev = 0, 0.5, 1, 2 ; p0 = 1000 ; lat = 0, 10, 20 ; lon = 0, 10, 20, 30 ;"
+    echo " ta = $(seq -s ', ' 201 248) ; }"
+  } >"$work/ln.cdl"
+  ncgen -o "$work/ln.nc" "$work/ln.cdl" || fail "ncgen of the ln-pressure file"
+  "$convert" "$work/ln.nc" -o "$work/ln" -q || fail "ln-pressure conversion"
+  "$convert" info "$work/ln" >"$work/ln.info" || fail "ln-pressure info"
+  grep -Eq "^ +lev +4 \(pressure, Pa\): 100000 \.\. 13533\.5" "$work/ln.info" ||
+    fail "the ln-pressure store has no pressure axis p0 * exp(-lev)"
+  grep -q "^geometry " "$work/ln.info" && fail "the ln-pressure store has a geometry"
+  sed -i 's/p0 = 1000/p0 = -1000/' "$work/ln.cdl"
+  ncgen -o "$work/ln-negative.nc" "$work/ln.cdl" || fail "ncgen of the negative p0 file"
+  expect_cli_error "$convert" "$work" 4 "p0 is -100000 Pa" -- "$work/ln-negative.nc" \
+    -o "$work/ln-negative"
+fi
+
 # ICON's absolute time axis has dates now.
 grep -q "2013-04-26T12:00:00Z" "$work/icon.info" || fail "the ICON store has no dates"
 # A height band: everything below 3000 m above sea level, by the geometry's own field.

@@ -218,14 +218,6 @@ TEST(CfFormulaLevelsTest, UnknownFormulaIsRefusedListingTheSupportedOnes) {
                 "atmosphere_hybrid_sigma_pressure_coordinate", "atmosphere_sigma_coordinate"});
 }
 
-TEST(CfFormulaLevelsTest, LnPressureCoordinateIsRefused) {
-  TempDir dir;
-  const ModelLevels g = levels("atmosphere_ln_pressure_coordinate", "p0: P0 lev: lev");
-  sigma_pressure_file(g).write(dir / "ln.nc");
-  expect_error([&] { scan_inputs({dir / "ln.nc"}, only_t()); }, ErrorCode::kUnsupported,
-               {"ln.nc", "atmosphere_ln_pressure_coordinate"});
-}
-
 TEST(CfFormulaLevelsTest, MalformedFormulaTermsAreRefused) {
   TempDir dir;
   const ModelLevels g = levels("atmosphere_hybrid_height_coordinate", "a: a b b orog: orog");

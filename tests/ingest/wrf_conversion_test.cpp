@@ -2,7 +2,8 @@
 // A WRF history file converted end to end: a version-5 store on the Lambert conformal
 // mapping whose time-varying height field is, at every sample of every step, the mean of
 // the w levels' (PH + PHB) / 9.81 around it (WRF's g, computed here from the file read
-// with netCDF), with HGT as the surface.
+// with netCDF), with HGT as the surface; T stored as the potential temperature theta,
+// every sample T + 300 K.
 #include <gtest/gtest.h>
 #include <netcdf.h>
 
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "convert/converter.h"
+#include "core/error.h"
 #include "format/geometry_field.h"
 #include "store/level_samples.h"
 #include "store/store.h"
@@ -75,6 +77,24 @@ TEST(WrfConversionTest, PhPlusPhbPlaceTheLevelsOfEveryStep) {
   ASSERT_TRUE(coordinates && coordinates->surface_m);
   const std::vector<double> hgt = testing::read_netcdf_variable(input, "HGT").values;
   EXPECT_EQ(*coordinates->surface_m, std::vector<double>(hgt.begin(), hgt.begin() + plane));
+
+  // T is stored as the potential temperature theta = T + 300 K (float32, as T is).
+  EXPECT_THROW(m.variable_index("T"), Error);
+  const std::size_t theta = m.variable_index("theta");
+  EXPECT_EQ(m.variables[theta].units, "K");
+  EXPECT_EQ(m.variables[theta].long_name, "potential temperature (T + 300 K)");
+  EXPECT_EQ(m.variables[theta].standard_name, "air_potential_temperature");
+  EXPECT_EQ(m.variables[theta].dtype, DType::kFloat32);
+  const std::vector<double> t = testing::read_netcdf_variable(input, "T").values;
+  ASSERT_EQ(t.size(), 2 * kDims.z * plane);
+  for (std::uint32_t step = 0; step < 2; ++step) {
+    const auto got = read_level_samples<float>(*store, step, static_cast<std::uint32_t>(theta), 0);
+    ASSERT_EQ(got.values.size(), kDims.z * plane);
+    for (std::size_t s = 0; s < got.values.size(); ++s) {
+      ASSERT_EQ(got.values[s], static_cast<float>(t[step * kDims.z * plane + s] + 300.0))
+          << "step " << step << " sample " << s;
+    }
+  }
 }
 
 }  // namespace

@@ -190,6 +190,48 @@ TEST(WrfInputTest, StaggeredWindsAreTheMeanOfTheirTwoNeighbours) {
   }
 }
 
+TEST(WrfInputTest, ThetaIsTPlus300Kelvin) {
+  const testing::TempDir dir;
+  const auto files = write_wrf(dir.path(), 2, false);
+  ScanOptions o;
+  o.variables = {"theta", "T"};  // T asked for by name: converted as it is
+  const InputCatalog c = scan_inputs(files, o);
+  EXPECT_EQ(c.variables[c.variable_index("T")].long_name,
+            "perturbation potential temperature theta-t0");
+  EXPECT_EQ(c.variables[c.variable_index("T")].value_offset, 0.0);
+  const testing::NetcdfValues t = testing::read_netcdf_variable(files[0], "T");
+  const std::size_t plane = kDims.x * kDims.y, level = kDims.z * plane;
+  ASSERT_EQ(t.values.size(), 2 * level);
+  SlabReader reader(c, o);
+  const std::size_t theta = c.variable_index("theta");
+  for (std::size_t step = 0; step < 2; ++step) {
+    std::vector<double> got(level), perturbation(level);
+    std::vector<float> got_f(level);
+    reader.read(theta, step, 0, kDims.z, std::span<double>(got));
+    reader.read(theta, step, 0, kDims.z, std::span<float>(got_f));
+    reader.read(c.variable_index("T"), step, 0, kDims.z, std::span<double>(perturbation));
+    for (std::size_t s = 0; s < level; ++s) {
+      const double want = t.values[step * level + s] + 300.0;
+      ASSERT_EQ(got[s], want) << "step " << step << " sample " << s;
+      ASSERT_EQ(got_f[s], static_cast<float>(want)) << "step " << step << " sample " << s;
+      ASSERT_EQ(perturbation[s], t.values[step * level + s]) << "step " << step << " sample " << s;
+    }
+    // The box reader (predictor trials) adds the same 300 K.
+    build::BoxReader box_reader(c, o, theta, step);
+    const IndexBox box{{1, 2, 1}, {kDims.x - 2, kDims.y - 1, kDims.z - 2}};
+    std::vector<double> in_box(box.count());
+    box_reader.read(box, std::span<double>(in_box));
+    std::size_t b = 0;
+    for (std::size_t k = box.lo[2]; k <= box.hi[2]; ++k) {
+      for (std::size_t j = box.lo[1]; j <= box.hi[1]; ++j) {
+        for (std::size_t i = box.lo[0]; i <= box.hi[0]; ++i, ++b) {
+          ASSERT_EQ(in_box[b], got[k * plane + j * kDims.x + i]) << "box sample " << b;
+        }
+      }
+    }
+  }
+}
+
 TEST(WrfInputTest, DestaggerTakesTheMeanInDouble) {
   // Two samples whose float sum overflows: the mean is computed in double.
   const std::vector<double> in{3e38, 3e38, 1.0, 2.0};
@@ -209,9 +251,16 @@ TEST(WrfInputTest, DefaultSelectionSkipsGeometrySourcesAndPlanes) {
   const InputCatalog c = scan_inputs(write_wrf(dir.path(), 1, false), {});
   std::vector<std::string> names;
   for (const auto& v : c.variables) names.push_back(v.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"U", "V", "W", "T", "P", "PB", "QVAPOR", "QCLOUD"}));
-  EXPECT_EQ(c.variables[c.variable_index("T")].long_name,
-            "perturbation potential temperature theta-t0");
+  // T is offered as the potential temperature theta = T + 300 K, in its place.
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"U", "V", "W", "theta", "P", "PB", "QVAPOR", "QCLOUD"}));
+  const VariableMeta& theta = c.variables[c.variable_index("theta")];
+  EXPECT_EQ(theta.units, "K");
+  EXPECT_EQ(theta.long_name, "potential temperature (T + 300 K)");
+  EXPECT_EQ(theta.standard_name, "air_potential_temperature");
+  EXPECT_EQ(theta.source_variable, "T");
+  EXPECT_EQ(theta.value_offset, 300.0);
+  EXPECT_EQ(theta.store_type, DType::kFloat32);
   ASSERT_TRUE(c.vertical_geometry);
   EXPECT_EQ(c.vertical_geometry->sources, (std::vector<std::string>{"PH", "PHB"}));
   EXPECT_TRUE(c.vertical_geometry->varies_in_time);
@@ -248,7 +297,7 @@ TEST(WrfInputTest, OneFilePerStepMerges) {
   const InputCatalog c = scan_inputs(files, {});
   EXPECT_EQ(c.time.units, "seconds since 2013-04-26 12:00:00");
   EXPECT_EQ(c.time.values, (std::vector<double>{0, kStepSeconds}));
-  const std::size_t t = c.variable_index("T");
+  const std::size_t t = c.variable_index("theta");
   EXPECT_EQ(c.locations[t][0].file, 0u);
   EXPECT_EQ(c.locations[t][1].file, 1u);
   EXPECT_EQ(c.locations[t][1].time_in_file, 0u);
