@@ -11,28 +11,62 @@
 
 namespace strielad {
 
+namespace {
+
+// One table per store (by id), kept while some extraction holds it; made by `make`
+// (under the lock) when none is held.
+template <class Make>
+std::shared_ptr<const GeoLocation> cached(std::uint64_t store_id, Make make) {
+  static std::mutex mutex;
+  static std::map<std::uint64_t, std::weak_ptr<const GeoLocation>> cache;
+  std::lock_guard lock(mutex);
+  if (auto it = cache.find(store_id); it != cache.end()) {
+    if (auto table = it->second.lock()) return table;
+  }
+  std::shared_ptr<const GeoLocation> table = make();
+  cache[store_id] = table;
+  return table;
+}
+
+}  // namespace
+
 std::shared_ptr<const GeoLocation> GeoLocation::of(const format::Manifest& m) {
   if (!m.grid_mapping || m.grid_mapping->proj.empty()) {
     throw make_error(ErrorCode::kUnsupported, "the store's grid has no grid mapping to place it by");
   }
-  // One table per store (by id), kept while some extraction holds it.
-  static std::mutex mutex;
-  static std::map<std::uint64_t, std::weak_ptr<const GeoLocation>> cache;
-  std::lock_guard lock(mutex);
-  if (auto it = cache.find(m.store_id); it != cache.end()) {
-    if (auto table = it->second.lock()) return table;
-  }
-  auto table = std::make_shared<GeoLocation>();
-  const geo::GridProjection projection(m.grid_mapping->proj);
-  table->nx_ = m.x.size();
-  table->lonlat_.resize(m.x.size() * m.y.size());
-  for (std::size_t j = 0; j < m.y.size(); ++j) {
-    for (std::size_t i = 0; i < m.x.size(); ++i) {
-      table->lonlat_[j * m.x.size() + i] = projection.to_geographic(m.x.values[i], m.y.values[j]);
+  return cached(m.store_id, [&] {
+    auto table = std::make_shared<GeoLocation>();
+    const geo::GridProjection projection(m.grid_mapping->proj);
+    table->nx_ = m.x.size();
+    table->lonlat_.resize(m.x.size() * m.y.size());
+    for (std::size_t j = 0; j < m.y.size(); ++j) {
+      for (std::size_t i = 0; i < m.x.size(); ++i) {
+        table->lonlat_[j * m.x.size() + i] = projection.to_geographic(m.x.values[i], m.y.values[j]);
+      }
     }
+    return table;
+  });
+}
+
+std::shared_ptr<const GeoLocation> GeoLocation::of(const Store& store) {
+  const format::Manifest& m = store.manifest();
+  const bool curvilinear =
+      m.geometry && m.geometry->horizontal.kind == format::HorizontalGeometry::Kind::kCurvilinear;
+  if (!curvilinear) return of(m);
+  const auto coordinates = store.horizontal_coordinates();
+  if (coordinates == nullptr || !coordinates->has_coordinates()) {
+    throw make_error(ErrorCode::kCorrupt, "{}: a curvilinear store without its coordinates",
+                     store.path().string());
   }
-  cache[m.store_id] = table;
-  return table;
+  return cached(m.store_id, [&] {
+    auto table = std::make_shared<GeoLocation>();
+    table->nx_ = coordinates->nx;
+    table->lonlat_.resize(coordinates->lon.size());
+    for (std::size_t k = 0; k < coordinates->lon.size(); ++k) {
+      table->lonlat_[k] = {coordinates->lon[k], coordinates->lat[k]};
+    }
+    return table;
+  });
 }
 
 std::vector<std::vector<double>> geographic_conditions(const GeographicBox& box,

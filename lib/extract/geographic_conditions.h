@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// A geographic box (longitude and latitude ranges) on a grid placed by a grid mapping,
+// A geographic box (longitude and latitude ranges) on a grid placed by a grid mapping or
+// by 2-D coordinates (curvilinear),
 // as per-sample conditions of the extraction kernel (formats/scene.md, "Geographic
 // boxes"): the region ends where the conditions' trilinear interpolants cross zero,
 // exactly at the samples and within the interpolation's error between them, and its mesh
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "format/manifest.h"
+#include "store/store.h"
 #include "scene/scene.h"
 
 namespace strielad {
@@ -30,6 +32,10 @@ class GeoLocation {
  public:
   // \error kUnsupported when the store's grid has no grid mapping with a pipeline.
   static std::shared_ptr<const GeoLocation> of(const format::Manifest& manifest);
+  // Either grid: a curvilinear store's columns from its GEOMETRY file, as stored; else as
+  // of(manifest).
+  // \error kUnsupported as of(manifest); kCorrupt and others as Store::horizontal_coordinates.
+  static std::shared_ptr<const GeoLocation> of(const Store& store);
 
   const std::array<double, 2>& at(std::size_t i, std::size_t j) const { return lonlat_[j * nx_ + i]; }
   std::size_t nx() const { return nx_; }

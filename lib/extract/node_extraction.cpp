@@ -137,7 +137,7 @@ std::vector<SubVolumePlan> plan_subvolumes(const Store& store, const ResolvedSce
       }
     }
     if (sv.geographic && r.reason.empty()) {
-      plan.geographic = geographic_conditions(*sv.geographic, *GeoLocation::of(m), geometry.fine[0],
+      plan.geographic = geographic_conditions(*sv.geographic, *GeoLocation::of(store), geometry.fine[0],
                                               geometry.fine[1]);
       // A condition below zero at every sample: its interpolant is below zero everywhere.
       for (const auto& c : plan.geographic) {

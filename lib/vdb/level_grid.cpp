@@ -234,7 +234,7 @@ std::vector<SubVolumeGridSummary> write_subvolume_vdb(const Store& store,
         for (int a = 0; a < 2; ++a) {
           for (std::size_t c = box.lo[a]; c <= box.hi[a]; ++c) fine[a].push_back(layout.fine_index(level, a, c));
         }
-        geographic = geographic_conditions(*sv.geographic, *GeoLocation::of(m), fine[0], fine[1]);
+        geographic = geographic_conditions(*sv.geographic, *GeoLocation::of(store), fine[0], fine[1]);
       }
       if (skip) {
         ++summary.nodes_skipped;
