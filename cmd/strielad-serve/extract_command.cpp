@@ -36,9 +36,9 @@ struct ExtractArgs {
 // The transform of .vtp positions into --frame (none for the axis frame), heights placed
 // by --height-var or the store's choice. \error kInvalidArgument for --height-var in the
 // axis frame.
-std::optional<FrameTransform> output_transform(const ExtractArgs& args,
-                                               const format::Manifest& manifest,
+std::optional<FrameTransform> output_transform(const ExtractArgs& args, const Store& store,
                                                OutputFrame frame) {
+  const format::Manifest& manifest = store.manifest();
   if (args.height_var && frame == OutputFrame::kAxis) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "--height-var {}: the axis frame keeps the vertical axis as it is; give "
@@ -47,7 +47,10 @@ std::optional<FrameTransform> output_transform(const ExtractArgs& args,
   }
   std::optional<FrameTransform> transform;
   if (frame != OutputFrame::kAxis) {
-    transform.emplace(manifest, frame, choose_vertical_placement(manifest, args.height_var));
+    const bool curvilinear = manifest.geometry && manifest.geometry->horizontal.kind ==
+                                                      format::HorizontalGeometry::Kind::kCurvilinear;
+    transform.emplace(manifest, frame, choose_vertical_placement(manifest, args.height_var),
+                      curvilinear ? store.horizontal_coordinates() : nullptr);
     spdlog::info("frame {}: heights from the {}", output_frame_name(frame),
                  transform->vertical().description);
   }
@@ -178,7 +181,7 @@ int run_extract(const ExtractArgs& args) {
   const auto store = Store::open(args.store);
   const format::Manifest& manifest = store->manifest();
   const OutputFrame frame = parse_output_frame(args.frame);
-  const std::optional<FrameTransform> transform = output_transform(args, manifest, frame);
+  const std::optional<FrameTransform> transform = output_transform(args, *store, frame);
   const ResolvedScene resolved = scene_to_extract(args, manifest, transform);
   if (args.output.ends_with(".vdb")) return write_vdb_output(args, *store, resolved, frame);
 

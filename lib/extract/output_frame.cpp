@@ -164,16 +164,12 @@ namespace {
 VerticalPlacement geometry_placement(const format::Manifest& m) {
   using format::VerticalGeometry;
   const format::GridGeometry& g = *m.geometry;
-  if (g.horizontal.kind == format::HorizontalGeometry::Kind::kCurvilinear) {
-    throw make_error(ErrorCode::kUnsupported,
-                     "the store's grid is curvilinear ({} / {}): this build places only grids "
-                     "on longitude/latitude or projection axes",
-                     g.horizontal.lon_variable, g.horizontal.lat_variable);
-  }
   VerticalPlacement v;
   v.kind = VerticalPlacement::Kind::kGeometry;
   v.pressure = g.vertical.quantity == VerticalGeometry::Quantity::kPressure;
   // orientation = sign d(east, north, up) / d(i, j, k) = horizontal sign x sign dh/dk.
+  // (A curvilinear grid's index axes count as east and north here; FrameTransform
+  // corrects the sign by its coordinates.)
   const int vertical_per_k = g.orientation * geo::horizontal_orientation(m.x, m.y, m.grid_mapping);
   v.vertical_sign = m.z.descending() ? -vertical_per_k : vertical_per_k;
   const std::string what = v.pressure ? "pressure" : "height";
@@ -275,13 +271,32 @@ VerticalPlacement choose_vertical_placement(const format::Manifest& m,
 }
 
 FrameTransform::FrameTransform(const format::Manifest& manifest, OutputFrame frame,
-                               VerticalPlacement vertical)
+                               VerticalPlacement vertical,
+                               std::shared_ptr<const format::HorizontalCoordinates> coordinates)
     : frame_(frame),
       vertical_(std::move(vertical)),
       manifest_(&manifest),
       projection_(mapped_axes(manifest) ? manifest.grid_mapping->proj : std::string()) {
   geographic_ = geographic_axes(manifest) || mapped_axes(manifest);
   if (frame_ == OutputFrame::kAxis) return;
+  const format::GridGeometry* g = manifest.geometry ? &*manifest.geometry : nullptr;
+  if (g != nullptr && g->horizontal.kind == format::HorizontalGeometry::Kind::kCurvilinear) {
+    if (coordinates == nullptr || !coordinates->has_coordinates()) {
+      throw make_error(ErrorCode::kUnsupported,
+                       "output frame '{}' of a curvilinear store ({} / {}) needs the "
+                       "coordinates of its GEOMETRY file",
+                       output_frame_name(frame_), g->horizontal.lon_variable,
+                       g->horizontal.lat_variable);
+    }
+    curvilinear_.emplace(std::move(coordinates));
+    geographic_ = true;
+    const auto c = curvilinear_->centre();
+    lon0_ = c[0];
+    lat0_ = c[1];
+    if (vertical_.kind == VerticalPlacement::Kind::kGeometry) {
+      vertical_.vertical_sign *= curvilinear_->orientation();
+    }
+  }
   if (!geographic_) {
     const bool metres = metres_per_length_unit(manifest.x.units) && metres_per_length_unit(manifest.y.units);
     if (frame_ != OutputFrame::kLocalMetric || !metres) {
@@ -293,7 +308,9 @@ FrameTransform::FrameTransform(const format::Manifest& manifest, OutputFrame fra
                        metres ? "Cartesian coordinates" : "not longitude and latitude");
     }
   }
-  if (geographic_axes(manifest)) {
+  if (curvilinear_) {
+    // centred above
+  } else if (geographic_axes(manifest)) {
     lon0_ = midpoint(manifest.x);
     lat0_ = midpoint(manifest.y);
   } else if (mapped_axes(manifest)) {
@@ -322,7 +339,11 @@ FrameTransform::FrameTransform(const format::Manifest& manifest, OutputFrame fra
 std::array<double, 3> FrameTransform::lon_lat_height(const std::array<double, 3>& p,
                                                      double height) const {
   double lon = p[0], lat = p[1];
-  if (!projection_.identity()) {
+  if (curvilinear_) {
+    const auto g = curvilinear_->at(p[0], p[1]);
+    lon = lon0_ + std::remainder(g[0] - lon0_, 360.0);
+    lat = g[1];
+  } else if (!projection_.identity()) {
     const auto g = projection_.to_geographic(p[0], p[1]);
     lon = lon0_ + std::remainder(g[0] - lon0_, 360.0);
     lat = g[1];
@@ -381,7 +402,11 @@ FrameTransform::MappedPoint FrameTransform::map_point(const std::array<double, 3
   Vec3 jx{1, 0, 0}, jy{0, 1, 0}, jz{0, 0, 0};
   if (geographic_) {
     llh = lon_lat_height(q, hv);
-    if (!projection_.identity()) {
+    if (curvilinear_) {
+      const auto j = curvilinear_->jacobian(q[0], q[1]);
+      jx = {j[0], j[2], 0};
+      jy = {j[1], j[3], 0};
+    } else if (!projection_.identity()) {
       const auto j = projection_.jacobian(q[0], q[1], jacobian_step_);
       jx = {j[0], j[2], 0};
       jy = {j[1], j[3], 0};
@@ -452,7 +477,8 @@ void FrameTransform::apply(Mesh& mesh) const {
 bool FrameTransform::affine() const {
   if (frame_ == OutputFrame::kAxis) return true;
   if (frame_ == OutputFrame::kEcef) return false;
-  return projection_.identity() && vertical_.kind == VerticalPlacement::Kind::kHeightAxis;
+  return !curvilinear_ && projection_.identity() &&
+         vertical_.kind == VerticalPlacement::Kind::kHeightAxis;
 }
 
 bool FrameTransform::placed_by_attribute() const {

@@ -2,7 +2,8 @@
 // Mesh output frames beyond the dataset's axis coordinates (formats/scene.md, "Output
 // frames"). Every frame but `axis` places a vertex by its true position: longitude and
 // latitude from the grid's axes (through the grid mapping's PROJ pipeline on a
-// projected or rotated-pole grid: geo/grid_projection.h) and a height in metres from the
+// projected or rotated-pole grid: geo/grid_projection.h; on a curvilinear grid from its
+// columns' stored coordinates, bilinear between them) and a height in metres from the
 // vertical placement below.
 // - kLonLat: true longitude and latitude in degrees, height in metres. On a mapped grid
 //   longitudes are continuous about the domain's centre (they tear only at the meridian
@@ -18,11 +19,13 @@
 // and renormalized; triangle orientation is kept outward.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "extract/curvilinear_lonlat.h"
 #include "extract/mesh.h"
 #include "format/manifest.h"
 #include "geo/grid_projection.h"
@@ -76,10 +79,14 @@ VerticalPlacement choose_vertical_placement(const format::Manifest& m,
 // threads (it holds a PROJ object): make one per thread.
 class FrameTransform {
  public:
+  // A curvilinear store (index axes) is placed by its GEOMETRY coordinates
+  // (Store::horizontal_coordinates), bilinear between columns (extract/curvilinear_lonlat.h).
   // \error kUnsupported when the frame needs a place on the Earth the store's grid does
   // not have (a Cartesian grid without a grid mapping: only `axis`, and `metric` when its
-  // axes are metres, work), naming the axes.
-  FrameTransform(const format::Manifest& manifest, OutputFrame frame, VerticalPlacement vertical);
+  // axes are metres, work), naming the axes; for a curvilinear store without
+  // `coordinates`, naming GEOMETRY.
+  FrameTransform(const format::Manifest& manifest, OutputFrame frame, VerticalPlacement vertical,
+                 std::shared_ptr<const format::HorizontalCoordinates> coordinates = nullptr);
 
   OutputFrame frame() const { return frame_; }
   // Whether the map from axis coordinates is affine (the axis frame; lonlat and metric of
@@ -115,6 +122,7 @@ class FrameTransform {
   VerticalPlacement vertical_;
   const format::Manifest* manifest_;
   geo::GridProjection projection_;
+  std::optional<CurvilinearLonLat> curvilinear_;  // a curvilinear grid's columns
   bool geographic_ = false;  // x, y are longitude and latitude (directly or by a mapping)
   double lon0_ = 0, lat0_ = 0;  // the domain's centre
   double z_unit_ = 1;           // axis units to metres or pascals
