@@ -158,8 +158,10 @@ TEST(TerrainFollowingPlacementTest, WhatCannotBePlacedIsRefused) {
   m.geometry->horizontal.kind = format::HorizontalGeometry::Kind::kCurvilinear;
   m.geometry->horizontal.lon_variable = "XLONG";
   m.geometry->horizontal.lat_variable = "XLAT";
-  testing::expect_error([&] { choose_vertical_placement(m); }, ErrorCode::kUnsupported,
-                        {"curvilinear", "XLONG"});
+  // A curvilinear grid is placed by its GEOMETRY coordinates: none given, none placed.
+  testing::expect_error(
+      [&] { FrameTransform(m, OutputFrame::kLonLat, choose_vertical_placement(m)); },
+      ErrorCode::kUnsupported, {"curvilinear", "XLONG", "GEOMETRY"});
 }
 
 }  // namespace
