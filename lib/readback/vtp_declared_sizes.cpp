@@ -96,6 +96,10 @@ struct CompressedStart {
 struct Section {
   double points = 0, verts = 0, lines = 0, strips = 0, polys = 0;
   double tuples = 0;
+  // Inside FieldData, PointData or CellData, whose every child VTK makes an array of
+  // (VTK 9.1 dereferences the null array it makes for a FieldData child without a known
+  // type, whatever the child's name).
+  bool children_are_arrays = false;
 };
 
 // Checks one file's declared sizes against what its bytes can hold, on the element tree
@@ -139,7 +143,11 @@ class DeclaredSizeCheck {
   // Checks `element` and everything nested in it; `section` is what its parent declared.
   void walk(vtkXMLDataElement* element, Section section) const {
     const std::string_view name = element->GetName() != nullptr ? element->GetName() : "";
-    if (name == "Piece") {
+    const bool array = section.children_are_arrays || name == "DataArray" || name == "Array";
+    section.children_are_arrays = name == "FieldData" || name == "PointData" || name == "CellData";
+    if (array) {
+      check_array(element, name, section.tuples);
+    } else if (name == "Piece") {
       section.points = count(element, "NumberOfPoints", 0);
       section.verts = count(element, "NumberOfVerts", 0);
       section.lines = count(element, "NumberOfLines", 0);
@@ -162,8 +170,6 @@ class DeclaredSizeCheck {
                                           : section.polys;
     } else if (name == "FieldData") {
       section.tuples = 0;
-    } else if (name == "DataArray" || name == "Array") {
-      check_array(element, name, section.tuples);
     }
     for (int i = 0; i < element->GetNumberOfNestedElements(); ++i) {
       walk(element->GetNestedElement(i), section);

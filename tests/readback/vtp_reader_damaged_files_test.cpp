@@ -66,6 +66,14 @@ TEST(VtpReaderDamagedFilesTest, FieldArrayTypeInsideAQuotedNameIsRefused) {
                {path.string(), "Array 'TimeValue type='String'' of type ''"});
 }
 
+TEST(VtpReaderDamagedFilesTest, FieldChildOfAnotherNameIsCheckedAsAnArray) {
+  // <Arrt yaype="String" ...> in FieldData: VTK makes an array of every child whatever
+  // its name, gets none without a type and dereferences it (SEGV).
+  const auto path = kRegressions / "field-child-not-named-array.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput,
+               {path.string(), "Arrt 'frame' of type ''"});
+}
+
 TEST(VtpReaderDamagedFilesTest, MoreFieldStringsThanTuplesStayWithinTheArray) {
   // Without its compressor the compressed bytes read as many NUL-terminated strings for
   // a one-tuple array: VTK 9.1 stored them all past the array's end (heap overflow). The
