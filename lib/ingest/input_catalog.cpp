@@ -334,6 +334,15 @@ InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
                        "copy`)",
                        kinds.a_grib, kinds.a_netcdf);
     }
+    // GRIB places its levels from its own keys (pv, HHL): the netCDF options would be
+    // silently ignored.
+    if (options.height_var || !options.formula_constants.empty()) {
+      throw make_error(ErrorCode::kInvalidArgument,
+                       "{}: {} applies to netCDF input only; GRIB levels are placed from the "
+                       "messages' own keys (hybrid pv with lnsp or sp, HHL for "
+                       "generalVerticalLayer); leave the option out",
+                       kinds.a_grib, options.height_var ? "--height-var" : "--formula-term");
+    }
     return grib_catalog(inputs, options);
   }
 

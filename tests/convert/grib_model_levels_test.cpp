@@ -177,6 +177,21 @@ TEST(GribModelLevelsTest, HybridLevelsConvertToAStoreWithAPressureField) {
   EXPECT_EQ(m.variables.size(), 1u);
 }
 
+TEST(GribModelLevelsTest, NetcdfLevelOptionsAreRefusedRatherThanIgnored) {
+  const testing::TempDir dir;
+  const auto path = dir / "ifs.grb2";
+  testing::write_grib_file(path, ifs_messages());
+  build::ConvertOptions with_height = options(path, dir / "store");
+  with_height.scan.height_var = "z";
+  testing::expect_error([&] { build::convert(with_height); }, ErrorCode::kInvalidArgument,
+                        {path.string(), "--height-var applies to netCDF input only"});
+  build::ConvertOptions with_term = options(path, dir / "store");
+  with_term.scan.formula_constants["P0"] = 100000;
+  testing::expect_error([&] { build::convert(with_term); }, ErrorCode::kInvalidArgument,
+                        {"--formula-term applies to netCDF input only"});
+  EXPECT_FALSE(std::filesystem::exists(dir / "store"));
+}
+
 TEST(GribModelLevelsTest, SurfacePressureSpServesAsWellAsLnsp) {
   const testing::TempDir dir;
   std::vector<GribFixtureMessage> m;
