@@ -18,6 +18,7 @@
 // and renormalized; triangle orientation is kept outward.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -105,6 +106,9 @@ class FrameTransform {
   };
   // Axis position q (and the height variable's value hv there) through the map.
   MappedPoint map_point(const std::array<double, 3>& q, double hv) const;
+  // map_point's position alone (the same bits), without the Jacobian.
+  std::array<double, 3> position(const std::array<double, 3>& q, double hv) const;
+  std::array<double, 3> cartesian_position(const std::array<double, 3>& q, double hv) const;
   const std::vector<float>* placing_heights(const Mesh& mesh) const;
   // Whether heights come from a mesh attribute; whether normals are the placed surface's.
   bool placed_by_attribute() const;
@@ -119,6 +123,10 @@ class FrameTransform {
   double lon0_ = 0, lat0_ = 0;  // the domain's centre
   double z_unit_ = 1;           // axis units to metres or pascals
   double jacobian_step_ = 0;    // central-difference step of the mapping (axis units)
+  // A Cartesian grid (neither geographic nor mapped): metres per axis unit, the centre.
+  std::array<double, 2> cartesian_scale_{1, 1}, cartesian_centre_{0, 0};
+  // apply's per-vertex sums of face normals (scratch, kept between meshes).
+  mutable std::vector<std::array<double, 3>> normal_sums_;
 };
 
 // One-shot form for tests and single meshes: the store's vertical placement by default.
