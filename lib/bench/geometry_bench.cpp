@@ -125,6 +125,7 @@ Extraction extract_once(const Store& store, const std::string& temperature, bool
   LevelExtractionOptions options;
   options.threads = 1;
   options.merge_face_squares = transform ? transform->affine() : merge_face_squares;
+  options.axis_normals = !transform || !transform->replaces_normals();
   const Stopwatch clock;
   LevelExtraction level = extract_level(store, resolved, options);
   if (transform) {

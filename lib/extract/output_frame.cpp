@@ -168,10 +168,12 @@ void placed_surface_normals(Mesh& mesh, bool reverse, std::vector<Vec3>& sum) {
   }
   const std::size_t count = std::min(sum.size(), mesh.normals.size());
   for (std::size_t v = 0; v < count; ++v) {
-    const double len = std::sqrt(dot(sum[v], sum[v]));
+    const Vec3& n = sum[v];
+    const double len = std::sqrt(dot(n, n));
     if (len > 0 && std::isfinite(len)) {
-      mesh.normals[v] = {static_cast<float>(sum[v][0] / len), static_cast<float>(sum[v][1] / len),
-                         static_cast<float>(sum[v][2] / len)};
+      const double inv = 1.0 / len;
+      mesh.normals[v] = {static_cast<float>(n[0] * inv), static_cast<float>(n[1] * inv),
+                         static_cast<float>(n[2] * inv)};
     }
   }
 }
@@ -370,18 +372,20 @@ std::array<double, 3> FrameTransform::lon_lat_height(const std::array<double, 3>
     lon = lon0_ + std::remainder(g[0] - lon0_, 360.0);
     lat = g[1];
   }
-  double h = 0;
+  return {lon, lat, height_m(p[2], height)};
+}
+
+double FrameTransform::height_m(double z, double height) const {
   switch (vertical_.kind) {
-    case VerticalPlacement::Kind::kHeightAxis: h = p[2] * z_unit_; break;
-    case VerticalPlacement::Kind::kStandardAtmosphere: h = geo::standard_height_m(p[2] * z_unit_); break;
-    case VerticalPlacement::Kind::kHeightVariable: h = height * vertical_.metres_per_unit; break;
+    case VerticalPlacement::Kind::kHeightAxis: return z * z_unit_;
+    case VerticalPlacement::Kind::kStandardAtmosphere: return geo::standard_height_m(z * z_unit_);
+    case VerticalPlacement::Kind::kHeightVariable: return height * vertical_.metres_per_unit;
     case VerticalPlacement::Kind::kGeometry: {
-      const double value = vertical_.levels.empty() ? height : level_value(p[2]);
-      h = vertical_.pressure ? geo::standard_height_m(value) : value;
-      break;
+      const double value = vertical_.levels.empty() ? height : level_value(z);
+      return vertical_.pressure ? geo::standard_height_m(value) : value;
     }
   }
-  return {lon, lat, h};
+  return 0;
 }
 
 // kGeometry per level: the level table at axis value z, linear between the levels.
@@ -499,6 +503,13 @@ void FrameTransform::apply(Mesh& mesh) const {
     if (orientation != 0 && placed_surface()) {
       ++v;
       break;
+    }
+  }
+  if (frame_ == OutputFrame::kLonLat && geographic_ && projection_.identity()) {
+    // Longitude and latitude stay as they are: only the height is new.
+    for (; v < mesh.positions.size(); ++v) {
+      auto& p = mesh.positions[v];
+      p[2] = height_m(p[2], height_at(v));
     }
   }
   for (; v < mesh.positions.size(); ++v) mesh.positions[v] = position(mesh.positions[v], height_at(v));

@@ -88,6 +88,9 @@ class FrameTransform {
   // merged face rectangles stay exact (ExtractRequest::merge_face_squares).
   bool affine() const;
   const VerticalPlacement& vertical() const { return vertical_; }
+  // Whether apply replaces every normal by the placed surface's own (heights from a
+  // field): the meshes need none in axis coordinates (ExtractRequest::axis_normals).
+  bool replaces_normals() const { return frame_ != OutputFrame::kAxis && placed_surface(); }
 
   // Positions and normals of `mesh`, from axis coordinates into the frame. With a height
   // variable or a geometry field the mesh must carry it as an attribute (by its name).
@@ -114,6 +117,9 @@ class FrameTransform {
   bool placed_by_attribute() const;
   bool placed_surface() const;
   double level_value(double z) const;  // kGeometry per level
+  // The height in metres at axis value z (a height variable's or geometry field's value
+  // `height` there, when the placement uses one).
+  double height_m(double z, double height) const;
 
   OutputFrame frame_;
   VerticalPlacement vertical_;

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "store/store.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <limits>
 
 #include "core/checksum.h"
 #include "core/direct_read_file.h"
@@ -316,32 +319,40 @@ std::span<const IndexEntry> Store::geometry_index(std::uint32_t step) const {
 namespace {
 
 // The index of the brick's first missing (NaN) sample, or its sample count when none is.
-template <class T>
+// T is float or double, U the unsigned integer of its size: a NaN's bits without the sign
+// exceed the infinity's.
+template <class T, class U>
 std::size_t first_nan(const std::byte* bytes, std::size_t count) {
+  static_assert(sizeof(T) == sizeof(U));
+  constexpr U kMagnitude = ~U(0) >> 1;
+  const U infinity = std::bit_cast<U>(std::numeric_limits<T>::infinity());
   std::size_t i = 0;
-  // Blocks without a branch per sample; the block with a NaN is searched again.
+  // Blocks by an integer maximum (no branch per sample); a block with a NaN is searched
+  // again sample by sample.
   constexpr std::size_t kBlock = 64;
   for (; i + kBlock <= count; i += kBlock) {
-    bool any = false;
+    U largest = 0;
     for (std::size_t j = 0; j < kBlock; ++j) {
-      T v;
-      std::memcpy(&v, bytes + (i + j) * sizeof(T), sizeof(T));
-      any |= v != v;
+      U bits;
+      std::memcpy(&bits, bytes + (i + j) * sizeof(T), sizeof(T));
+      bits &= kMagnitude;
+      largest = bits > largest ? bits : largest;
     }
-    if (any) break;
+    if (largest > infinity) break;
   }
   for (; i < count; ++i) {
-    T v;
-    std::memcpy(&v, bytes + i * sizeof(T), sizeof(T));
-    if (v != v) return i;
+    U bits;
+    std::memcpy(&bits, bytes + i * sizeof(T), sizeof(T));
+    if ((bits & kMagnitude) > infinity) return i;
   }
   return count;
 }
 
 std::size_t first_missing_sample(const Brick& b) {
   if (b.kind != BrickKind::kData) return std::isnan(b.sample(0)) ? 0 : b.sample_count();
-  return b.dtype == DType::kFloat32 ? first_nan<float>(b.bytes.data(), b.sample_count())
-                                    : first_nan<double>(b.bytes.data(), b.sample_count());
+  return b.dtype == DType::kFloat32
+             ? first_nan<float, std::uint32_t>(b.bytes.data(), b.sample_count())
+             : first_nan<double, std::uint64_t>(b.bytes.data(), b.sample_count());
 }
 
 }  // namespace
