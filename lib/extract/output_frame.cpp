@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <cctype>
 #include <cmath>
 #include <functional>
@@ -368,7 +370,7 @@ std::array<double, 3> FrameTransform::lon_lat_height(const std::array<double, 3>
                                                      double height) const {
   double lon = p[0], lat = p[1];
   if (!projection_.identity()) {
-    const auto g = projection_.to_geographic(p[0], p[1]);
+    const auto& g = column(p[0], p[1]).geographic;
     lon = lon0_ + std::remainder(g[0] - lon0_, 360.0);
     lat = g[1];
   }
@@ -421,6 +423,31 @@ const std::vector<float>* FrameTransform::placing_heights(const Mesh& mesh) cons
   return heights;
 }
 
+// Direct-mapped by the bits of (x, y): the vertices of a column share them.
+FrameTransform::Column& FrameTransform::column(double x, double y) const {
+  const auto bx = std::bit_cast<std::uint64_t>(x), by = std::bit_cast<std::uint64_t>(y);
+  if (columns_.empty()) columns_.resize(std::size_t{1} << kColumnBits);
+  const std::uint64_t hash = bx * 0x9E3779B97F4A7C15ull ^ (by * 0xC2B2AE3D27D4EB4Full + (by >> 29));
+  Column& c = columns_[hash >> (64 - kColumnBits)];
+  if (!c.used || c.x != bx || c.y != by) {
+    c.used = true;
+    c.x = bx;
+    c.y = by;
+    c.geographic = projection_.to_geographic(x, y);
+    c.has_jacobian = false;
+  }
+  return c;
+}
+
+const std::array<double, 4>& FrameTransform::column_jacobian(double x, double y) const {
+  Column& c = column(x, y);
+  if (!c.has_jacobian) {
+    c.jacobian = projection_.jacobian(x, y, jacobian_step_);
+    c.has_jacobian = true;
+  }
+  return c.jacobian;
+}
+
 std::array<double, 3> FrameTransform::cartesian_position(const std::array<double, 3>& q,
                                                          double hv) const {
   return {(q[0] - cartesian_centre_[0]) * cartesian_scale_[0],
@@ -441,7 +468,7 @@ FrameTransform::MappedPoint FrameTransform::map_point(const std::array<double, 3
   if (geographic_) {
     llh = lon_lat_height(q, hv);
     if (!projection_.identity()) {
-      const auto j = projection_.jacobian(q[0], q[1], jacobian_step_);
+      const auto& j = column_jacobian(q[0], q[1]);
       jx = {j[0], j[2], 0};
       jy = {j[1], j[3], 0};
     }

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -113,6 +114,17 @@ class FrameTransform {
   std::array<double, 3> position(const std::array<double, 3>& q, double hv) const;
   std::array<double, 3> cartesian_position(const std::array<double, 3>& q, double hv) const;
   const std::vector<float>* placing_heights(const Mesh& mesh) const;
+  // A mapped grid's geographic position and Jacobian at axis (x, y), computed once per
+  // column of vertices (the same bits of x and y) while the column stays in the cache.
+  struct Column {
+    std::uint64_t x = 0, y = 0;  // the bits of x and y
+    bool used = false, has_jacobian = false;
+    std::array<double, 2> geographic{};
+    std::array<double, 4> jacobian{};
+  };
+  static constexpr int kColumnBits = 12;
+  Column& column(double x, double y) const;
+  const std::array<double, 4>& column_jacobian(double x, double y) const;
   // Whether heights come from a mesh attribute; whether normals are the placed surface's.
   bool placed_by_attribute() const;
   bool placed_surface() const;
@@ -133,6 +145,7 @@ class FrameTransform {
   std::array<double, 2> cartesian_scale_{1, 1}, cartesian_centre_{0, 0};
   // apply's per-vertex sums of face normals (scratch, kept between meshes).
   mutable std::vector<std::array<double, 3>> normal_sums_;
+  mutable std::vector<Column> columns_;  // kColumnBits-bit direct-mapped cache
 };
 
 // One-shot form for tests and single meshes: the store's vertical placement by default.
