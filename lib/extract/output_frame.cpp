@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <cstdint>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <numbers>
 
