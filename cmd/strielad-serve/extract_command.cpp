@@ -190,6 +190,7 @@ int run_extract(const ExtractArgs& args) {
   options.level = args.level;
   options.threads = args.threads;
   options.merge_face_squares = !transform || transform->affine();
+  options.axis_normals = !transform || !transform->replaces_normals();
   LevelExtraction result = extract_with_progress(*store, resolved, options);
   const VtpSummary written = write_vtp_output(args, manifest, frame, transform, result);
   const LevelExtractionTotals& t = result.totals;

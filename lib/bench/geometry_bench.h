@@ -49,6 +49,8 @@ struct GeometryInputRuns {
   // Extraction of level 0 per round: axis frame with node-face squares merged (the axis
   // frame's default) and without (as frames that bend the lattice extract), and placed.
   std::vector<double> axis_seconds, unmerged_seconds, placed_seconds;
+  // The same runs' CPU seconds (user + system): steadier than wall time on a shared machine.
+  std::vector<double> unmerged_cpu_seconds, placed_cpu_seconds;
   std::uint64_t nodes = 0, triangles_axis = 0, triangles_unmerged = 0, triangles_placed = 0;
   std::uint64_t bricks_axis = 0, bricks_placed = 0;
 };

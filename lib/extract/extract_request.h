@@ -39,6 +39,11 @@ struct ExtractRequest {
   // (geocentric, or through a map projection), where a rectangle's long edges would
   // become chords far from the curved face.
   bool merge_face_squares = true;
+  // Unit normals in axis coordinates (a condition's gradient, a side's fixed normal);
+  // false for a caller that replaces every normal (an output frame placing vertices by
+  // a field: FrameTransform::replaces_normals()), which spares their cost: the mesh then
+  // carries +z for each.
+  bool axis_normals = true;
   std::vector<std::uint32_t> attribute_fields;  // indices into NodeSamples::fields
   std::vector<std::string> attribute_names;     // same length as attribute_fields
 };

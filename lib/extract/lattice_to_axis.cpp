@@ -291,20 +291,23 @@ void face_normals_where_no_gradient(NodeMeshScratch& scratch, Mesh& mesh) {
 
 bool lattice_mesh_to_axis(const NodeSamples& samples, const ConditionSet& set,
                           const std::vector<std::uint32_t>& attribute_fields, bool clipped,
-                          NodeMeshScratch& scratch, Mesh& mesh) {
+                          bool axis_normals, NodeMeshScratch& scratch, Mesh& mesh) {
   MeshBuilder& builder = scratch.builder;
   builder.drop_unused_vertices();
   const std::size_t nv = builder.points.size();
   copy_triangles(samples, set, builder, mesh);
   std::vector<const float*> attribute_data;
   for (std::uint32_t f : attribute_fields) attribute_data.push_back(samples.fields[f].data());
-  scratch.needs_fallback.assign(nv, 0);
   const bool may_round = inverse_spacings(samples, clipped, scratch);
-  const GroupNormals group_normal = group_normals(samples, set);
   const bool rounded_onto_sample = place_vertices(samples, may_round, scratch, mesh);
-  const bool any_fallback = gradient_normals(samples, group_normal, scratch, mesh);
+  if (axis_normals) {
+    scratch.needs_fallback.assign(nv, 0);
+    const GroupNormals group_normal = group_normals(samples, set);
+    if (gradient_normals(samples, group_normal, scratch, mesh)) face_normals_where_no_gradient(scratch, mesh);
+  } else {
+    mesh.normals.assign(nv, {0.0f, 0.0f, 1.0f});
+  }
   interpolate_attributes(samples, attribute_data, scratch, mesh);
-  if (any_fallback) face_normals_where_no_gradient(scratch, mesh);
   return rounded_onto_sample;
 }
 

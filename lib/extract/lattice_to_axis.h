@@ -19,11 +19,12 @@ namespace strielad {
 
 // Fills `mesh` (positions, normals, triangles, face kinds, attributes of
 // `attribute_fields`) from scratch.builder; `set` the node's conditions (groups 0..n-1,
-// node sides n..n+5). `clipped`: the general clipper made some of the vertices. Returns
+// node sides n..n+5). `clipped`: the general clipper made some of the vertices.
+// `axis_normals` false: every normal +z (ExtractRequest::axis_normals). Returns
 // whether a point strictly inside a cell rounded onto one of the cell's samples in axis
 // coordinates (then two lattice-distinct vertices may share a position).
 bool lattice_mesh_to_axis(const NodeSamples& samples, const ConditionSet& set,
                           const std::vector<std::uint32_t>& attribute_fields, bool clipped,
-                          NodeMeshScratch& scratch, Mesh& mesh);
+                          bool axis_normals, NodeMeshScratch& scratch, Mesh& mesh);
 
 }  // namespace strielad

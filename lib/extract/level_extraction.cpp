@@ -46,7 +46,8 @@ LevelExtraction extract_level(const Store& store, const ResolvedScene& scene,
                         for (std::size_t i = r.begin(); i != r.end(); ++i) {
                           out.nodes[i] = extract_node(store, &cache, scene, options.step,
                                                       static_cast<NodeId>(first + i), own, {},
-                                                      options.merge_face_squares);
+                                                      NodeMeshOptions{options.merge_face_squares,
+                                                                      options.axis_normals});
                           const std::uint64_t d = done.fetch_add(1) + 1;
                           if (options.progress) options.progress(d, count);
                         }

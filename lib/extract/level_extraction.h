@@ -21,6 +21,8 @@ struct LevelExtractionOptions {
   std::function<void(std::uint64_t done, std::uint64_t total)> progress;
   // As ExtractRequest::merge_face_squares: false for output frames that bend the lattice.
   bool merge_face_squares = true;
+  // As ExtractRequest::axis_normals: false when the output frame replaces every normal.
+  bool axis_normals = true;
 };
 
 struct LevelExtractionTotals {

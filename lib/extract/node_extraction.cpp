@@ -339,7 +339,7 @@ struct Attributes {
 
 // One sub-volume's request in the node, without its domain box (set per longitude turn).
 ExtractRequest subvolume_request(const ResolvedSubVolume& sv, const SubVolumePlan& plan,
-                                 const Attributes& attributes, bool merge_face_squares,
+                                 const Attributes& attributes, NodeMeshOptions mesh_options,
                                  NodeFields& fields) {
   ExtractRequest request;
   request.subvolume_id = sv.id;
@@ -348,7 +348,8 @@ ExtractRequest subvolume_request(const ResolvedSubVolume& sv, const SubVolumePla
   }
   request.attribute_fields = attributes.fields;
   request.attribute_names = attributes.names;
-  request.merge_face_squares = merge_face_squares;
+  request.merge_face_squares = mesh_options.merge_face_squares;
+  request.axis_normals = mesh_options.axis_normals;
   // A height range: conditions on the geometry's height at every sample.
   if (plan.geometry_height) {
     const std::uint32_t f = fields.field(*format::geometry_field_variable(fields.store.manifest()));
@@ -375,9 +376,9 @@ ExtractRequest subvolume_request(const ResolvedSubVolume& sv, const SubVolumePla
 // shifted back by that turn.
 void extract_subvolume(const Store& store, const ResolvedSubVolume& sv, const SubVolumePlan& plan,
                        const NodeGeometry& geometry, const Attributes& attributes,
-                       bool merge_face_squares, NodeFields& fields, NodeMeshScratch& scratch,
+                       NodeMeshOptions mesh_options, NodeFields& fields, NodeMeshScratch& scratch,
                        SubVolumeResult& r) {
-  ExtractRequest request = subvolume_request(sv, plan, attributes, merge_face_squares, fields);
+  ExtractRequest request = subvolume_request(sv, plan, attributes, mesh_options, fields);
   NodeSamples& ns = fields.ns;
   for (const int turn : plan.turns) {
     const double shift = kFullTurn * turn;
@@ -438,7 +439,7 @@ std::vector<std::uint32_t> node_brick_variables(const Store& store, const Resolv
 
 NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
                             std::uint32_t step, NodeId node, ExtractScratch& scratch,
-                            std::stop_token stop, bool merge_face_squares) {
+                            std::stop_token stop, NodeMeshOptions mesh_options) {
   check_node(store, node);
   throw_if_stopped(stop, store, node);
   NodeExtraction out;
@@ -468,7 +469,7 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
   for (const SubVolumePlan& plan : plans) {
     throw_if_stopped(stop, store, node);
     extract_subvolume(store, scene.subvolumes[plan.subvolume], plan, geometry, attributes,
-                      merge_face_squares, fields, scratch.mesh, out.results[plan.subvolume]);
+                      mesh_options, fields, scratch.mesh, out.results[plan.subvolume]);
   }
   for (const std::size_t i : slice_plans) {
     throw_if_stopped(stop, store, node);
@@ -479,9 +480,9 @@ NodeExtraction extract_node(const Store& store, BrickCache* cache, const Resolve
 
 NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
                             std::uint32_t step, NodeId node, std::stop_token stop,
-                            bool merge_face_squares) {
+                            NodeMeshOptions mesh_options) {
   return extract_node(store, cache, scene, step, node, this_thread_scratch(), std::move(stop),
-                      merge_face_squares);
+                      mesh_options);
 }
 
 }  // namespace strielad

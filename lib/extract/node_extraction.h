@@ -58,6 +58,12 @@ struct SliceResult {
   friend bool operator==(const SliceResult&, const SliceResult&) = default;
 };
 
+// How sub-volume meshes are built, for output frames (ExtractRequest's fields).
+struct NodeMeshOptions {
+  bool merge_face_squares = true;  // false for frames that are not affine on the grid
+  bool axis_normals = true;        // false where the frame replaces every normal
+};
+
 struct NodeExtraction {
   NodeId node = 0;
   std::vector<SubVolumeResult> results;  // one per scene sub-volume, in scene order
@@ -73,16 +79,16 @@ struct NodeExtraction {
 // every sub-volume and slice: once stop is requested the call throws kCancelled. Slices
 // (lib/extract/slice_extraction.h) share the node's bricks with the sub-volumes: each
 // needed brick is fetched once.
-// `merge_face_squares`: as ExtractRequest::merge_face_squares (false for output frames
-// that are not affine on the grid). Works in `scratch` (one extraction at a time).
+// `mesh_options`: as the ExtractRequest fields of the same names. Works in `scratch` (one
+// extraction at a time).
 NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
                             std::uint32_t step, NodeId node, ExtractScratch& scratch,
-                            std::stop_token stop = {}, bool merge_face_squares = true);
+                            std::stop_token stop = {}, NodeMeshOptions mesh_options = {});
 
 // The same in this thread's scratch (this_thread_scratch()).
 NodeExtraction extract_node(const Store& store, BrickCache* cache, const ResolvedScene& scene,
                             std::uint32_t step, NodeId node, std::stop_token stop = {},
-                            bool merge_face_squares = true);
+                            NodeMeshOptions mesh_options = {});
 
 // The variables whose bricks extract_node would read for this node, decided from the
 // index alone (sorted, distinct; empty when every sub-volume is skipped). Prefetching

@@ -74,7 +74,8 @@ Mesh extract_node_mesh(const NodeSamples& samples, const ExtractRequest& request
 
   const bool clipped = local.clipped_tets > 0;
   const bool rounded_onto_sample =
-      lattice_mesh_to_axis(samples, set, request.attribute_fields, clipped, scratch, mesh);
+      lattice_mesh_to_axis(samples, set, request.attribute_fields, clipped, request.axis_normals,
+                           scratch, mesh);
   remove_degenerate_triangles(request, scratch.corner_crossings, rounded_onto_sample, clipped, mesh);
   if (stats) *stats = local;
   return mesh;

@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <numbers>
 
@@ -65,6 +67,45 @@ struct FramePoint {
   Vec3 p, d_lon, d_lat, d_h;
 };
 
+// The geocentric map's terms at one longitude and latitude (all but the height).
+struct EcefTerms {
+  double sl, cl, so, co;  // sin and cos of the latitude and of the reduced longitude
+  double w, n;            // sqrt(1 - e2 sin^2 lat); the prime vertical radius a / w
+};
+
+EcefTerms ecef_terms(double lon, double lat) {
+  // The longitude reduced exactly to [-180, 180] first, so that a meridian and the same
+  // meridian a turn on (a periodic grid's seam) give the same bits.
+  const double lr = std::remainder(lon, 360.0);
+  EcefTerms e;
+  e.sl = std::sin(lat * kDeg);
+  e.cl = std::cos(lat * kDeg);
+  e.so = std::sin(lr * kDeg);
+  e.co = std::cos(lr * kDeg);
+  e.w = std::sqrt(1.0 - kWgs84E2 * e.sl * e.sl);
+  e.n = kWgs84A / e.w;
+  return e;
+}
+
+Vec3 ecef_position(const EcefTerms& e, double h) {
+  return {(e.n + h) * e.cl * e.co, (e.n + h) * e.cl * e.so, (e.n * (1.0 - kWgs84E2) + h) * e.sl};
+}
+
+// Metres per degree of longitude and of latitude on the local metric plane.
+std::array<double, 2> metric_scales(double lat0) {
+  return {kMeanRadius * std::cos(lat0 * kDeg) * kDeg, kMeanRadius * kDeg};
+}
+
+// The frame position of (lon, lat, h) alone: the same bits as frame_point's p.
+Vec3 frame_position(OutputFrame frame, double lon, double lat, double h, double lon0, double lat0) {
+  if (frame == OutputFrame::kLonLat) return {lon, lat, h};
+  if (frame == OutputFrame::kLocalMetric) {
+    const auto [sx, sy] = metric_scales(lat0);
+    return {sx * (lon - lon0), sy * (lat - lat0), h};
+  }
+  return ecef_position(ecef_terms(lon, lat), h);
+}
+
 FramePoint frame_point(OutputFrame frame, double lon, double lat, double h, double lon0,
                        double lat0) {
   FramePoint f;
@@ -76,23 +117,18 @@ FramePoint frame_point(OutputFrame frame, double lon, double lat, double h, doub
     return f;
   }
   if (frame == OutputFrame::kLocalMetric) {
-    const double sx = kMeanRadius * std::cos(lat0 * kDeg) * kDeg, sy = kMeanRadius * kDeg;
+    const auto [sx, sy] = metric_scales(lat0);
     f.p = {sx * (lon - lon0), sy * (lat - lat0), h};
     f.d_lon = {sx, 0, 0};
     f.d_lat = {0, sy, 0};
     f.d_h = {0, 0, 1};
     return f;
   }
-  // Geocentric: the longitude reduced exactly to [-180, 180] first, so that a meridian
-  // and the same meridian a turn on (a periodic grid's seam) give the same bits.
-  const double lr = std::remainder(lon, 360.0);
-  const double sl = std::sin(lat * kDeg), cl = std::cos(lat * kDeg);
-  const double so = std::sin(lr * kDeg), co = std::cos(lr * kDeg);
-  const double w = std::sqrt(1.0 - kWgs84E2 * sl * sl);
-  const double n = kWgs84A / w;
+  const EcefTerms e = ecef_terms(lon, lat);
+  const double sl = e.sl, cl = e.cl, so = e.so, co = e.co, n = e.n, w = e.w;
   // Meridional radius of curvature: dN/dlat folded in.
   const double m_radius = kWgs84A * (1.0 - kWgs84E2) / (w * w * w);
-  f.p = {(n + h) * cl * co, (n + h) * cl * so, (n * (1.0 - kWgs84E2) + h) * sl};
+  f.p = ecef_position(e, h);
   f.d_lon = {-(n + h) * cl * so * kDeg, (n + h) * cl * co * kDeg, 0};
   f.d_lat = {-(m_radius + h) * sl * co * kDeg, -(m_radius + h) * sl * so * kDeg,
              (m_radius + h) * cl * kDeg};
@@ -119,20 +155,27 @@ void transform_normal(const Vec3& cx, const Vec3& cy, const Vec3& cz, double det
   }
 }
 
-// The mesh's normals as its own area-weighted face normals (where those have a length).
-void placed_surface_normals(Mesh& mesh) {
-  std::vector<Vec3> sum(mesh.positions.size(), Vec3{0, 0, 0});
-  for (const auto& t : mesh.triangles) {
+// The mesh's normals as its own area-weighted face normals (where those have a length),
+// every triangle's winding first reversed when `reverse` (in the same pass); `sum` is
+// scratch, one entry per vertex.
+void placed_surface_normals(Mesh& mesh, bool reverse, std::vector<Vec3>& sum) {
+  sum.assign(mesh.positions.size(), Vec3{0, 0, 0});
+  for (auto& t : mesh.triangles) {
+    if (reverse) std::swap(t[1], t[2]);
     const Vec3 n = area_normal(mesh, t);
     for (std::uint32_t i : t) {
-      for (int a = 0; a < 3; ++a) sum[i][a] += n[a];
+      Vec3& s = sum[i];
+      for (int a = 0; a < 3; ++a) s[a] += n[a];
     }
   }
-  for (std::size_t v = 0; v < sum.size() && v < mesh.normals.size(); ++v) {
-    const double len = std::sqrt(dot(sum[v], sum[v]));
+  const std::size_t count = std::min(sum.size(), mesh.normals.size());
+  for (std::size_t v = 0; v < count; ++v) {
+    const Vec3& n = sum[v];
+    const double len = std::sqrt(dot(n, n));
     if (len > 0 && std::isfinite(len)) {
-      mesh.normals[v] = {static_cast<float>(sum[v][0] / len), static_cast<float>(sum[v][1] / len),
-                         static_cast<float>(sum[v][2] / len)};
+      const double inv = 1.0 / len;
+      mesh.normals[v] = {static_cast<float>(n[0] * inv), static_cast<float>(n[1] * inv),
+                         static_cast<float>(n[2] * inv)};
     }
   }
 }
@@ -298,7 +341,9 @@ FrameTransform::FrameTransform(const format::Manifest& manifest, OutputFrame fra
     }
   }
   if (!geographic_) {
-    const bool metres = metres_per_length_unit(manifest.x.units) && metres_per_length_unit(manifest.y.units);
+    const auto sx = metres_per_length_unit(manifest.x.units);
+    const auto sy = metres_per_length_unit(manifest.y.units);
+    const bool metres = sx && sy;
     if (frame_ != OutputFrame::kLocalMetric || !metres) {
       throw make_error(ErrorCode::kUnsupported,
                        "output frame '{}' needs the grid's place on the Earth, but axes '{}' and "
@@ -307,6 +352,8 @@ FrameTransform::FrameTransform(const format::Manifest& manifest, OutputFrame fra
                        manifest.x.units, manifest.y.units,
                        metres ? "Cartesian coordinates" : "not longitude and latitude");
     }
+    cartesian_scale_ = {*sx, *sy};
+    cartesian_centre_ = {midpoint(manifest.x), midpoint(manifest.y)};
   }
   if (curvilinear_) {
     // centred above
@@ -344,22 +391,24 @@ std::array<double, 3> FrameTransform::lon_lat_height(const std::array<double, 3>
     lon = lon0_ + std::remainder(g[0] - lon0_, 360.0);
     lat = g[1];
   } else if (!projection_.identity()) {
-    const auto g = projection_.to_geographic(p[0], p[1]);
+    const auto& g = column(p[0], p[1]).geographic;
     lon = lon0_ + std::remainder(g[0] - lon0_, 360.0);
     lat = g[1];
   }
-  double h = 0;
+  return {lon, lat, height_m(p[2], height)};
+}
+
+double FrameTransform::height_m(double z, double height) const {
   switch (vertical_.kind) {
-    case VerticalPlacement::Kind::kHeightAxis: h = p[2] * z_unit_; break;
-    case VerticalPlacement::Kind::kStandardAtmosphere: h = geo::standard_height_m(p[2] * z_unit_); break;
-    case VerticalPlacement::Kind::kHeightVariable: h = height * vertical_.metres_per_unit; break;
+    case VerticalPlacement::Kind::kHeightAxis: return z * z_unit_;
+    case VerticalPlacement::Kind::kStandardAtmosphere: return geo::standard_height_m(z * z_unit_);
+    case VerticalPlacement::Kind::kHeightVariable: return height * vertical_.metres_per_unit;
     case VerticalPlacement::Kind::kGeometry: {
-      const double value = vertical_.levels.empty() ? height : level_value(p[2]);
-      h = vertical_.pressure ? geo::standard_height_m(value) : value;
-      break;
+      const double value = vertical_.levels.empty() ? height : level_value(z);
+      return vertical_.pressure ? geo::standard_height_m(value) : value;
     }
   }
-  return {lon, lat, h};
+  return 0;
 }
 
 // kGeometry per level: the level table at axis value z, linear between the levels.
@@ -395,6 +444,43 @@ const std::vector<float>* FrameTransform::placing_heights(const Mesh& mesh) cons
   return heights;
 }
 
+// Direct-mapped by the bits of (x, y): the vertices of a column share them.
+FrameTransform::Column& FrameTransform::column(double x, double y) const {
+  const auto bx = std::bit_cast<std::uint64_t>(x), by = std::bit_cast<std::uint64_t>(y);
+  if (columns_.empty()) columns_.resize(std::size_t{1} << kColumnBits);
+  const std::uint64_t hash = bx * 0x9E3779B97F4A7C15ull ^ (by * 0xC2B2AE3D27D4EB4Full + (by >> 29));
+  Column& c = columns_[hash >> (64 - kColumnBits)];
+  if (!c.used || c.x != bx || c.y != by) {
+    c.used = true;
+    c.x = bx;
+    c.y = by;
+    c.geographic = projection_.to_geographic(x, y);
+    c.has_jacobian = false;
+  }
+  return c;
+}
+
+const std::array<double, 4>& FrameTransform::column_jacobian(double x, double y) const {
+  Column& c = column(x, y);
+  if (!c.has_jacobian) {
+    c.jacobian = projection_.jacobian(x, y, jacobian_step_);
+    c.has_jacobian = true;
+  }
+  return c.jacobian;
+}
+
+std::array<double, 3> FrameTransform::cartesian_position(const std::array<double, 3>& q,
+                                                         double hv) const {
+  return {(q[0] - cartesian_centre_[0]) * cartesian_scale_[0],
+          (q[1] - cartesian_centre_[1]) * cartesian_scale_[1], lon_lat_height(q, hv)[2]};
+}
+
+std::array<double, 3> FrameTransform::position(const std::array<double, 3>& q, double hv) const {
+  if (!geographic_) return cartesian_position(q, hv);
+  const std::array<double, 3> llh = lon_lat_height(q, hv);
+  return frame_position(frame_, llh[0], llh[1], llh[2], lon0_, lat0_);
+}
+
 FrameTransform::MappedPoint FrameTransform::map_point(const std::array<double, 3>& q, double hv) const {
   // Axis to (lon, lat, h) or, on a Cartesian grid, to metres: position and Jacobian
   // columns (d/dx, d/dy, d/dz).
@@ -407,17 +493,14 @@ FrameTransform::MappedPoint FrameTransform::map_point(const std::array<double, 3
       jx = {j[0], j[2], 0};
       jy = {j[1], j[3], 0};
     } else if (!projection_.identity()) {
-      const auto j = projection_.jacobian(q[0], q[1], jacobian_step_);
+      const auto& j = column_jacobian(q[0], q[1]);
       jx = {j[0], j[2], 0};
       jy = {j[1], j[3], 0};
     }
   } else {  // Cartesian metres about the domain's centre
-    const double sx = *metres_per_length_unit(manifest_->x.units);
-    const double sy = *metres_per_length_unit(manifest_->y.units);
-    llh = {(q[0] - midpoint(manifest_->x)) * sx, (q[1] - midpoint(manifest_->y)) * sy,
-           lon_lat_height(q, hv)[2]};
-    jx = {sx, 0, 0};
-    jy = {0, sy, 0};
+    llh = cartesian_position(q, hv);
+    jx = {cartesian_scale_[0], 0, 0};
+    jy = {0, cartesian_scale_[1], 0};
   }
   if (vertical_.kind == VerticalPlacement::Kind::kHeightAxis) {
     jz = {0, 0, z_unit_};
@@ -453,24 +536,42 @@ FrameTransform::MappedPoint FrameTransform::map_point(const std::array<double, 3
 void FrameTransform::apply(Mesh& mesh) const {
   if (frame_ == OutputFrame::kAxis) return;
   const std::vector<float>* heights = placing_heights(mesh);
+  auto height_at = [&](std::size_t v) {
+    return heights != nullptr ? static_cast<double>((*heights)[v]) : 0.0;
+  };
+  const bool surface = placed_surface() && !mesh.normals.empty();
   int orientation = 0;  // sign of the map's Jacobian determinant
-  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    const double hv = heights != nullptr ? static_cast<double>((*heights)[v]) : 0.0;
-    const MappedPoint m = map_point(mesh.positions[v], hv);
+  std::size_t v = 0;
+  for (; v < mesh.positions.size(); ++v) {
+    const MappedPoint m = map_point(mesh.positions[v], height_at(v));
     const double det = dot(m.cx, cross(m.cy, m.cz));
     if (orientation == 0 && det != 0 && std::isfinite(det)) orientation = det < 0 ? -1 : 1;
     if (v < mesh.normals.size() && !placed_surface()) {
       transform_normal(m.cx, m.cy, m.cz, det, mesh.normals[v]);
     }
     mesh.positions[v] = m.p;
+    // Normals from the placed surface: once the orientation is known the Jacobian has
+    // no further use, and the rest of the vertices need only their positions.
+    if (orientation != 0 && placed_surface()) {
+      ++v;
+      break;
+    }
   }
-  if (orientation < 0) {  // the map reverses orientation (a pressure axis, say)
-    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+  if (frame_ == OutputFrame::kLonLat && geographic_ && projection_.identity() && !curvilinear_) {
+    // Longitude and latitude stay as they are: only the height is new.
+    for (; v < mesh.positions.size(); ++v) {
+      auto& p = mesh.positions[v];
+      p[2] = height_m(p[2], height_at(v));
+    }
   }
-  if (placed_surface() && !mesh.normals.empty()) {
+  for (; v < mesh.positions.size(); ++v) mesh.positions[v] = position(mesh.positions[v], height_at(v));
+  // A negative orientation: the map reverses the triangles' winding (a pressure axis, say).
+  if (surface) {
     // Heights from a field: the map's vertical derivatives are not known per vertex, so
     // the normals are the placed surface's own.
-    placed_surface_normals(mesh);
+    placed_surface_normals(mesh, orientation < 0, normal_sums_);
+  } else if (orientation < 0) {
+    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
   }
 }
 

@@ -19,6 +19,8 @@
 // and renormalized; triangle orientation is kept outward.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -94,6 +96,9 @@ class FrameTransform {
   // merged face rectangles stay exact (ExtractRequest::merge_face_squares).
   bool affine() const;
   const VerticalPlacement& vertical() const { return vertical_; }
+  // Whether apply replaces every normal by the placed surface's own (heights from a
+  // field): the meshes need none in axis coordinates (ExtractRequest::axis_normals).
+  bool replaces_normals() const { return frame_ != OutputFrame::kAxis && placed_surface(); }
 
   // Positions and normals of `mesh`, from axis coordinates into the frame. With a height
   // variable or a geometry field the mesh must carry it as an attribute (by its name).
@@ -112,11 +117,28 @@ class FrameTransform {
   };
   // Axis position q (and the height variable's value hv there) through the map.
   MappedPoint map_point(const std::array<double, 3>& q, double hv) const;
+  // map_point's position alone (the same bits), without the Jacobian.
+  std::array<double, 3> position(const std::array<double, 3>& q, double hv) const;
+  std::array<double, 3> cartesian_position(const std::array<double, 3>& q, double hv) const;
   const std::vector<float>* placing_heights(const Mesh& mesh) const;
+  // A mapped grid's geographic position and Jacobian at axis (x, y), computed once per
+  // column of vertices (the same bits of x and y) while the column stays in the cache.
+  struct Column {
+    std::uint64_t x = 0, y = 0;  // the bits of x and y
+    bool used = false, has_jacobian = false;
+    std::array<double, 2> geographic{};
+    std::array<double, 4> jacobian{};
+  };
+  static constexpr int kColumnBits = 12;
+  Column& column(double x, double y) const;
+  const std::array<double, 4>& column_jacobian(double x, double y) const;
   // Whether heights come from a mesh attribute; whether normals are the placed surface's.
   bool placed_by_attribute() const;
   bool placed_surface() const;
   double level_value(double z) const;  // kGeometry per level
+  // The height in metres at axis value z (a height variable's or geometry field's value
+  // `height` there, when the placement uses one).
+  double height_m(double z, double height) const;
 
   OutputFrame frame_;
   VerticalPlacement vertical_;
@@ -127,6 +149,11 @@ class FrameTransform {
   double lon0_ = 0, lat0_ = 0;  // the domain's centre
   double z_unit_ = 1;           // axis units to metres or pascals
   double jacobian_step_ = 0;    // central-difference step of the mapping (axis units)
+  // A Cartesian grid (neither geographic nor mapped): metres per axis unit, the centre.
+  std::array<double, 2> cartesian_scale_{1, 1}, cartesian_centre_{0, 0};
+  // apply's per-vertex sums of face normals (scratch, kept between meshes).
+  mutable std::vector<std::array<double, 3>> normal_sums_;
+  mutable std::vector<Column> columns_;  // kColumnBits-bit direct-mapped cache
 };
 
 // One-shot form for tests and single meshes: the store's vertical placement by default.

@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "store/store.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 
 #include "core/checksum.h"
 #include "core/direct_read_file.h"
@@ -312,6 +316,47 @@ std::span<const IndexEntry> Store::geometry_index(std::uint32_t step) const {
                        "geometry field");
 }
 
+namespace {
+
+// The index of the brick's first missing (NaN) sample, or its sample count when none is.
+// T is float or double, U the unsigned integer of its size: a NaN's bits without the sign
+// exceed the infinity's.
+template <class T, class U>
+std::size_t first_nan(const std::byte* bytes, std::size_t count) {
+  static_assert(sizeof(T) == sizeof(U));
+  constexpr U kMagnitude = ~U(0) >> 1;
+  const U infinity = std::bit_cast<U>(std::numeric_limits<T>::infinity());
+  std::size_t i = 0;
+  // Blocks by an integer maximum (no branch per sample); a block with a NaN is searched
+  // again sample by sample.
+  constexpr std::size_t kBlock = 64;
+  for (; i + kBlock <= count; i += kBlock) {
+    U largest = 0;
+    for (std::size_t j = 0; j < kBlock; ++j) {
+      U bits;
+      std::memcpy(&bits, bytes + (i + j) * sizeof(T), sizeof(T));
+      bits &= kMagnitude;
+      largest = bits > largest ? bits : largest;
+    }
+    if (largest > infinity) break;
+  }
+  for (; i < count; ++i) {
+    U bits;
+    std::memcpy(&bits, bytes + i * sizeof(T), sizeof(T));
+    if ((bits & kMagnitude) > infinity) return i;
+  }
+  return count;
+}
+
+std::size_t first_missing_sample(const Brick& b) {
+  if (b.kind != BrickKind::kData) return std::isnan(b.sample(0)) ? 0 : b.sample_count();
+  return b.dtype == DType::kFloat32
+             ? first_nan<float, std::uint32_t>(b.bytes.data(), b.sample_count())
+             : first_nan<double, std::uint64_t>(b.bytes.data(), b.sample_count());
+}
+
+}  // namespace
+
 Brick Store::read_geometry_brick(std::uint32_t step, NodeId node) const {
   const auto entries = geometry_index(step);
   if (node >= entries.size()) {
@@ -321,26 +366,26 @@ Brick Store::read_geometry_brick(std::uint32_t step, NodeId node) const {
   const IndexEntry& e = entries[node];
   StepState& s = geometry_state(step);
   const auto& field = manifest_.geometry->vertical;
-  const std::string what =
-      field.varies_in_time
-          ? fmt::format("{}: step {} {}", s.file.path().string(), step,
-                        describe_node(static_cast<std::uint32_t>(variable_count()), node))
-          : fmt::format("{}: {}", s.file.path().string(),
-                        describe_node(static_cast<std::uint32_t>(variable_count()), node));
+  // The brick's name, made only for an error.
+  const auto what = [&] {
+    return field.varies_in_time
+               ? fmt::format("{}: step {} {}", s.file.path().string(), step,
+                             describe_node(static_cast<std::uint32_t>(variable_count()), node))
+               : fmt::format("{}: {}", s.file.path().string(),
+                             describe_node(static_cast<std::uint32_t>(variable_count()), node));
+  };
   // The field has no missing samples ("Geometry bricks").
   const std::uint64_t owned = octree_.owned_fine_box(octree_.key(node)).count();
   if (e.kind == BrickKind::kEmpty || e.valid_count != owned) {
     throw make_error(ErrorCode::kCorrupt,
                      "{}: a geometry brick must have every sample: it is {} with {} valid of the "
                      "{} samples the node owns",
-                     what, e.kind == BrickKind::kEmpty ? "empty" : "stored", e.valid_count, owned);
+                     what(), e.kind == BrickKind::kEmpty ? "empty" : "stored", e.valid_count, owned);
   }
-  Brick b = decode_brick(s, e, node, field.dtype, field.codec, [&] { return what; });
-  for (std::size_t i = 0; i < b.sample_count(); ++i) {
-    if (std::isnan(b.sample(i))) {
-      throw make_error(ErrorCode::kCorrupt, "{}: sample {} of a geometry brick is missing", what,
-                       i);
-    }
+  Brick b = decode_brick(s, e, node, field.dtype, field.codec, what);
+  if (const std::size_t missing = first_missing_sample(b); missing < b.sample_count()) {
+    throw make_error(ErrorCode::kCorrupt, "{}: sample {} of a geometry brick is missing", what(),
+                     missing);
   }
   return b;
 }

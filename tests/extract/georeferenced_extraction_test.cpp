@@ -252,5 +252,34 @@ TEST_F(GeoreferencedExtractionTest, EcefFrameOfARotatedGridIsWherePROJPutsTheTru
   EXPECT_NEAR(enclosed_volume(mesh) / enclosed_volume(metric), 1.0, 0.05);
 }
 
+// A mapped grid's geographic positions and Jacobians are kept per column of vertices:
+// every vertex still gets the bits that a transform made for it alone gives, whatever
+// the transform placed before.
+TEST_F(GeoreferencedExtractionTest, MappedVerticesArePlacedAsByAFreshTransform) {
+  const auto store = Store::open(*dir_ / "rotated.store");
+  const format::Manifest& m = store->manifest();
+  for (OutputFrame frame : {OutputFrame::kLonLat, OutputFrame::kEcef}) {
+    const FrameTransform transform(m, frame, choose_vertical_placement(m));
+    const LevelExtraction e = extract(
+        *store, R"({"subvolumes": [{"id": 1, "limits": [{"var": "v", "min": 0.3}]}]})", 0, false);
+    const Mesh axis = seamless_union(e, 1);
+    ASSERT_FALSE(axis.empty());
+    Mesh once = axis, twice = axis;
+    transform.apply(once);
+    transform.apply(twice);  // every column now cached
+    EXPECT_TRUE(once == twice) << output_frame_name(frame);
+    for (std::size_t v = 0; v < axis.positions.size(); v += 53) {
+      Mesh single = axis;
+      FrameTransform(m, frame, choose_vertical_placement(m)).apply(single);
+      EXPECT_EQ(single.positions[v], once.positions[v]) << v;
+      EXPECT_EQ(single.normals[v], once.normals[v]) << v;
+      if (frame == OutputFrame::kLonLat) {
+        const FrameTransform fresh(m, frame, choose_vertical_placement(m));
+        EXPECT_EQ(fresh.lon_lat_height(axis.positions[v]), once.positions[v]) << v;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace strielad

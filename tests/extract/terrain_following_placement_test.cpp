@@ -70,8 +70,9 @@ NodeSamples terrain_following_samples(const format::Manifest& m) {
   return s;
 }
 
-Mesh blob_mesh(const format::Manifest& m) {
+Mesh blob_mesh(const format::Manifest& m, bool axis_normals = true) {
   ExtractRequest r;
+  r.axis_normals = axis_normals;
   r.limits = {{0, -kUnbounded, 0.6}};
   r.attribute_fields = {1};
   r.attribute_names = {format::geometry_field_name(m)};
@@ -111,6 +112,23 @@ TEST(TerrainFollowingPlacementTest, MeshesStayClosedAndOutwardWhenLevelsCountDow
     EXPECT_NEAR(enclosed_volume(mesh) / expected, 1.0, 0.05);
     EXPECT_EQ(testing::normals_away_from_centroid(mesh), mesh.positions.size());
   }
+}
+
+// The placed surface's normals replace the axis frame's: extracting without those gives
+// the same placed mesh, bit for bit, in every frame.
+TEST(TerrainFollowingPlacementTest, MeshesExtractedWithoutAxisNormalsArePlacedTheSame) {
+  const format::Manifest m = top_down_levels();
+  for (OutputFrame frame : {OutputFrame::kLonLat, OutputFrame::kLocalMetric, OutputFrame::kEcef}) {
+    const FrameTransform transform(m, frame, choose_vertical_placement(m));
+    EXPECT_TRUE(transform.replaces_normals());
+    Mesh with = blob_mesh(m), without = blob_mesh(m, false);
+    ASSERT_FALSE(without.triangles.empty());
+    EXPECT_EQ(without.positions, with.positions);
+    transform.apply(with);
+    transform.apply(without);
+    EXPECT_TRUE(without == with) << output_frame_name(frame);
+  }
+  EXPECT_FALSE(FrameTransform(m, OutputFrame::kAxis, choose_vertical_placement(m)).replaces_normals());
 }
 
 TEST(TerrainFollowingPlacementTest, PressureFieldsArePlacedByTheStandardAtmosphere) {

@@ -9,6 +9,8 @@
 #include <cmath>
 
 #include "convert/geometry_writer.h"
+#include "core/checksum.h"
+#include "store/brick_codec.h"
 #include "store/brick_cache.h"
 #include "store/store.h"
 #include "support/expect_error.h"
@@ -233,6 +235,47 @@ TEST(GeometryStoreReadTest, GeometryBrickWithMissingSamplesFailsForThatNodeOnly)
   expect_error([&] { store->read_geometry_brick(1, 1); }, ErrorCode::kCorrupt,
                {"geometry.bricks", "geometry field node 1 ", "empty"});
   EXPECT_EQ(store->read_geometry_brick(0, 2).sample(0), 500);
+}
+
+// A data brick claiming every sample but holding a NaN: found by sample, past the first
+// block of 64 that the check takes at once, and in the last, partial block.
+TEST(GeometryStoreReadTest, GeometryDataBrickWithANaNSampleNamesTheSample) {
+  const testing::TempDir dir;
+  testing::GeometryStoreSpec spec;
+  spec.nx = 17;  // two nodes along x
+  spec.ny = spec.nz = 9;
+  spec.brick = 8;  // node 0: 9 x 9 x 9 samples
+  const format::Manifest m = testing::write_geometry_store(dir / "store", spec);
+  const OctreeLayout layout(m.dims(), m.brick);
+  const auto& field = m.geometry->vertical;
+  for (const std::size_t missing : {std::size_t{100}, std::size_t{0}}) {
+    std::vector<build::EncodedBrick> bricks(layout.node_count());
+    std::size_t at = 0;
+    for (NodeId n = 0; n < bricks.size(); ++n) {
+      const IndexBox box = layout.level_box(layout.key(n));
+      const BrickDims dims{box.extent(0), box.extent(1), box.extent(2)};
+      const std::size_t count = dims[0] * dims[1] * dims[2];
+      at = missing == 0 ? count - 1 : missing;  // the last sample, or one past a block
+      ASSERT_GT(count, 2 * missing);
+      std::vector<double> samples(count, 500.0);
+      if (n == 0) samples[at] = std::nan("");
+      auto& e = bricks[n].entry;
+      e.kind = format::BrickKind::kData;
+      e.min = 500;
+      e.max = 500;
+      e.valid_count = layout.owned_fine_box(layout.key(n)).count();
+      ASSERT_EQ(field.dtype, DType::kFloat64);
+      bricks[n].chunk = compress_brick(std::as_bytes(std::span(samples)), field.dtype, dims, field.codec);
+      e.chunk_size = static_cast<std::uint32_t>(bricks[n].chunk.size());
+      e.chunk_checksum = checksum64(bricks[n].chunk);
+    }
+    std::filesystem::remove(dir / "store" / "geometry.bricks");
+    build::write_geometry_bricks(dir / "store", m.store_id, std::move(bricks));
+    const auto store = Store::open(dir / "store");
+    expect_error([&] { store->read_geometry_brick(0, 0); }, ErrorCode::kCorrupt,
+                 {"geometry field node 0 ", fmt::format("sample {} of a geometry brick is missing", at)});
+    EXPECT_EQ(store->read_geometry_brick(0, 1).sample(0), 500);
+  }
 }
 
 }  // namespace
