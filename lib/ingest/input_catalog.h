@@ -8,12 +8,14 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "grid/axis.h"
 #include "grid/grid_mapping.h"
+#include "ingest/curvilinear_grid.h"
 
 namespace strielad::ingest {
 
@@ -108,8 +110,10 @@ struct VariableLocation {
 
 struct InputCatalog {
   std::vector<SourceFile> files;
-  Axis x, y, z;    // longitude, latitude, vertical: as stored (ascending or descending)
+  Axis x, y, z;    // longitude, latitude (or indices), vertical: as stored
   std::optional<GridMapping> grid_mapping;  // x/y are projection coordinates placed by it
+  // x/y are index axes placed by 2-D longitude and latitude (then no grid_mapping).
+  std::shared_ptr<const CurvilinearGrid> curvilinear;
   // Samples per row in the files: x.size() (or 0, meaning the same), or x.size() - 1
   // when x is a periodic longitude axis whose first meridian the catalog repeats at the
   // end (SlabReader and BoxReader copy the first column there).
