@@ -39,10 +39,10 @@ namespace {
 constexpr std::string_view kRemapAdvice =
     "only logically rectangular grids are supported — remap it first (e.g. cdo remapcon)";
 constexpr std::string_view kCurvilinearAdvice =
-    "grids placed by 2-D latitude/longitude are converted when the variable's coordinates "
-    "attribute names them and they lie over exactly its last two dimensions, which have no "
-    "coordinate variables — otherwise remap it to a regular or projected grid first (e.g. cdo "
-    "remapbil)";
+    "a grid placed by 2-D latitude/longitude is converted only when the variable's coordinates "
+    "attribute names a longitude and a latitude the file holds, over exactly its last two "
+    "dimensions, which have no coordinate variables — otherwise remap it to a regular or "
+    "projected grid first (e.g. cdo remapbil)";
 
 std::string lower(std::string_view s) {
   std::string out(s);
