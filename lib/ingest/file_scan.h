@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Scans one input file: every variable of every group, classified as a usable
-// (time?, vertical, lat, lon) field on a rectilinear grid, or not, with the reason kept
+// (time?, vertical, lat, lon) field on a rectilinear grid (or (time?, vertical, y, x) on a
+// curvilinear grid placed by the 2-D latitude/longitude its `coordinates` attribute
+// names: ingest/curvilinear_grid.h), or not, with the reason kept
 // as an Error so that the caller decides whether it matters (it does when the variable
 // was asked for, and is only logged when the variable would merely have been picked by
 // default).

@@ -114,5 +114,50 @@ TEST(CurvilinearConversionTest, PlacementAgreesWithCs2cs) {
   }
 }
 
+// CF hybrid height over orog on a curvilinear grid whose rows run south: the GEOMETRY
+// file holds the coordinates and the surface; the orientation is the grid's (-1: i east,
+// j south) times the field's (+1: heights grow with k), and the field passes the
+// converter's direction check with it.
+TEST(CurvilinearConversionTest, SurfaceAndHeightFieldOnACurvilinearGrid) {
+  using testing::NcAttr;
+  const testing::TempDir dir;
+  const std::vector<double> lat{1, 1, 1, 0, 0, 0}, lon{0, 1, 2, 0, 1, 2};
+  const std::vector<double> orog{0, 100, 200, 300, 400, 500};
+  testing::NetcdfFixture(NC_NETCDF4)
+      .coordinate("lev", {100, 1000, 5000},
+                  {NcAttr::text_value("standard_name", "atmosphere_hybrid_height_coordinate"),
+                   NcAttr::text_value("units", "m"), NcAttr::text_value("positive", "up"),
+                   NcAttr::text_value("formula_terms", "a: lev b: b orog: orog")})
+      .variable("b", NC_DOUBLE, {"lev"}, {0.9, 0.5, 0})
+      .dimension("y", 2)
+      .dimension("x", 3)
+      .variable("orog", NC_FLOAT, {"y", "x"}, orog,
+                {NcAttr::text_value("standard_name", "surface_altitude"),
+                 NcAttr::text_value("units", "m"), NcAttr::text_value("coordinates", "lon lat")})
+      .variable("lat", NC_DOUBLE, {"y", "x"}, lat, {NcAttr::text_value("units", "degrees_north")})
+      .variable("lon", NC_DOUBLE, {"y", "x"}, lon, {NcAttr::text_value("units", "degrees_east")})
+      .variable("ta", NC_FLOAT, {"lev", "y", "x"}, testing::ramp(18),
+                {NcAttr::text_value("units", "K"), NcAttr::text_value("coordinates", "lon lat")})
+      .write(dir / "hh.nc");
+  build::ConvertOptions o;
+  o.inputs = {dir / "hh.nc"};
+  o.store = dir / "store";
+  o.threads = 1;
+  build::convert(o);
+  const auto store = Store::open(dir / "store");
+  const format::Manifest& m = store->manifest();
+  ASSERT_TRUE(m.geometry);
+  EXPECT_EQ(m.geometry->horizontal.kind, format::HorizontalGeometry::Kind::kCurvilinear);
+  EXPECT_EQ(m.geometry->vertical.kind, format::VerticalGeometry::Kind::kField);
+  ASSERT_TRUE(m.geometry->surface);
+  EXPECT_EQ(m.geometry->surface->variable, "orog");
+  EXPECT_EQ(m.geometry->orientation, -1);
+  const auto c = store->horizontal_coordinates();
+  ASSERT_TRUE(c && c->surface_m);
+  EXPECT_EQ(c->lon, lon);
+  EXPECT_EQ(c->lat, lat);
+  EXPECT_EQ(*c->surface_m, orog);
+}
+
 }  // namespace
 }  // namespace strielad
