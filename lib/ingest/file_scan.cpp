@@ -560,7 +560,7 @@ void FileScanner::read_axes(ScannedVariable& sv, const VariableDimensions& var) 
   }
 }
 
-// A (time?, vertical, y, x) variable whose y and x dimensions have no coordinate variables
+// A (time?, vertical?, y, x) variable whose y and x dimensions have no coordinate variables
 // and whose `coordinates` attribute names exactly one longitude and one latitude (units
 // degrees_east / degrees_north or standard_name longitude / latitude) over exactly
 // (y, x). None when a name it gives that could be one of them is not in the file: that
@@ -568,7 +568,7 @@ void FileScanner::read_axes(ScannedVariable& sv, const VariableDimensions& var) 
 std::optional<CurvilinearCoordinates> FileScanner::curvilinear_coordinates(
     const VariableDimensions& var) {
   const std::size_t n = var.dimids.size();
-  if (n < 3 || n > 4 || var.coords[n - 2] || var.coords[n - 1]) return std::nullopt;
+  if (n < 2 || n > 4 || var.coords[n - 2] || var.coords[n - 1]) return std::nullopt;
   const std::vector<int> horizontal{var.dimids[n - 2], var.dimids[n - 1]};
   std::vector<CurvilinearCoordinates> lons, lats;
   for (const std::string& word :
@@ -730,7 +730,13 @@ ScannedVariable FileScanner::scan_variable(int grpid, int varid, const std::stri
     if (!var.coords.back()) var.coords.back() = paired_coordinate(grpid, var.dimids[i]);
     if (!var.coords.back()) missing.push_back(sv.dimensions[i]);
   }
-  if (auto c = curvilinear_coordinates(var)) return scan_curvilinear(std::move(sv), var, *c);
+  if (auto c = curvilinear_coordinates(var)) {
+    if (var.dimids.size() >= 3) return scan_curvilinear(std::move(sv), var, *c);
+    // A 2-D field on the grid (a surface height): not a 3-D variable, and no grid problem.
+    return fail(VariableClass::kNotGridded,
+                make_error(ErrorCode::kUnsupported, "{}: variable '{}' has dimensions ({}); {}",
+                           file_, sv.name, join(sv.dimensions, ", "), k3dOnly));
+  }
   if (auto e = detect_unstructured(var)) return fail(VariableClass::kUnstructured, std::move(*e));
   if (!missing.empty()) {
     return fail(var.dimids.size() >= 3 ? VariableClass::kInvalid : VariableClass::kNotGridded,
