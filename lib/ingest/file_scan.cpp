@@ -211,8 +211,8 @@ class FileScanner {
   std::map<std::pair<int, int>, Coordinate> coordinates_;
   std::map<int, std::vector<LonLatVariable>> lonlat_by_group_;
   std::map<std::pair<int, int>, std::optional<VariableRef>> paired_;
-  std::map<std::pair<std::string, std::string>, std::shared_ptr<const CurvilinearGrid>>
-      curvilinear_;
+  // By (lon group, lon varid, lat group, lat varid).
+  std::map<std::tuple<int, int, int, int>, std::shared_ptr<const CurvilinearGrid>> curvilinear_;
 };
 
 const Coordinate& FileScanner::coordinate(const VariableRef& ref, bool unlimited) {
@@ -602,7 +602,7 @@ std::optional<CurvilinearCoordinates> FileScanner::curvilinear_coordinates(
 // The checked grid of 2-D coordinates `c`, read once per file.
 std::shared_ptr<const CurvilinearGrid> FileScanner::curvilinear_grid(
     const CurvilinearCoordinates& c, std::size_t nx, std::size_t ny, const std::string& what) {
-  const auto key = std::make_pair(c.lon_name, c.lat_name);
+  const auto key = std::make_tuple(c.lon.grpid, c.lon.varid, c.lat.grpid, c.lat.varid);
   if (auto it = curvilinear_.find(key); it != curvilinear_.end()) return it->second;
   auto missing_values = [](const VariableRef& ref) {
     std::vector<double> out;
