@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // strielad-sample -o DIR [--dims XxYxZ] [--steps N] [--seed S] [--vars a,b,...]
 //                 [--single-file] [--step-seconds S] [--deflate L] [--tracks N] [--terrain N]
-//                 [--model sample|icon|icon-cf|sigma-pressure|wrf] [--z-mc]
+//                 [--model sample|icon|icon-cf|sigma-pressure|wrf|curvilinear] [--z-mc]
 //                 [--format netcdf|grib2] [--grib-bits N] [--grib-levels height|model] [--json]
 // Writes the built-in sample: a deterministic synthetic CF-NetCDF-4 dataset (lib/synthetic)
 // that strielad-convert converts like model output, with optional flight tracks and a DEM.
@@ -174,7 +174,8 @@ void register_sample(CLI::App& app, cli::Action& action) {
                   "What the files look like: sample (constant-height levels), icon (ICON-LEM "
                   "remapped: z_ifc, topography_c), icon-cf (CF hybrid height), sigma-pressure "
                   "(IFS/CAM hybrid sigma-pressure), wrf (WRF ARW wrfout_d01_<date>: Lambert conformal "
-                  "C grid, eta levels, PH/PHB, U/V/W, T, P/PB, QVAPOR, QCLOUD)")
+                  "C grid, eta levels, PH/PHB, U/V/W, T, P/PB, QVAPOR, QCLOUD), curvilinear "
+                  "(a rotated-pole grid written only as 2-D lat/lon, on height levels)")
       ->capture_default_str();
   sub->add_flag("--z-mc", opt->z_mc,
                 "With --model icon: also write z_mc, the full levels' heights");

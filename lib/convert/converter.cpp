@@ -344,7 +344,8 @@ std::vector<std::uint32_t> steps_to_convert(const Store& store, std::uint32_t fi
   return todo;
 }
 
-// The store's GEOMETRY file (the surface height) and geometry.bricks (a time-invariant
+// The store's GEOMETRY file (a curvilinear grid's 2-D coordinates, the surface height) and
+// geometry.bricks (a time-invariant
 // vertical field), written before any step: GEOMETRY every run (a re-run finds the same
 // bytes; other bytes are refused), geometry.bricks when it is absent (its store_id ties it
 // to this plan; racing Slurm array tasks publish the same bytes or refuse other ones).
@@ -352,14 +353,15 @@ void write_geometry_files(const ingest::InputCatalog& catalog, const format::Man
                           const OctreeLayout& layout, const ConvertOptions& options) {
   if (!plan.geometry) return;
   ingest::SlabReader reader(catalog, options.scan);
-  if (plan.geometry->surface) {
+  if (plan.geometry->surface || catalog.curvilinear) {
     format::GeometryFile file;
     file.store_id = plan.store_id;
-    file.coordinates.nx = static_cast<std::uint32_t>(plan.x.size());
-    file.coordinates.ny = static_cast<std::uint32_t>(plan.y.size());
-    std::vector<double> surface(plan.x.size() * plan.y.size());
-    reader.read_surface(surface);
-    file.coordinates.surface_m = std::move(surface);
+    file.coordinates = curvilinear_coordinates(catalog);
+    if (plan.geometry->surface) {
+      std::vector<double> surface(plan.x.size() * plan.y.size());
+      reader.read_surface(surface);
+      file.coordinates.surface_m = std::move(surface);
+    }
     write_geometry_file(options.store, file);
   }
   if (has_time_invariant_geometry(plan) &&

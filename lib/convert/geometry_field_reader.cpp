@@ -4,7 +4,7 @@
 #include <fmt/ranges.h>
 
 #include "core/error.h"
-#include "geo/horizontal_orientation.h"
+#include "convert/geometry_plan.h"
 
 namespace strielad::build {
 
@@ -24,8 +24,8 @@ bool has_time_invariant_geometry(const format::Manifest& m) {
   return has_field(m) && !m.geometry->vertical.varies_in_time;
 }
 
-int field_direction_per_level(const format::Manifest& m) {
-  const int up_per_k = m.geometry->orientation * geo::horizontal_orientation(m.x, m.y, m.grid_mapping);
+int field_direction_per_level(const format::Manifest& m, int horizontal_sign) {
+  const int up_per_k = m.geometry->orientation * horizontal_sign;
   return m.geometry->vertical.quantity == format::VerticalGeometry::Quantity::kPressure ? -up_per_k
                                                                                        : up_per_k;
 }
@@ -35,7 +35,7 @@ GeometryFieldReader::GeometryFieldReader(ingest::SlabReader& reader,
     : reader_(reader),
       manifest_(manifest),
       step_(step),
-      direction_(field_direction_per_level(manifest)),
+      direction_(field_direction_per_level(manifest, horizontal_sign(reader.catalog()))),
       plane_(manifest.x.size() * manifest.y.size()),
       columns_(manifest.x.size(), manifest.y.size(),
                fmt::format("{} ({}), stored as {}, time step {}",

@@ -23,9 +23,9 @@ bool has_time_varying_geometry(const format::Manifest& manifest);
 bool has_time_invariant_geometry(const format::Manifest& manifest);
 
 // +1 when the field's values grow with the level index k, -1 when they shrink: from the
-// manifest's orientation and the horizontal axes (a height grows upwards, a pressure
-// shrinks).
-int field_direction_per_level(const format::Manifest& manifest);
+// manifest's orientation and the horizontal sign (geo::horizontal_orientation of the
+// axes, or a curvilinear grid's own; a height grows upwards, a pressure shrinks).
+int field_direction_per_level(const format::Manifest& manifest, int horizontal_sign);
 
 // Reads planes of one step's field in increasing z, each call continuing the last (as the
 // converter streams slabs).

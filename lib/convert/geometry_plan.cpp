@@ -34,13 +34,43 @@ int up_per_level(const ingest::InputCatalog& catalog, const ingest::ScanOptions&
   return (d > 0) != pressure ? 1 : -1;
 }
 
+// +1 when the z axis's values go up with k (a height growing, a pressure or a "positive:
+// down" coordinate falling), -1 otherwise.
+int up_along_axis(const Axis& z) {
+  if (z.size() < 2) return 1;
+  const bool down = z.kind == AxisKind::kPressure || z.positive == "down";
+  return z.descending() != down ? -1 : 1;
+}
+
 }  // namespace
+
+int horizontal_sign(const ingest::InputCatalog& catalog) {
+  if (catalog.curvilinear) return catalog.curvilinear->orientation;
+  return geo::horizontal_orientation(catalog.x, catalog.y, catalog.grid_mapping);
+}
+
+format::HorizontalCoordinates curvilinear_coordinates(const ingest::InputCatalog& catalog) {
+  format::HorizontalCoordinates c;
+  c.nx = static_cast<std::uint32_t>(catalog.x.size());
+  c.ny = static_cast<std::uint32_t>(catalog.y.size());
+  if (catalog.curvilinear) {
+    c.lon = catalog.curvilinear->lon;
+    c.lat = catalog.curvilinear->lat;
+  }
+  return c;
+}
 
 std::optional<format::GridGeometry> plan_geometry(const ingest::InputCatalog& catalog,
                                                   const ingest::ScanOptions& scan,
                                                   const format::CodecSpec& codec) {
-  if (!catalog.vertical_geometry && !catalog.surface) return std::nullopt;
+  if (!catalog.vertical_geometry && !catalog.surface && !catalog.curvilinear) return std::nullopt;
   format::GridGeometry g;
+  if (const auto& c = catalog.curvilinear) {
+    g.horizontal.kind = format::HorizontalGeometry::Kind::kCurvilinear;
+    g.horizontal.lon_variable = c->lon_variable;
+    g.horizontal.lat_variable = c->lat_variable;
+    g.horizontal.coordinates_checksum = format::coordinates_checksum(curvilinear_coordinates(catalog));
+  }
   int up = 1;
   if (const auto& source = catalog.vertical_geometry) {
     VerticalGeometry& v = g.vertical;
@@ -57,9 +87,11 @@ std::optional<format::GridGeometry> plan_geometry(const ingest::InputCatalog& ca
     v.codec.predictor = format::kPredictorLorenzo3;
     v.codec.fpzip = false;
     up = up_per_level(catalog, scan, *source);
+  } else if (catalog.curvilinear) {
+    up = up_along_axis(catalog.z);
   }
   if (catalog.surface) g.surface = format::SurfaceGeometry{catalog.surface->variable, "m"};
-  g.orientation = geo::horizontal_orientation(catalog.x, catalog.y, catalog.grid_mapping) * up;
+  g.orientation = horizontal_sign(catalog) * up;
   return g;
 }
 

@@ -12,6 +12,7 @@
 #include <map>
 #include <mutex>
 #include <set>
+#include <tuple>
 
 #include "ingest/cf_attributes.h"
 #include "ingest/cf_axis_detection.h"
@@ -38,9 +39,10 @@ namespace {
 constexpr std::string_view kRemapAdvice =
     "only logically rectangular grids are supported — remap it first (e.g. cdo remapcon)";
 constexpr std::string_view kCurvilinearAdvice =
-    "grids placed by 2-D latitude/longitude are not converted yet (a grid_mapping with 1-D "
-    "projection coordinates is) — remap it to a regular or projected grid first (e.g. cdo "
-    "remapbil)";
+    "a grid placed by 2-D latitude/longitude is converted only when the variable's coordinates "
+    "attribute names a longitude and a latitude the file holds, over exactly its last two "
+    "dimensions, which have no coordinate variables — otherwise remap it to a regular or "
+    "projected grid first (e.g. cdo remapbil)";
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -138,6 +140,12 @@ struct VariableDimensions {
   std::vector<std::optional<VariableRef>> coords;
 };
 
+// The 2-D longitude and latitude variables that place a variable on a curvilinear grid.
+struct CurvilinearCoordinates {
+  VariableRef lon, lat;
+  std::string lon_name, lat_name;
+};
+
 // Why a variable is not converted, and which class that puts it in.
 struct Rejection {
   VariableClass klass;
@@ -181,6 +189,12 @@ class FileScanner {
                                                             const std::vector<std::string>& absent);
   std::optional<Error> curvilinear_grid_error(const VariableDimensions& var,
                                               const std::vector<LonLatVariable>& candidates);
+  std::optional<CurvilinearCoordinates> curvilinear_coordinates(const VariableDimensions& var);
+  ScannedVariable scan_curvilinear(ScannedVariable sv, const VariableDimensions& var,
+                                   const CurvilinearCoordinates& coordinates);
+  std::shared_ptr<const CurvilinearGrid> curvilinear_grid(const CurvilinearCoordinates& c,
+                                                          std::size_t nx, std::size_t ny,
+                                                          const std::string& what);
   std::vector<DimensionRole> dimension_roles(const VariableDimensions& var);
   std::optional<Rejection> check_dimension_roles(const ScannedVariable& sv,
                                                  const std::vector<DimensionRole>& roles);
@@ -197,6 +211,8 @@ class FileScanner {
   std::map<std::pair<int, int>, Coordinate> coordinates_;
   std::map<int, std::vector<LonLatVariable>> lonlat_by_group_;
   std::map<std::pair<int, int>, std::optional<VariableRef>> paired_;
+  // By (lon group, lon varid, lat group, lat varid).
+  std::map<std::tuple<int, int, int, int>, std::shared_ptr<const CurvilinearGrid>> curvilinear_;
 };
 
 const Coordinate& FileScanner::coordinate(const VariableRef& ref, bool unlimited) {
@@ -544,6 +560,142 @@ void FileScanner::read_axes(ScannedVariable& sv, const VariableDimensions& var) 
   }
 }
 
+// A (time?, vertical?, y, x) variable whose y and x dimensions have no coordinate variables
+// and whose `coordinates` attribute names exactly one longitude and one latitude (units
+// degrees_east / degrees_north or standard_name longitude / latitude) over exactly
+// (y, x). None when a name it gives that could be one of them is not in the file: that
+// variable is refused (absent_curvilinear_coordinates_error).
+std::optional<CurvilinearCoordinates> FileScanner::curvilinear_coordinates(
+    const VariableDimensions& var) {
+  const std::size_t n = var.dimids.size();
+  if (n < 2 || n > 4 || var.coords[n - 2] || var.coords[n - 1]) return std::nullopt;
+  const std::vector<int> horizontal{var.dimids[n - 2], var.dimids[n - 1]};
+  std::vector<CurvilinearCoordinates> lons, lats;
+  for (const std::string& word :
+       split_words(text_attribute_or_empty(var.grpid, var.varid, "coordinates"))) {
+    std::optional<VariableRef> ref;
+    for (std::optional<int> g = var.grpid; g && !ref; g = parent_group(*g)) {
+      int varid = -1;
+      if (nc_inq_varid(*g, word.c_str(), &varid) == NC_NOERR) ref = VariableRef{*g, varid};
+    }
+    if (!ref) {
+      const std::string l = lower(word);
+      if (l.find("lat") != std::string::npos || l.find("lon") != std::string::npos) {
+        return std::nullopt;
+      }
+      continue;
+    }
+    if (variable_dimids(ref->grpid, ref->varid) != horizontal ||
+        !is_numeric_type(variable_type(ref->grpid, ref->varid))) {
+      continue;
+    }
+    const CoordinateAttributes attrs = read_coordinate_attributes(ref->grpid, ref->varid);
+    if (looks_like_longitude(attrs)) lons.push_back({*ref, {}, word, {}});
+    if (looks_like_latitude(attrs)) lats.push_back({{}, *ref, {}, word});
+  }
+  if (lons.size() != 1 || lats.size() != 1 || lons[0].lon_name == lats[0].lat_name) {
+    return std::nullopt;
+  }
+  return CurvilinearCoordinates{lons[0].lon, lats[0].lat, lons[0].lon_name, lats[0].lat_name};
+}
+
+// The checked grid of 2-D coordinates `c`, read once per file.
+std::shared_ptr<const CurvilinearGrid> FileScanner::curvilinear_grid(
+    const CurvilinearCoordinates& c, std::size_t nx, std::size_t ny, const std::string& what) {
+  const auto key = std::make_tuple(c.lon.grpid, c.lon.varid, c.lat.grpid, c.lat.varid);
+  if (auto it = curvilinear_.find(key); it != curvilinear_.end()) return it->second;
+  auto missing_values = [](const VariableRef& ref) {
+    std::vector<double> out;
+    for (const char* attr : {"_FillValue", "missing_value"}) {
+      for (long double v : numeric_attribute(ref.grpid, ref.varid, attr)) {
+        out.push_back(static_cast<double>(v));
+      }
+    }
+    return out;
+  };
+  auto grid = std::make_shared<const CurvilinearGrid>(make_curvilinear_grid(
+      c.lon_name, c.lat_name, nx, ny,
+      read_all_as_double(c.lon.grpid, c.lon.varid,
+                         fmt::format("{}: 2-D coordinate '{}'", file_, c.lon_name)),
+      read_all_as_double(c.lat.grpid, c.lat.varid,
+                         fmt::format("{}: 2-D coordinate '{}'", file_, c.lat_name)),
+      missing_values(c.lon), missing_values(c.lat), what));
+  return curvilinear_.emplace(key, std::move(grid)).first->second;
+}
+
+// A variable on a curvilinear grid: index axes x and y, its vertical and time axes from
+// their coordinate variables, its columns placed by the 2-D coordinates.
+ScannedVariable FileScanner::scan_curvilinear(ScannedVariable sv, const VariableDimensions& var,
+                                              const CurvilinearCoordinates& coordinates) {
+  auto fail = [&](VariableClass klass, Error error) {
+    sv.klass = klass;
+    sv.problem = std::move(error);
+    return std::move(sv);
+  };
+  using R = DimensionRole;
+  const std::size_t n = var.dimids.size();
+  std::vector<R> roles;
+  for (std::size_t i = 0; i + 2 < n; ++i) {
+    if (!var.coords[i]) {
+      return fail(VariableClass::kInvalid,
+                  make_error(ErrorCode::kInvalidInput,
+                             "{}: variable '{}' dimension '{}' has no coordinate variable", file_,
+                             sv.name, sv.dimensions[i]));
+    }
+    roles.push_back(
+        coordinate(*var.coords[i], is_unlimited_dimension(var.grpid, var.dimids[i])).role);
+  }
+  const std::vector<R> positional =
+      n == 4 ? std::vector<R>{R::kTime, R::kVertical} : std::vector<R>{R::kVertical};
+  for (std::size_t i = 0; i < roles.size(); ++i) {
+    if (roles[i] == R::kUnknown && std::count(roles.begin(), roles.end(), positional[i]) == 0) {
+      roles[i] = positional[i];
+    }
+  }
+  roles.push_back(R::kLatitude);
+  roles.push_back(R::kLongitude);
+  if (auto r = check_dimension_roles(sv, roles)) return fail(r->klass, std::move(r->error));
+
+  const std::string what = fmt::format("{}: variable '{}'", file_, sv.name);
+  try {
+    const std::size_t nx = dimension_length(var.grpid, var.dimids[n - 1]);
+    const std::size_t ny = dimension_length(var.grpid, var.dimids[n - 2]);
+    sv.curvilinear = curvilinear_grid(coordinates, nx, ny, what);
+    for (auto [axis, size, dim] : {std::tuple{&sv.x, nx, n - 1}, std::tuple{&sv.y, ny, n - 2}}) {
+      axis->name = sv.dimensions[dim];
+      axis->kind = AxisKind::kIndex;
+      axis->values.resize(size);
+      for (std::size_t k = 0; k < size; ++k) axis->values[k] = static_cast<double>(k);
+    }
+    sv.source_nx = nx;
+    sv.z = coordinate_axis(*var.coords[n - 3], AxisKind::kOther);
+    for (const Axis* a : {&sv.x, &sv.y, &sv.z}) check_axis_values(*a, file_);
+    if (n == 4) {
+      const Coordinate& c = coordinate(*var.coords[0], false);
+      TimeCoordinate t{c.attrs.name, c.attrs.units, c.calendar, c.values};
+      Axis as_axis;
+      as_axis.name = t.name;
+      as_axis.values = t.values;
+      check_axis_values(as_axis, file_);
+      sv.time = std::move(t);
+    }
+  } catch (const Error& e) {
+    return fail(VariableClass::kInvalid, e);
+  }
+  if (has_attribute(var.grpid, var.varid, "grid_mapping")) {
+    const std::string note = fmt::format(
+        "{}: grid_mapping '{}' is not used: dimensions '{}' and '{}' have no 1-D projection "
+        "coordinates; the 2-D '{}' and '{}' place the grid",
+        file_, text_attribute_or_empty(var.grpid, var.varid, "grid_mapping"), sv.dimensions[n - 1],
+        sv.dimensions[n - 2], coordinates.lon_name, coordinates.lat_name);
+    if (logged_.insert(note).second) spdlog::info("{}", note);
+  }
+  sv.meta = read_variable_meta(var.grpid, var.varid, sv.name);
+  sv.value_attributes = read_value_attributes(var.grpid, var.varid);
+  sv.klass = VariableClass::kGrid3D;
+  return sv;
+}
+
 ScannedVariable FileScanner::scan_variable(int grpid, int varid, const std::string& prefix) {
   ScannedVariable sv;
   const std::string short_name = variable_name(grpid, varid);
@@ -577,6 +729,13 @@ ScannedVariable FileScanner::scan_variable(int grpid, int varid, const std::stri
     var.coords.push_back(find_coordinate_variable(grpid, var.dimids[i]));
     if (!var.coords.back()) var.coords.back() = paired_coordinate(grpid, var.dimids[i]);
     if (!var.coords.back()) missing.push_back(sv.dimensions[i]);
+  }
+  if (auto c = curvilinear_coordinates(var)) {
+    if (var.dimids.size() >= 3) return scan_curvilinear(std::move(sv), var, *c);
+    // A 2-D field on the grid (a surface height): not a 3-D variable, and no grid problem.
+    return fail(VariableClass::kNotGridded,
+                make_error(ErrorCode::kUnsupported, "{}: variable '{}' has dimensions ({}); {}",
+                           file_, sv.name, join(sv.dimensions, ", "), k3dOnly));
   }
   if (auto e = detect_unstructured(var)) return fail(VariableClass::kUnstructured, std::move(*e));
   if (!missing.empty()) {

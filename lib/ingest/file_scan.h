@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // Scans one input file: every variable of every group, classified as a usable
-// (time?, vertical, lat, lon) field on a rectilinear grid, or not, with the reason kept
+// (time?, vertical, lat, lon) field on a rectilinear grid (or (time?, vertical, y, x) on a
+// curvilinear grid placed by the 2-D latitude/longitude its `coordinates` attribute
+// names: ingest/curvilinear_grid.h), or not, with the reason kept
 // as an Error so that the caller decides whether it matters (it does when the variable
 // was asked for, and is only logged when the variable would merely have been picked by
 // default).
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +17,7 @@
 #include "core/error.h"
 #include "grid/axis.h"
 #include "grid/grid_mapping.h"
+#include "ingest/curvilinear_grid.h"
 #include "ingest/input_catalog.h"
 #include "ingest/variable_meta.h"
 
@@ -25,9 +29,10 @@ struct TimeCoordinate {
 };
 
 enum class VariableClass {
-  kGrid3D,        // (time?, vertical, lat, lon) on a rectilinear grid: usable
+  kGrid3D,        // (time?, vertical, y, x) on a rectilinear grid or one placed by 2-D
+                  // latitude and longitude (curvilinear): usable
   kNotGridded,    // not a 3D lon/lat field: coordinates, 2D fields, zonal means, text...
-  kUnstructured,  // on an unstructured or curvilinear horizontal grid
+  kUnstructured,  // on an unstructured grid, or a curvilinear one that cannot be placed
   kInvalid,       // a 3D field that cannot be used as stored: missing coordinate
                   // variable, non-monotonic axis, wrong dimension order...
 };
@@ -44,6 +49,9 @@ struct ScannedVariable {
   // kGrid3D only:
   Axis x, y, z;
   std::optional<GridMapping> grid_mapping;  // with its PROJ pipeline (ingest/horizontal_axes.h)
+  // Placed by 2-D latitude and longitude: x and y are index axes (AxisKind::kIndex), no
+  // grid mapping. Shared by the variables of a file that name the same coordinates.
+  std::shared_ptr<const CurvilinearGrid> curvilinear;
   std::size_t source_nx = 0;  // samples per row in the file (x.size() - 1 when the first
                               // meridian of a periodic longitude axis was appended)
   std::optional<TimeCoordinate> time;  // absent: the variable has no time dimension

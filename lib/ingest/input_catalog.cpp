@@ -181,6 +181,30 @@ void check_one_grid_mapping(const SelectedInputs& in) {
   }
 }
 
+// One curvilinear grid (or none): the same 2-D coordinates for every variable in every
+// file, value for value.
+void check_one_curvilinear_grid(const SelectedInputs& in) {
+  const Occurrence& reference = in.reference();
+  const ScannedVariable& r = *reference.variable;
+  for (std::size_t v = 0; v < in.names.size(); ++v) {
+    for (const Occurrence& occ : in.occurrences[v]) {
+      const ScannedVariable& a = *occ.variable;
+      if (a.curvilinear == r.curvilinear) continue;
+      const std::string where = fmt::format("variable '{}' in {}", r.name, in.path(reference.file));
+      if (!a.curvilinear || !r.curvilinear) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: variable '{}' is {} but {} is {}", in.path(occ.file), a.name,
+                         a.curvilinear ? "on a curvilinear grid" : "not on a curvilinear grid",
+                         where, r.curvilinear ? "on one" : "not");
+      }
+      if (auto d = curvilinear_difference(*a.curvilinear, *r.curvilinear, where)) {
+        throw make_error(ErrorCode::kInvalidInput, "{}: variable '{}': {}", in.path(occ.file),
+                         a.name, *d);
+      }
+    }
+  }
+}
+
 // The first occurrence in file order: its time units and calendar are the reference.
 const Occurrence& time_reference(const SelectedInputs& in) {
   for (std::size_t f = 0; f < in.files.size(); ++f) {
@@ -292,6 +316,7 @@ InputCatalog catalog_without_time(const SelectedInputs& in) {
   catalog.y = r.y;
   catalog.z = r.z;
   catalog.grid_mapping = r.grid_mapping;
+  catalog.curvilinear = r.curvilinear;
   catalog.source_nx = r.source_nx;
   for (std::size_t v = 0; v < in.names.size(); ++v) {
     catalog.variables.push_back(in.occurrences[v][0].variable->meta);
@@ -352,6 +377,7 @@ InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
   in.occurrences = usable_occurrences(in.files, in.names);
   check_one_grid(in);
   check_one_grid_mapping(in);
+  check_one_curvilinear_grid(in);
   InputCatalog catalog = catalog_without_time(in);
 
   const Occurrence& tref_occ = time_reference(in);
@@ -389,6 +415,9 @@ InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
                  g->varies_in_time ? ", varies in time" : "");
   }
   if (catalog.surface) spdlog::info("surface height: '{}'", catalog.surface->variable);
+  if (const auto& c = catalog.curvilinear) {
+    spdlog::info("curvilinear grid placed by 2-D '{}' and '{}'", c->lon_variable, c->lat_variable);
+  }
 
   const std::vector<std::string>& names = in.names;
   spdlog::info("{} input file{}: {} variable{} ({}) on a {} x {} x {} grid ({} levels), {} of {} "

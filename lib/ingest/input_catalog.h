@@ -1,19 +1,22 @@
 // SPDX-License-Identifier: Apache-2.0
 // Scans CF-NetCDF input files (classic and NetCDF-4, groups included) into one catalog:
-// the common rectilinear grid (lon, lat, vertical axes, kept exactly as stored), the
-// merged time axis across files, and where every (variable, time step) lives.
+// the common grid (lon, lat, vertical axes kept exactly as stored, or index axes and the
+// 2-D coordinates of a curvilinear grid), the merged time axis across files, and where
+// every (variable, time step) lives.
 // See docs/input-data.md for the CF conventions honoured.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "grid/axis.h"
 #include "grid/grid_mapping.h"
+#include "ingest/curvilinear_grid.h"
 
 namespace strielad::ingest {
 
@@ -108,8 +111,10 @@ struct VariableLocation {
 
 struct InputCatalog {
   std::vector<SourceFile> files;
-  Axis x, y, z;    // longitude, latitude, vertical: as stored (ascending or descending)
+  Axis x, y, z;    // longitude, latitude (or indices), vertical: as stored
   std::optional<GridMapping> grid_mapping;  // x/y are projection coordinates placed by it
+  // x/y are index axes placed by 2-D longitude and latitude (then no grid_mapping).
+  std::shared_ptr<const CurvilinearGrid> curvilinear;
   // Samples per row in the files: x.size() (or 0, meaning the same), or x.size() - 1
   // when x is a periodic longitude axis whose first meridian the catalog repeats at the
   // end (SlabReader and BoxReader copy the first column there).
@@ -138,8 +143,10 @@ struct InputCatalog {
 // Throws strielad::Error naming the file, variable, dimension or attribute at fault:
 // kNotFound (missing file or variable), kInvalidInput (missing coordinate variable,
 // non-monotonic axis, mismatched grids or time units across files, duplicate times),
-// kUnsupported (unstructured or curvilinear grids such as ICON's native triangles,
-// dimension orders other than (time, vertical, lat, lon)).
+// kUnsupported (unstructured grids such as ICON's native triangles, 2-D coordinates a
+// variable does not name or the file lacks, dimension orders other than (time, vertical,
+// lat, lon)); kInvalidInput also for 2-D coordinates that cannot place a curvilinear grid
+// (ingest/curvilinear_grid.h) or differ between files.
 InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
                          const ScanOptions& options);
 

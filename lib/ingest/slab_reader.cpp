@@ -498,6 +498,8 @@ void SlabReader::Impl::read(std::size_t v, std::size_t t, std::size_t z0, std::s
   check_converted<Out>(r, s.attrs, catalog.dims(), z0, context);
 }
 
+const InputCatalog& SlabReader::catalog() const { return impl_->catalog; }
+
 SlabReader::SlabReader(const InputCatalog& catalog, const ScanOptions& options)
     : impl_(new Impl{catalog.as_in_files(), options, {}, 0}),
       repeat_first_column_(catalog.repeats_first_column()) {

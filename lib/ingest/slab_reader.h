@@ -42,6 +42,9 @@ class SlabReader {
   // for a missing or non-finite value; kInvalidArgument without a vertical geometry.
   void read_vertical_geometry(std::size_t step, std::size_t z0, std::size_t z1,
                               std::span<double> out);
+  // The catalog it reads (as the files hold it: without a repeated first meridian).
+  const InputCatalog& catalog() const;
+
   // The catalog's surface height, y.size() * x.size() values in m, x fastest.
   // \error as read_vertical_geometry; kInvalidArgument without a surface.
   void read_surface(std::span<double> out);

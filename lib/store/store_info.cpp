@@ -59,9 +59,25 @@ void describe_time(const Store& store, std::ostream& out) {
 }
 
 // Where the grid is on the Earth: longitude/latitude axes, a grid mapping (with its PROJ
-// pipeline and the true position of the grid's corners), or nowhere.
-void describe_placement(const format::Manifest& m, std::ostream& out) {
-  if (m.grid_mapping && !m.grid_mapping->proj.empty()) {
+// pipeline and the true position of the grid's corners), 2-D coordinates (with the
+// corners' positions from the GEOMETRY file), or nowhere.
+void describe_placement(const Store& store, std::ostream& out) {
+  const format::Manifest& m = store.manifest();
+  if (m.geometry && m.geometry->horizontal.kind == format::HorizontalGeometry::Kind::kCurvilinear) {
+    fmt::print(out, "placed     by 2-D longitude '{}' and latitude '{}' (GEOMETRY)\n",
+               m.geometry->horizontal.lon_variable, m.geometry->horizontal.lat_variable);
+    const auto c = store.horizontal_coordinates();
+    TextColumns corners;
+    const std::size_t nx = c->nx, ny = c->ny;
+    for (const auto& [name, i, j] : {std::tuple{"first x, first y", std::size_t{0}, std::size_t{0}},
+                                     std::tuple{"last x, first y", nx - 1, std::size_t{0}},
+                                     std::tuple{"first x, last y", std::size_t{0}, ny - 1},
+                                     std::tuple{"last x, last y", nx - 1, ny - 1}}) {
+      corners.add_row({name, fmt::format("({}, {}) at lon {:.6f}, lat {:.6f}", i, j,
+                                         c->lon[j * nx + i], c->lat[j * nx + i])});
+    }
+    corners.print(out, "  ");
+  } else if (m.grid_mapping && !m.grid_mapping->proj.empty()) {
     fmt::print(out, "placed     by grid mapping '{}' ({})\n", m.grid_mapping->variable,
                m.grid_mapping->name);
     fmt::print(out, "  proj     {}\n", m.grid_mapping->proj);
@@ -152,7 +168,7 @@ void describe_store(const Store& store, std::ostream& out) {
                       (a->periodic ? ", periodic (round the Earth)" : "")});
   }
   axes.print(out, "  ");
-  describe_placement(m, out);
+  describe_placement(store, out);
   if (m.geometry) fmt::print(out, "geometry   {}\n", geometry_summary(m));
   describe_time(store, out);
   fmt::print(out, "variables  {}\n", m.variables.size());

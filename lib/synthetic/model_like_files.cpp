@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "geo/cf_calendar.h"
+#include "synthetic/curvilinear_like_file.h"
 #include "synthetic/model_atmosphere.h"
 #include "synthetic/model_levels.h"
 #include "synthetic/model_netcdf_file.h"
@@ -66,6 +67,8 @@ const char* file_prefix(SampleModel model) {
       return "sigma_pressure";
     case SampleModel::kWrf:
       return "wrfout";
+    case SampleModel::kCurvilinear:
+      return "curvilinear";
     case SampleModel::kSample:
       break;
   }
@@ -197,6 +200,7 @@ FileIds define_file(ModelNetcdfFile& f, SampleModel model, const SampleSpec& spe
     }
     case SampleModel::kSample:
     case SampleModel::kWrf:
+    case SampleModel::kCurvilinear:
       break;
   }
 
@@ -280,6 +284,7 @@ void write_time_invariant(ModelNetcdfFile& f, const FileIds& ids, const DatasetC
     }
     case SampleModel::kSample:
     case SampleModel::kWrf:
+    case SampleModel::kCurvilinear:
       break;
   }
 }
@@ -357,6 +362,8 @@ std::string_view sample_model_name(SampleModel model) noexcept {
       return "sigma-pressure";
     case SampleModel::kWrf:
       return "wrf";
+    case SampleModel::kCurvilinear:
+      return "curvilinear";
   }
   return "?";
 }
@@ -386,6 +393,9 @@ SampleResult write_model_like_dataset(const SampleSpec& spec, SampleModel model,
                                       const ModelSampleOptions& options,
                                       SampleProgress progress) {
   if (model == SampleModel::kWrf) return write_wrf_like_dataset(spec, out_dir, std::move(progress));
+  if (model == SampleModel::kCurvilinear) {
+    return write_curvilinear_like_dataset(spec, out_dir, std::move(progress));
+  }
   validate_sample_spec(spec);
   const std::vector<std::string> names = model_sample_file_names(spec, model);
   prepare_sample_directory(out_dir);

@@ -12,7 +12,9 @@
 //   sigma-pressure: IFS/CAM-like hybrid sigma-pressure levels lev (ap: hyam, b: hybm,
 //     ps: ps), top to bottom, ps(time, lat, lon), orog, and t, q, u, v;
 //   wrf: WRF ARW history files wrfout_d01_<date> on a Lambert conformal C grid
-//     (wrf_like_file.h).
+//     (wrf_like_file.h);
+//   curvilinear: a rotated-pole grid written only as 2-D lat/lon, on height levels
+//     (curvilinear_like_file.h).
 // The grid, steps, seed, step length, file split and deflate level come from SampleSpec
 // (its variable list is not used: each model writes its own variables).
 #pragma once
@@ -27,10 +29,10 @@
 
 namespace strielad::synthetic {
 
-enum class SampleModel { kSample, kIcon, kIconCf, kSigmaPressure, kWrf };
+enum class SampleModel { kSample, kIcon, kIconCf, kSigmaPressure, kWrf, kCurvilinear };
 
 // "sample" (the default sample_dataset.h writes), "icon", "icon-cf", "sigma-pressure",
-// "wrf".
+// "wrf", "curvilinear".
 std::string_view sample_model_name(SampleModel model) noexcept;
 
 // The 3-D variables a model writes, in file order (kInvalidArgument for kSample).
@@ -41,7 +43,7 @@ struct ModelSampleOptions {
 };
 
 // File names of a model-like sample: "<prefix>_t000.nc", ... or "<prefix>.nc" with
-// the prefix icon, icon_cf or sigma_pressure; wrf_sample_file_names for kWrf.
+// the prefix icon, icon_cf, sigma_pressure or curvilinear; wrf_sample_file_names for kWrf.
 // kInvalidArgument for kSample.
 std::vector<std::string> model_sample_file_names(const SampleSpec& spec, SampleModel model);
 

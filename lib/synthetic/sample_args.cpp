@@ -80,11 +80,12 @@ std::vector<std::string> parse_variable_list(std::string_view text) {
 SampleModel parse_sample_model(std::string_view text) {
   const std::string_view name = trim(text);
   for (const SampleModel model : {SampleModel::kSample, SampleModel::kIcon, SampleModel::kIconCf,
-                                  SampleModel::kSigmaPressure, SampleModel::kWrf}) {
+                                  SampleModel::kSigmaPressure, SampleModel::kWrf,
+                                  SampleModel::kCurvilinear}) {
     if (name == sample_model_name(model)) return model;
   }
   throw make_error(ErrorCode::kInvalidArgument,
-                   "--model '{}': expected sample, icon, icon-cf, sigma-pressure or wrf", text);
+                   "--model '{}': expected sample, icon, icon-cf, sigma-pressure, wrf or curvilinear", text);
 }
 
 }  // namespace strielad::synthetic
