@@ -3,7 +3,8 @@
 # A curvilinear grid placed only by 2-D latitude/longitude through the tools as a user runs
 # them: the curvilinear sample (a rotated pole written as lat(y, x), lon(y, x), a file per
 # step) converts into a version-5 store with index axes and a GEOMETRY file that info
-# shows and verify checks, and extracts in the axis frame (index coordinates); a folded
+# shows and verify checks, and extracts in the axis frame (index coordinates) and, placed
+# by those coordinates, in the lonlat, metric and ecef frames and with a geographic box; a folded
 # grid is refused naming the cell; NCL's Eta file, whose coordinates attribute names
 # variables it lacks, stays refused.
 # Usage: curvilinear_cli_test.sh STRIELAD_CONVERT WORK_DIR
@@ -42,6 +43,27 @@ if "$convert" "$work/in"/*.nc -o "$work/store" -q; then
   else
     fail "extract --frame axis"
     cat "$work/axis.err"
+  fi
+  # Placed by the GEOMETRY coordinates in every other frame.
+  for frame in lonlat metric ecef; do
+    if "$serve" extract --store "$work/store" --scene "$work/scene.json" -o "$work/$frame.vtp" \
+      --frame "$frame" --json >"$work/$frame.json" 2>"$work/$frame.err"; then
+      grep -q '"triangles": [1-9]' "$work/$frame.json" || fail "$frame extract: no triangles"
+      grep -q "\"frame\": \"$frame\"" "$work/$frame.json" || fail "$frame extract: frame not recorded"
+    else
+      fail "extract --frame $frame"
+      cat "$work/$frame.err"
+    fi
+  done
+  # A geographic box is evaluated on the stored coordinates.
+  echo '{"format_version": 3, "subvolumes": [{"id": 1, "limits": [{"var": "temp", "max": 265}],
+         "geographic": {"lat": [-90, 50]}}]}' >"$work/box.json"
+  if "$serve" extract --store "$work/store" --scene "$work/box.json" -o "$work/box.vtp" \
+    --frame lonlat --json >"$work/box.out" 2>"$work/box.err"; then
+    grep -q '"triangles": [1-9]' "$work/box.out" || fail "geographic box: no triangles"
+  else
+    fail "extract with a geographic box"
+    cat "$work/box.err"
   fi
 else
   fail "conversion of the curvilinear sample"

@@ -9,7 +9,11 @@
 #include <vector>
 
 #include "convert/converter.h"
+#include "extract/level_extraction.h"
+#include "extract/mesh_metrics.h"
+#include "extract/output_frame.h"
 #include "format/geometry_file_format.h"
+#include "scene/scene.h"
 #include "store/store.h"
 #include "support/cs2cs.h"
 #include "support/netcdf_fixture.h"
@@ -118,6 +122,30 @@ TEST(CurvilinearConversionTest, PlacementAgreesWithCs2cs) {
 // file holds the coordinates and the surface; the orientation is the grid's (-1: i east,
 // j south) times the field's (+1: heights grow with k), and the field passes the
 // converter's direction check with it.
+TEST(CurvilinearConversionTest, ExtractedRegionsAreClosedAndOutwardOnTheEarth) {
+  // The sample's rotated grid is mirrored against east/north and its height axis runs
+  // from the top: the regions must still come out closed and outward once placed.
+  const Store& store = *converted().store;
+  const format::Manifest& m = store.manifest();
+  Scene scene;
+  SubVolume warm;
+  warm.id = 1;
+  warm.limits.push_back(Limit{"temp", 275.0, std::nullopt});
+  scene.subvolumes.push_back(warm);
+  LevelExtractionOptions o;
+  o.merge_face_squares = false;
+  const LevelExtraction level = extract_level(store, resolve_scene(scene, m, "test scene"), o);
+  for (const OutputFrame frame : {OutputFrame::kLonLat, OutputFrame::kLocalMetric, OutputFrame::kEcef}) {
+    Mesh mesh = seamless_union(level, 1);
+    ASSERT_FALSE(mesh.triangles.empty());
+    FrameTransform(m, frame, choose_vertical_placement(m), store.horizontal_coordinates()).apply(mesh);
+    EXPECT_TRUE(check_mesh(mesh).closed()) << output_frame_name(frame);
+    if (frame != OutputFrame::kLonLat) {  // degrees and metres mixed: no volume there
+      EXPECT_GT(enclosed_volume(mesh), 0) << output_frame_name(frame);
+    }
+  }
+}
+
 TEST(CurvilinearConversionTest, SurfaceAndHeightFieldOnACurvilinearGrid) {
   using testing::NcAttr;
   const testing::TempDir dir;
