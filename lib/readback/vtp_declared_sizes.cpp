@@ -130,6 +130,7 @@ class DeclaredSizeCheck {
     for (int i = 0; i < root->GetNumberOfNestedElements(); ++i) {
       vtkXMLDataElement* nested = root->GetNestedElement(i);
       if (std::string_view(nested->GetName()) == "AppendedData") {
+        has_appended_ = true;
         raw_appended_ = attribute(nested, "encoding") == "raw";
         appended_start_ = std::size_t(std::clamp<vtkTypeInt64>(parser->GetAppendedDataPosition(), 0,
                                                                vtkTypeInt64(text_.size())));
@@ -207,34 +208,42 @@ class DeclaredSizeCheck {
                        "ascii, binary or appended)",
                        what_, name, attribute(element, "Name").value_or(""), *format);
     }
-    if (!compressed_ || !format) return;
-    if (const auto start = compressed_start(element, *format)) {
+    if (!compressed_) return;
+    // VTK reads any array with an offset as appended data whatever its format says (a
+    // misspelt "fozmat" too), an array of format binary inline; ascii has no header.
+    const bool appended = element->GetAttribute("offset") != nullptr;
+    if (!appended && format != "binary") return;
+    if (const auto start = compressed_start(element, appended)) {
       check_compressed_header(name, n, *start);
     }
   }
 
-  // The compressed header of an appended or binary array; nothing where VTK refuses the
-  // array itself (an offset beyond the data, a short header) or for other formats.
-  std::optional<CompressedStart> compressed_start(vtkXMLDataElement* element,
-                                                  std::string_view format) const {
+  // The compressed header of an appended (raw or base64) or inline binary array; nothing
+  // where VTK refuses the array itself (an offset beyond the data, a short header).
+  std::optional<CompressedStart> compressed_start(vtkXMLDataElement* element, bool appended) const {
     const std::size_t header = 3 * header_bytes_;
     CompressedStart start;
-    if (format == "appended" && raw_appended_) {
+    if (appended) {
+      if (!has_appended_) return std::nullopt;  // VTK finds no data to read
       const double offset = count(element, "offset", 0);
       const std::size_t appended_bytes = text_.size() - std::min(text_.size(), appended_start_);
       if (offset >= double(appended_bytes)) return std::nullopt;  // VTK refuses
       const std::size_t p = appended_start_ + std::size_t(offset);
-      if (text_.size() - p < header) return std::nullopt;  // VTK refuses a short header
-      start.words = std::string(text_.substr(p, header));
-      start.room = text_.size() - p - header;
-    } else if (format == "binary") {
+      if (raw_appended_) {
+        if (text_.size() - p < header) return std::nullopt;  // VTK refuses a short header
+        start.words = std::string(text_.substr(p, header));
+        start.room = text_.size() - p - header;
+      } else {  // base64: the offset counts encoded characters
+        start.words = decode_base64_prefix(text_.substr(p), header);
+        if (start.words.size() < header) return std::nullopt;
+        start.room = text_.size() - p;
+      }
+    } else {
       const std::string_view body =
           element->GetCharacterData() != nullptr ? element->GetCharacterData() : "";
       start.words = decode_base64_prefix(body, header);
       if (start.words.size() < header) return std::nullopt;
       start.room = body.size();
-    } else {
-      return std::nullopt;
     }
     return start;
   }
@@ -276,6 +285,7 @@ class DeclaredSizeCheck {
   double limit_;
   std::size_t header_bytes_ = 4;  // header_type UInt32 (VTK's default) or UInt64
   bool compressed_ = false;
+  bool has_appended_ = false;
   bool raw_appended_ = false;
   std::size_t appended_start_ = 0;
 };

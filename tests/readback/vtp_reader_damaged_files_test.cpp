@@ -74,6 +74,14 @@ TEST(VtpReaderDamagedFilesTest, FieldChildOfAnotherNameIsCheckedAsAnArray) {
                {path.string(), "Arrt 'frame' of type ''"});
 }
 
+TEST(VtpReaderDamagedFilesTest, ArrayWithAnOffsetButNoFormatIsCheckedAsAppended) {
+  // fozmat="appunded": no format attribute, but an offset, so VTK reads appended data,
+  // here a compressed header with blocks of 0 bytes: SIGFPE in VTK.
+  const auto path = kRegressions / "offset-without-format-sigfpe.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput,
+               {path.string(), "compressed header has", "blocks of 0 bytes"});
+}
+
 TEST(VtpReaderDamagedFilesTest, MoreFieldStringsThanTuplesStayWithinTheArray) {
   // Without its compressor the compressed bytes read as many NUL-terminated strings for
   // a one-tuple array: VTK 9.1 stored them all past the array's end (heap overflow). The
