@@ -54,7 +54,8 @@ std::uint64_t directory_bytes(const fs::path& dir) {
 std::vector<Input> ensure_inputs(const GeometryBenchOptions& o) {
   std::vector<Input> inputs{{"rectilinear", synthetic::SampleModel::kSample, "ta", {}},
                             {"icon", synthetic::SampleModel::kIcon, "temp", {}},
-                            {"sigma-pressure", synthetic::SampleModel::kSigmaPressure, "t", {}}};
+                            {"sigma-pressure", synthetic::SampleModel::kSigmaPressure, "t", {}},
+                            {"curvilinear", synthetic::SampleModel::kCurvilinear, "temp", {}}};
   const fs::path dir = o.work / "input";
   const std::string stamp =
       fmt::format("{}x{}x{} steps {} seed 1\n", o.dims.x, o.dims.y, o.dims.z, o.steps);
@@ -116,7 +117,8 @@ Extraction extract_once(const Store& store, const std::string& temperature, bool
   scene.subvolumes.push_back(cold);
   std::optional<FrameTransform> transform;
   if (placed) {
-    transform.emplace(m, OutputFrame::kLonLat, choose_vertical_placement(m));
+    transform.emplace(m, OutputFrame::kLonLat, choose_vertical_placement(m),
+                      store.horizontal_coordinates());
     const auto& v = transform->vertical();
     if (v.kind == VerticalPlacement::Kind::kGeometry && !v.attribute.empty()) {
       scene.attributes.push_back(v.attribute);
@@ -206,6 +208,10 @@ GeometryBenchReport run_geometry_bench(const GeometryBenchOptions& o) {
     } else {
       runs.geometry = fmt::format("height axis '{}'", m.z.name);
     }
+    if (m.geometry && m.geometry->horizontal.kind == format::HorizontalGeometry::Kind::kCurvilinear) {
+      runs.geometry = fmt::format("2-D {}/{} (GEOMETRY), {}", m.geometry->horizontal.lon_variable,
+                                  m.geometry->horizontal.lat_variable, runs.geometry);
+    }
   }
   for (std::size_t i = 0; i < inputs.size(); ++i) {  // warm-up: files in the page cache
     const auto store = Store::open(o.work / "stores" / inputs[i].name);
@@ -282,12 +288,14 @@ std::vector<Table> geometry_tables(const GeometryBenchReport& report) {
   }
   conversion.notes.push_back(
       "samples: every variable and step (the models write different variables: rectilinear "
-      "the sample's, icon temp qc u v w, sigma-pressure t q u v); the geometry is stored "
-      "once (icon) or per step (sigma-pressure)");
+      "the sample's, icon and curvilinear temp qc u v w, sigma-pressure t q u v); the "
+      "geometry is stored once (icon, curvilinear: its 2-D coordinates) or per step "
+      "(sigma-pressure)");
   extraction.notes.push_back(
       "placed: the geometry field read as one more brick per node with triangles, carried as "
       "an attribute and applied with the frame transform (rectilinear: the height axis, no "
-      "brick); axis: the same scene in the axis frame, node-face squares merged into "
+      "brick; curvilinear: the height axis and every vertex's longitude and latitude "
+      "bilinear between its columns' coordinates); axis: the same scene in the axis frame, node-face squares merged into "
       "rectangles; axis unmerged: without merging, as every frame that bends the lattice "
       "extracts (a merged rectangle would cut through the terrain as a chord). placed / "
       "axis unmerged is the geometry map's own cost (wall and CPU seconds: on a shared "

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string_view>
 
@@ -172,8 +173,29 @@ class DeclaredSizeCheck {
     } else if (name == "FieldData") {
       section.tuples = 0;
     }
+    if (section.children_are_arrays) check_array_names(element, name);
     for (int i = 0; i < element->GetNumberOfNestedElements(); ++i) {
       walk(element->GetNestedElement(i), section);
+    }
+  }
+
+  // The arrays of a FieldData, PointData or CellData element: each named, no name twice
+  // (VTK 9.1 keeps one array per name, then reads the section's elements by index into
+  // the arrays it kept, and dereferences null past the last).
+  void check_array_names(vtkXMLDataElement* section, std::string_view name) const {
+    std::set<std::string_view> seen;
+    for (int i = 0; i < section->GetNumberOfNestedElements(); ++i) {
+      const char* array = section->GetNestedElement(i)->GetAttribute("Name");
+      if (array == nullptr || *array == '\0') {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: not a readable VTK XML PolyData file: {} array {} has no Name", what_,
+                         name, i);
+      }
+      if (!seen.insert(array).second) {
+        throw make_error(ErrorCode::kInvalidInput,
+                         "{}: not a readable VTK XML PolyData file: {} has two arrays named '{}'",
+                         what_, name, array);
+      }
     }
   }
 

@@ -82,6 +82,14 @@ TEST(VtpReaderDamagedFilesTest, ArrayWithAnOffsetButNoFormatIsCheckedAsAppended)
                {path.string(), "compressed header has", "blocks of 0 bytes"});
 }
 
+TEST(VtpReaderDamagedFilesTest, TwoArraysOfOneNameAreRefused) {
+  // CellData with node_id and face_kind twice: VTK keeps one array per name, reads the
+  // elements by index into them and dereferences null past the last (SEGV).
+  const auto path = kRegressions / "two-cell-arrays-of-one-name.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput,
+               {path.string(), "CellData has two arrays named 'node_id'"});
+}
+
 TEST(VtpReaderDamagedFilesTest, MoreFieldStringsThanTuplesStayWithinTheArray) {
   // Without its compressor the compressed bytes read as many NUL-terminated strings for
   // a one-tuple array: VTK 9.1 stored them all past the array's end (heap overflow). The
