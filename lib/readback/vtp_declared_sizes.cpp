@@ -217,6 +217,14 @@ class DeclaredSizeCheck {
                        "XML data type)",
                        what_, name, attribute(element, "Name").value_or(""), type.value_or(""));
     }
+    // VTK 9.1 returns no array for a component count below 1, leaking the one it made.
+    if (const auto components = attribute(element, "NumberOfComponents");
+        components && !(count(element, "NumberOfComponents", 0) >= 1)) {
+      throw make_error(ErrorCode::kInvalidInput,
+                       "{}: not a readable VTK XML PolyData file: {} '{}' has NumberOfComponents "
+                       "'{}' (not a positive integer)",
+                       what_, name, attribute(element, "Name").value_or(""), *components);
+    }
     const double n = count(element, "NumberOfTuples", tuples) *
                      std::max(1.0, count(element, "NumberOfComponents", 1));
     if (n > limit_) refuse(name, n);

@@ -90,6 +90,13 @@ TEST(VtpReaderDamagedFilesTest, TwoArraysOfOneNameAreRefused) {
                {path.string(), "CellData has two arrays named 'node_id'"});
 }
 
+TEST(VtpReaderDamagedFilesTest, ComponentCountBelowOneIsRefused) {
+  // NumberOfComponents="-3": VTK makes the array, refuses the count and leaks the array.
+  const auto path = kRegressions / "negative-component-count-leak.vtp";
+  expect_error([&] { read_vtp(path); }, ErrorCode::kInvalidInput,
+               {path.string(), "'Normals' has NumberOfComponents '-3'"});
+}
+
 TEST(VtpReaderDamagedFilesTest, MoreFieldStringsThanTuplesStayWithinTheArray) {
   // Without its compressor the compressed bytes read as many NUL-terminated strings for
   // a one-tuple array: VTK 9.1 stored them all past the array's end (heap overflow). The
