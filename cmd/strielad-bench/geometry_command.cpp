@@ -54,8 +54,8 @@ void register_geometry(CLI::App& app, cli::Action& action, std::string command_l
   f->command_line = std::move(command_line);
   f->sub = app.add_subcommand(
       "geometry",
-      "Terrain-following levels: conversion and level-0 extraction of the ICON-like and "
-      "hybrid sigma-pressure samples against the rectilinear sample of the same size");
+      "Grid geometries: conversion and level-0 extraction of the ICON-like, hybrid "
+      "sigma-pressure and curvilinear samples against the rectilinear sample of the same size");
   f->sub->add_option("--dims", f->dims, "Grid XxYxZ of the generated samples")
       ->capture_default_str();
   f->sub->add_option("--steps", f->steps, "Time steps of the samples")
