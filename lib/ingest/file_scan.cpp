@@ -200,6 +200,8 @@ class FileScanner {
                                                  const std::vector<DimensionRole>& roles);
   Axis coordinate_axis(const VariableRef& ref, AxisKind kind);
   void read_axes(ScannedVariable& sv, const VariableDimensions& var);
+  // The time coordinate of a 4-D variable (its first dimension), its values checked.
+  TimeCoordinate time_coordinate(const VariableDimensions& var);
   const std::vector<LonLatVariable>& lonlat_variables(int grpid);
   std::optional<VariableRef> paired_coordinate(int grpid, int dimid);
   std::optional<LonLatVariable> lonlat_variable(int grpid, const std::string& name);
@@ -531,6 +533,16 @@ Axis FileScanner::coordinate_axis(const VariableRef& ref, AxisKind kind) {
 
 // The axes of a variable whose dimensions are (time,) vertical, lat, lon; throws Error
 // when they do not make a grid.
+TimeCoordinate FileScanner::time_coordinate(const VariableDimensions& var) {
+  const Coordinate& c = coordinate(*var.coords[0], false);
+  TimeCoordinate t{c.attrs.name, c.attrs.units, c.calendar, c.values};
+  Axis as_axis;
+  as_axis.name = t.name;
+  as_axis.values = t.values;
+  check_axis_values(as_axis, file_);
+  return t;
+}
+
 void FileScanner::read_axes(ScannedVariable& sv, const VariableDimensions& var) {
   const std::size_t first_spatial = var.dimids.size() - 3;
   sv.z = coordinate_axis(*var.coords[first_spatial], AxisKind::kOther);
@@ -549,15 +561,7 @@ void FileScanner::read_axes(ScannedVariable& sv, const VariableDimensions& var) 
   sv.grid_mapping = std::move(horizontal.mapping);
   sv.source_nx = horizontal.source_nx;
   for (const Axis* a : {&sv.x, &sv.y, &sv.z}) check_axis_values(*a, file_);
-  if (var.dimids.size() == 4) {
-    const Coordinate& c = coordinate(*var.coords[0], false);
-    TimeCoordinate t{c.attrs.name, c.attrs.units, c.calendar, c.values};
-    Axis as_axis;
-    as_axis.name = t.name;
-    as_axis.values = t.values;
-    check_axis_values(as_axis, file_);
-    sv.time = std::move(t);
-  }
+  if (var.dimids.size() == 4) sv.time = time_coordinate(var);
 }
 
 // A (time?, vertical?, y, x) variable whose y and x dimensions have no coordinate variables
@@ -670,15 +674,7 @@ ScannedVariable FileScanner::scan_curvilinear(ScannedVariable sv, const Variable
     sv.source_nx = nx;
     sv.z = coordinate_axis(*var.coords[n - 3], AxisKind::kOther);
     for (const Axis* a : {&sv.x, &sv.y, &sv.z}) check_axis_values(*a, file_);
-    if (n == 4) {
-      const Coordinate& c = coordinate(*var.coords[0], false);
-      TimeCoordinate t{c.attrs.name, c.attrs.units, c.calendar, c.values};
-      Axis as_axis;
-      as_axis.name = t.name;
-      as_axis.values = t.values;
-      check_axis_values(as_axis, file_);
-      sv.time = std::move(t);
-    }
+    if (n == 4) sv.time = time_coordinate(var);
   } catch (const Error& e) {
     return fail(VariableClass::kInvalid, e);
   }

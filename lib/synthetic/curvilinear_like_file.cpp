@@ -11,6 +11,7 @@
 #include "geo/grid_projection.h"
 #include "synthetic/model_atmosphere.h"
 #include "synthetic/model_netcdf_file.h"
+#include "synthetic/model_variables.h"
 #include "synthetic/sample_grid.h"
 #include "synthetic/sample_terrain.h"
 #include "synthetic/sample_writer.h"
@@ -20,22 +21,8 @@ namespace {
 
 using Type = ModelNetcdfFile::Type;
 
-struct CurvilinearVariable {
-  const char* name;
-  ModelField field;
-  const char* units;
-  const char* standard_name;
-  const char* long_name;
-};
-
-constexpr std::array<CurvilinearVariable, 5> kVariables{{
-    {"temp", ModelField::kTemperature, "K", "air_temperature", "Temperature"},
-    {"qc", ModelField::kCloudWater, "kg kg-1", "mass_fraction_of_cloud_liquid_water_in_air",
-     "specific cloud water content"},
-    {"u", ModelField::kEastward, "m s-1", "eastward_wind", "Zonal wind"},
-    {"v", ModelField::kNorthward, "m s-1", "northward_wind", "Meridional wind"},
-    {"w", ModelField::kUpward, "m s-1", "upward_air_velocity", "Vertical velocity"},
-}};
+// The ICON sample's variables, on the curvilinear grid.
+constexpr const auto& kVariables = kIconVariables;
 
 struct FileIds {
   int time = -1, height = -1, lat = -1, lon = -1;
@@ -71,7 +58,7 @@ FileIds define_file(ModelNetcdfFile& f, const SampleSpec& spec) {
   f.text(ids.lon, "units", "degrees_east");
 
   const std::array<std::size_t, 4> chunk{1, 1, d.y, d.x};
-  for (const CurvilinearVariable& v : kVariables) {
+  for (const ModelVariable& v : kVariables) {
     const int var = f.variable(v.name, Type::kFloat, {dim_time, dim_height, dim_y, dim_x});
     f.chunk_by_plane(var, chunk, spec.deflate);
     f.text(var, "standard_name", v.standard_name);

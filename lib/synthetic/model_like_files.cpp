@@ -14,6 +14,7 @@
 #include "synthetic/model_atmosphere.h"
 #include "synthetic/model_levels.h"
 #include "synthetic/model_netcdf_file.h"
+#include "synthetic/model_variables.h"
 #include "synthetic/sample_grid.h"
 #include "synthetic/sample_terrain.h"
 #include "synthetic/sample_writer.h"
@@ -24,22 +25,7 @@ namespace {
 
 using Type = ModelNetcdfFile::Type;
 
-struct ModelVariable {
-  const char* name;
-  ModelField field;
-  const char* units;
-  const char* standard_name;
-  const char* long_name;
-};
 
-constexpr std::array<ModelVariable, 5> kIconVariables{{
-    {"temp", ModelField::kTemperature, "K", "air_temperature", "Temperature"},
-    {"qc", ModelField::kCloudWater, "kg kg-1", "mass_fraction_of_cloud_liquid_water_in_air",
-     "specific cloud water content"},
-    {"u", ModelField::kEastward, "m s-1", "eastward_wind", "Zonal wind"},
-    {"v", ModelField::kNorthward, "m s-1", "northward_wind", "Meridional wind"},
-    {"w", ModelField::kUpward, "m s-1", "upward_air_velocity", "Vertical velocity"},
-}};
 constexpr std::array<ModelVariable, 4> kSigmaPressureVariables{{
     {"t", ModelField::kTemperature, "K", "air_temperature", "Temperature"},
     {"q", ModelField::kSpecificHumidity, "kg kg-1", "specific_humidity", "Specific humidity"},
