@@ -47,10 +47,7 @@ std::optional<FrameTransform> output_transform(const ExtractArgs& args, const St
   }
   std::optional<FrameTransform> transform;
   if (frame != OutputFrame::kAxis) {
-    const bool curvilinear = manifest.geometry && manifest.geometry->horizontal.kind ==
-                                                      format::HorizontalGeometry::Kind::kCurvilinear;
-    transform.emplace(manifest, frame, choose_vertical_placement(manifest, args.height_var),
-                      curvilinear ? store.horizontal_coordinates() : nullptr);
+    transform.emplace(store, frame, choose_vertical_placement(manifest, args.height_var));
     spdlog::info("frame {}: heights from the {}", output_frame_name(frame),
                  transform->vertical().description);
   }

@@ -117,8 +117,7 @@ Extraction extract_once(const Store& store, const std::string& temperature, bool
   scene.subvolumes.push_back(cold);
   std::optional<FrameTransform> transform;
   if (placed) {
-    transform.emplace(m, OutputFrame::kLonLat, choose_vertical_placement(m),
-                      store.horizontal_coordinates());
+    transform.emplace(store, OutputFrame::kLonLat, choose_vertical_placement(m));
     const auto& v = transform->vertical();
     if (v.kind == VerticalPlacement::Kind::kGeometry && !v.attribute.empty()) {
       scene.attributes.push_back(v.attribute);
@@ -208,7 +207,7 @@ GeometryBenchReport run_geometry_bench(const GeometryBenchOptions& o) {
     } else {
       runs.geometry = fmt::format("height axis '{}'", m.z.name);
     }
-    if (m.geometry && m.geometry->horizontal.kind == format::HorizontalGeometry::Kind::kCurvilinear) {
+    if (format::is_curvilinear(m)) {
       runs.geometry = fmt::format("2-D {}/{} (GEOMETRY), {}", m.geometry->horizontal.lon_variable,
                                   m.geometry->horizontal.lat_variable, runs.geometry);
     }

@@ -12,8 +12,7 @@ namespace strielad {
 CurvilinearLonLat::CurvilinearLonLat(
     std::shared_ptr<const format::HorizontalCoordinates> coordinates)
     : c_(std::move(coordinates)) {
-  if (c_ == nullptr || c_->nx < 2 || c_->ny < 2 ||
-      c_->lon.size() != std::size_t(c_->nx) * c_->ny ||
+  if (c_ == nullptr || c_->nx < 2 || c_->ny < 2 || c_->lon.size() != std::size_t(c_->nx) * c_->ny ||
       c_->lat.size() != std::size_t(c_->nx) * c_->ny) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "curvilinear placement needs at least 2 x 2 longitudes and latitudes, one "
@@ -32,15 +31,17 @@ CurvilinearLonLat::Cell CurvilinearLonLat::cell(double i, double j) const {
   return {i0, j0, s, t};
 }
 
-std::array<double, 2> CurvilinearLonLat::corner(std::size_t i, std::size_t j) const {
-  const std::size_t k = j * c_->nx + i;
-  return {c_->lon[k], c_->lat[k]};
+std::array<std::array<double, 2>, 4> CurvilinearLonLat::corners(const Cell& c) const {
+  const auto at = [&](std::size_t i, std::size_t j) {
+    const std::size_t k = j * c_->nx + i;
+    return std::array<double, 2>{c_->lon[k], c_->lat[k]};
+  };
+  return {at(c.i0, c.j0), at(c.i0 + 1, c.j0), at(c.i0, c.j0 + 1), at(c.i0 + 1, c.j0 + 1)};
 }
 
 std::array<double, 2> CurvilinearLonLat::at(double i, double j) const {
   const Cell c = cell(i, j);
-  const auto p00 = corner(c.i0, c.j0), p10 = corner(c.i0 + 1, c.j0);
-  const auto p01 = corner(c.i0, c.j0 + 1), p11 = corner(c.i0 + 1, c.j0 + 1);
+  const auto [p00, p10, p01, p11] = corners(c);
   std::array<double, 2> out{};
   for (int k = 0; k < 2; ++k) {
     const double bottom = p00[k] + c.s * (p10[k] - p00[k]);
@@ -52,8 +53,7 @@ std::array<double, 2> CurvilinearLonLat::at(double i, double j) const {
 
 std::array<double, 4> CurvilinearLonLat::jacobian(double i, double j) const {
   const Cell c = cell(i, j);
-  const auto p00 = corner(c.i0, c.j0), p10 = corner(c.i0 + 1, c.j0);
-  const auto p01 = corner(c.i0, c.j0 + 1), p11 = corner(c.i0 + 1, c.j0 + 1);
+  const auto [p00, p10, p01, p11] = corners(c);
   std::array<double, 4> d{};
   for (int k = 0; k < 2; ++k) {
     d[2 * k] = (1 - c.t) * (p10[k] - p00[k]) + c.t * (p11[k] - p01[k]);      // d/di

@@ -38,7 +38,8 @@ class CurvilinearLonLat {
     double s, t;  // fractions within the cell
   };
   Cell cell(double i, double j) const;
-  std::array<double, 2> corner(std::size_t i, std::size_t j) const;
+  // The cell's corners (i0, j0), (i0 + 1, j0), (i0, j0 + 1), (i0 + 1, j0 + 1).
+  std::array<std::array<double, 2>, 4> corners(const Cell& c) const;
 
   std::shared_ptr<const format::HorizontalCoordinates> c_;
 };

@@ -50,9 +50,7 @@ std::shared_ptr<const GeoLocation> GeoLocation::of(const format::Manifest& m) {
 
 std::shared_ptr<const GeoLocation> GeoLocation::of(const Store& store) {
   const format::Manifest& m = store.manifest();
-  const bool curvilinear =
-      m.geometry && m.geometry->horizontal.kind == format::HorizontalGeometry::Kind::kCurvilinear;
-  if (!curvilinear) return of(m);
+  if (!format::is_curvilinear(m)) return of(m);
   const auto coordinates = store.horizontal_coordinates();
   if (coordinates == nullptr || !coordinates->has_coordinates()) {
     throw make_error(ErrorCode::kCorrupt, "{}: a curvilinear store without its coordinates",

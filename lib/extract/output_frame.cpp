@@ -19,6 +19,7 @@
 #include "geo/horizontal_orientation.h"
 #include "geo/standard_atmosphere.h"
 #include "grid/units.h"
+#include "store/store.h"
 
 namespace strielad {
 
@@ -322,14 +323,13 @@ FrameTransform::FrameTransform(const format::Manifest& manifest, OutputFrame fra
       projection_(mapped_axes(manifest) ? manifest.grid_mapping->proj : std::string()) {
   geographic_ = geographic_axes(manifest) || mapped_axes(manifest);
   if (frame_ == OutputFrame::kAxis) return;
-  const format::GridGeometry* g = manifest.geometry ? &*manifest.geometry : nullptr;
-  if (g != nullptr && g->horizontal.kind == format::HorizontalGeometry::Kind::kCurvilinear) {
+  if (format::is_curvilinear(manifest)) {
+    const format::HorizontalGeometry& h = manifest.geometry->horizontal;
     if (coordinates == nullptr || !coordinates->has_coordinates()) {
       throw make_error(ErrorCode::kUnsupported,
                        "output frame '{}' of a curvilinear store ({} / {}) needs the "
                        "coordinates of its GEOMETRY file",
-                       output_frame_name(frame_), g->horizontal.lon_variable,
-                       g->horizontal.lat_variable);
+                       output_frame_name(frame_), h.lon_variable, h.lat_variable);
     }
     curvilinear_.emplace(std::move(coordinates));
     geographic_ = true;
@@ -382,6 +382,12 @@ FrameTransform::FrameTransform(const format::Manifest& manifest, OutputFrame fra
     z_unit_ = vertical_.metres_per_unit;
   }
 }
+
+FrameTransform::FrameTransform(const Store& store, OutputFrame frame, VerticalPlacement vertical)
+    : FrameTransform(store.manifest(), frame, std::move(vertical),
+                     frame != OutputFrame::kAxis && format::is_curvilinear(store.manifest())
+                         ? store.horizontal_coordinates()
+                         : nullptr) {}
 
 std::array<double, 3> FrameTransform::lon_lat_height(const std::array<double, 3>& p,
                                                      double height) const {
@@ -557,7 +563,7 @@ void FrameTransform::apply(Mesh& mesh) const {
       break;
     }
   }
-  if (frame_ == OutputFrame::kLonLat && geographic_ && projection_.identity() && !curvilinear_) {
+  if (frame_ == OutputFrame::kLonLat && geographic_axes(*manifest_)) {
     // Longitude and latitude stay as they are: only the height is new.
     for (; v < mesh.positions.size(); ++v) {
       auto& p = mesh.positions[v];

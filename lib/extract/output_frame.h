@@ -34,6 +34,8 @@
 
 namespace strielad {
 
+class Store;
+
 enum class OutputFrame { kAxis, kLonLat, kLocalMetric, kEcef };
 
 // "axis", "lonlat", "metric" or "ecef"; throws kInvalidArgument listing them.
@@ -89,6 +91,9 @@ class FrameTransform {
   // `coordinates`, naming GEOMETRY.
   FrameTransform(const format::Manifest& manifest, OutputFrame frame, VerticalPlacement vertical,
                  std::shared_ptr<const format::HorizontalCoordinates> coordinates = nullptr);
+  // The store's manifest, and its GEOMETRY coordinates when its grid is curvilinear (read
+  // then, and only then).
+  FrameTransform(const Store& store, OutputFrame frame, VerticalPlacement vertical);
 
   OutputFrame frame() const { return frame_; }
   // Whether the map from axis coordinates is affine (the axis frame; lonlat and metric of

@@ -304,8 +304,7 @@ void check_geometry_file_matches(const GeometryFile& file, const Manifest& m,
     throw make_error(ErrorCode::kCorrupt, "{}: grid {} x {} is not the manifest's {} x {}", what,
                      c.nx, c.ny, m.x.size(), m.y.size());
   }
-  const bool curvilinear =
-      m.geometry && m.geometry->horizontal.kind == HorizontalGeometry::Kind::kCurvilinear;
+  const bool curvilinear = is_curvilinear(m);
   const bool surface = m.geometry && m.geometry->surface.has_value();
   if (c.has_coordinates() != curvilinear || c.surface_m.has_value() != surface) {
     throw make_error(ErrorCode::kCorrupt,

@@ -125,9 +125,12 @@ std::uint32_t version_for_plan(const Manifest& m) {
 
 std::string step_file_name(std::uint32_t step) { return fmt::format("steps/step-{:06d}.bricks", step); }
 
+bool is_curvilinear(const Manifest& m) {
+  return m.geometry && m.geometry->horizontal.kind == HorizontalGeometry::Kind::kCurvilinear;
+}
+
 bool has_geometry_file(const Manifest& m) {
-  return m.geometry && (m.geometry->surface ||
-                        m.geometry->horizontal.kind == HorizontalGeometry::Kind::kCurvilinear);
+  return is_curvilinear(m) || (m.geometry && m.geometry->surface);
 }
 
 namespace {
@@ -188,8 +191,7 @@ void check_plan_version(const Manifest& m) {
 // A curvilinear grid is placed by its coordinate arrays, not by a grid mapping, and its x
 // and y are index axes (0 .. n-1); index axes belong to curvilinear grids only.
 void check_curvilinear_grid(const Manifest& m, ErrorCode code, std::string_view what) {
-  const bool curvilinear =
-      m.geometry && m.geometry->horizontal.kind == HorizontalGeometry::Kind::kCurvilinear;
+  const bool curvilinear = is_curvilinear(m);
   if (m.z.kind == AxisKind::kIndex) {
     throw make_error(code, "{}: grid.z '{}' has kind 'index' (only x and y can)", what, m.z.name);
   }

@@ -108,6 +108,9 @@ std::string step_file_name(std::uint32_t step);
 // height, and the time-invariant geometry field in the step-file layout.
 inline constexpr std::string_view kGeometryFileName = "GEOMETRY";
 inline constexpr std::string_view kGeometryBricksFileName = "geometry.bricks";
+// Whether the grid is curvilinear: placed by the 2-D longitudes and latitudes of its
+// GEOMETRY file, its x and y index axes.
+bool is_curvilinear(const Manifest& manifest);
 // Whether the store has a GEOMETRY file: a curvilinear grid or a surface height.
 bool has_geometry_file(const Manifest& manifest);
 // Whether the store has geometry.bricks: a vertical field that does not vary in time.

@@ -106,9 +106,7 @@ void resolve_geographic(const GeographicBox& g, const format::Manifest& m, std::
                         const std::string& path, ResolvedSubVolume& r) {
   const bool geographic_axes = m.x.kind == AxisKind::kLongitude && m.y.kind == AxisKind::kLatitude;
   // Placed by a grid mapping or by 2-D coordinates (curvilinear): evaluated per sample.
-  const bool mapped = (m.grid_mapping && !m.grid_mapping->proj.empty()) ||
-                      (m.geometry && m.geometry->horizontal.kind ==
-                                         format::HorizontalGeometry::Kind::kCurvilinear);
+  const bool mapped = (m.grid_mapping && !m.grid_mapping->proj.empty()) || format::is_curvilinear(m);
   if (!geographic_axes && !mapped) {
     fail(ErrorCode::kInvalidInput, what, path,
          "the store's axes '{}' and '{}' have no place on the Earth (no grid_mapping), so a "

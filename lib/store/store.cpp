@@ -408,9 +408,7 @@ std::shared_ptr<const format::HorizontalCoordinates> Store::horizontal_coordinat
   if (!std::filesystem::exists(path)) {
     throw make_error(ErrorCode::kCorrupt,
                      "{}: missing; the store's geometry has {}, which this file holds", what,
-                     manifest_.geometry->horizontal.kind ==
-                             format::HorizontalGeometry::Kind::kCurvilinear
-                         ? "curvilinear coordinates"
+                     format::is_curvilinear(manifest_) ? "curvilinear coordinates"
                          : "a surface height");
   }
   const std::vector<std::byte> bytes = read_file_bytes(path);

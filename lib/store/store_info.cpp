@@ -63,7 +63,7 @@ void describe_time(const Store& store, std::ostream& out) {
 // corners' positions from the GEOMETRY file), or nowhere.
 void describe_placement(const Store& store, std::ostream& out) {
   const format::Manifest& m = store.manifest();
-  if (m.geometry && m.geometry->horizontal.kind == format::HorizontalGeometry::Kind::kCurvilinear) {
+  if (format::is_curvilinear(m)) {
     fmt::print(out, "placed     by 2-D longitude '{}' and latitude '{}' (GEOMETRY)\n",
                m.geometry->horizontal.lon_variable, m.geometry->horizontal.lat_variable);
     const auto c = store.horizontal_coordinates();
