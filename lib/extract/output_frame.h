@@ -27,7 +27,7 @@
 #include <string_view>
 #include <vector>
 
-#include "extract/curvilinear_lonlat.h"
+#include "format/curvilinear_lonlat.h"
 #include "extract/mesh.h"
 #include "format/manifest.h"
 #include "geo/grid_projection.h"
@@ -84,7 +84,7 @@ VerticalPlacement choose_vertical_placement(const format::Manifest& m,
 class FrameTransform {
  public:
   // A curvilinear store (index axes) is placed by its GEOMETRY coordinates
-  // (Store::horizontal_coordinates), bilinear between columns (extract/curvilinear_lonlat.h).
+  // (Store::horizontal_coordinates), bilinear between columns (format/curvilinear_lonlat.h).
   // \error kUnsupported when the frame needs a place on the Earth the store's grid does
   // not have (a Cartesian grid without a grid mapping: only `axis`, and `metric` when its
   // axes are metres, work), naming the axes; for a curvilinear store without

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "extract/curvilinear_lonlat.h"
+#include "format/curvilinear_lonlat.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "extract/curvilinear_lonlat.h"
+#include "format/curvilinear_lonlat.h"
 #include "support/expect_error.h"
 
 namespace strielad {
