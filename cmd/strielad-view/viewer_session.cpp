@@ -200,6 +200,14 @@ ViewerSession open_session(const ViewerArgs& args) {
   if (!args.store.empty() && (manifest.z.kind == AxisKind::kPressure || manifest.geometry)) {
     local_store = Store::open(args.store);
   }
+  if (format::is_curvilinear(manifest) && !local_store) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "{}: a curvilinear store ('{}' / '{}') is viewed on its own machine for now "
+                     "(strielad-view STORE): its columns are placed by the store's GEOMETRY "
+                     "file, which the server does not send",
+                     session.dataset_name, manifest.geometry->horizontal.lon_variable,
+                     manifest.geometry->horizontal.lat_variable);
+  }
   if (format::has_geometry_field(manifest) && !local_store) {
     throw make_error(ErrorCode::kUnsupported,
                      "{}: a terrain-following store (geometry field '{}') is viewed on its own "
@@ -209,7 +217,9 @@ ViewerSession open_session(const ViewerArgs& args) {
   }
   view::HeightPlacement heights = view::choose_height_placement(manifest, local_store.get());
   session.vertical_placement = heights.description;
-  session.link = std::make_unique<view::ViewLink>(std::move(client), std::move(heights));
+  session.link = std::make_unique<view::ViewLink>(
+      std::move(client), std::move(heights),
+      format::is_curvilinear(manifest) ? local_store->horizontal_coordinates() : nullptr);
   const lod::WorldFrame& frame = session.link->placer().frame();
   spdlog::info("world frame: {}", frame.describe_horizontal());
   spdlog::info("vertical placement: {}", session.vertical_placement);

@@ -324,7 +324,8 @@ LatencySuiteReport run_latency_suite(const LatencySuiteOptions& o) {
 
   const lod::WorldFrame frame(
       store->manifest(),
-      lod::WorldFrameOptions{}, view::representative_level_heights_m(*store));
+      lod::WorldFrameOptions{}, view::representative_level_heights_m(*store),
+      store->horizontal_coordinates());
   const lod::CameraPath path = o.camera_path.empty()
                                    ? lod::default_fly_in_path(frame, o.fly_seconds)
                                    : lod::load_camera_path_file(o.camera_path);

@@ -135,7 +135,8 @@ GridScaling measure_grid(const ScalingSuiteOptions& o, double fraction,
   }
   const lod::WorldFrame frame(
       store->manifest(),
-      lod::WorldFrameOptions{}, view::representative_level_heights_m(*store));
+      lod::WorldFrameOptions{}, view::representative_level_heights_m(*store),
+      store->horizontal_coordinates());
   const auto overview = typical_cameras(frame, o.aspect).front().camera;
   g.cut_seconds = timed_batches(store_dir, clouds, cut_nodes(*store, frame, overview),
                                 most_threads(o), o.repeat, g.cut_cost);

@@ -139,7 +139,8 @@ SceneEconomyReport run_scene_economy(const SceneEconomyOptions& o) {
   const auto store = Store::open(store_dir);
   const lod::WorldFrame frame(
       store->manifest(),
-      lod::WorldFrameOptions{}, view::representative_level_heights_m(*store));
+      lod::WorldFrameOptions{}, view::representative_level_heights_m(*store),
+      store->horizontal_coordinates());
   report.step_file_bytes = std::filesystem::file_size(store->step_path(0));
   const SceneCost step = whole_step(*store, 0);
   const auto all_leaves = level_nodes(store->octree(), 0);

@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "core/error.h"
+#include "format/curvilinear_lonlat.h"
 #include "geo/grid_projection.h"
 #include "geo/standard_atmosphere.h"
 #include "grid/units.h"
@@ -187,7 +188,10 @@ void WorldFrame::place_horizontal(const format::Manifest& m) {
                   std::min(m.y.values.front(), m.y.values.back()),
                   std::max(m.y.values.front(), m.y.values.back())};
   axis_names_ = fmt::format("'{}' and '{}'", m.x.name, m.y.name);
-  if (mapped) {
+  if (format::is_curvilinear(m)) {
+    horizontal_ = HorizontalMap::kCurvilinear;
+    axis_km_ = {0.0, 0.0};
+  } else if (mapped) {
     horizontal_ = HorizontalMap::kMapped;
     axis_km_ = {kx.value_or(0.0), ky.value_or(0.0)};
   } else if (kx && ky) {
@@ -362,8 +366,49 @@ void WorldFrame::place_mapped(const format::Manifest& m, bool z_negative) {
   domain_.hi[1] = all.hi[1];
 }
 
+// A curvilinear grid: the centre index's true position, then every column on the plane.
+void WorldFrame::place_curvilinear(const format::Manifest& m, bool z_negative,
+                                   const std::shared_ptr<const format::HorizontalCoordinates>& c) {
+  const auto& h = m.geometry->horizontal;
+  const std::string what =
+      fmt::format("curvilinear grid ('{}' / '{}')", h.lon_variable, h.lat_variable);
+  if (c == nullptr || !c->has_coordinates()) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "{}: the world frame places its columns by the store's GEOMETRY "
+                     "coordinates, and none were given (they are read from the store's files "
+                     "on this machine)",
+                     what);
+  }
+  if (c->nx != m.x.size() || c->ny != m.y.size()) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "{}: GEOMETRY coordinates of {} x {} columns for a grid of {} x {}", what,
+                     c->nx, c->ny, m.x.size(), m.y.size());
+  }
+  const auto centre = CurvilinearLonLat(c).centre();
+  lon0_ = std::remainder(centre[0], 360.0);
+  lat0_ = centre[1];
+  const double cos_lat0 = std::cos(lat0_ * kDegree);
+  if (!(cos_lat0 > 1e-3)) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "{} is centred at latitude {}: a plane tangent at the pole has no "
+                     "east-west scale",
+                     what, lat0_);
+  }
+  km_per_lon_ = kKmPerDegree * cos_lat0;
+  auto plane = std::make_shared<CurvilinearPlane>(*c, lon0_, lat0_, km_per_lon_, what);
+  mirrored_ = (plane->orientation() < 0) != z_negative;
+  const auto all = plane->box_of(IndexBox{{0, 0, 0}, {c->nx - 1u, c->ny - 1u, 0}});
+  domain_.lo[0] = all[0];
+  domain_.lo[1] = all[1];
+  domain_.hi[0] = all[2];
+  domain_.hi[1] = all[3];
+  curvilinear_ = std::move(plane);
+  curvilinear_what_ = what;
+}
+
 WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options,
-                       std::vector<double> level_heights_m)
+                       std::vector<double> level_heights_m,
+                       std::shared_ptr<const format::HorizontalCoordinates> coordinates)
     : exaggeration_(options.vertical_exaggeration), dims_(m.dims()) {
   if (!std::isfinite(exaggeration_) || exaggeration_ <= 0) {
     throw make_error(ErrorCode::kInvalidArgument,
@@ -380,6 +425,10 @@ WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options,
   const bool z_negative = vertical_to_world(z_mid + hz) - vertical_to_world(z_mid - hz) < 0;
   if (horizontal_ == HorizontalMap::kMapped) {
     place_mapped(m, z_negative);
+    return;
+  }
+  if (horizontal_ == HorizontalMap::kCurvilinear) {
+    place_curvilinear(m, z_negative, coordinates);
     return;
   }
   const std::array<const Axis*, 2> axes{&m.x, &m.y};
@@ -455,6 +504,10 @@ std::array<double, 2> WorldFrame::mapped_xy(double x, double y) const {
 }
 
 Vec3 WorldFrame::to_world(const Vec3& p) const {
+  if (curvilinear_) {
+    const auto xy = curvilinear_->position(p[0], p[1]);
+    return {xy[0], xy[1], vertical_to_world(p[2])};
+  }
   if (mapped_) {
     const auto xy = mapped_xy(p[0], p[1]);
     return {xy[0], xy[1], vertical_to_world(p[2])};
@@ -463,6 +516,10 @@ Vec3 WorldFrame::to_world(const Vec3& p) const {
 }
 
 Vec3 WorldFrame::to_axis(const Vec3& p) const {
+  if (curvilinear_) {
+    const auto a = curvilinear_->index_of(p[0], p[1]);
+    return {a[0], a[1], world_to_vertical(p[2])};
+  }
   if (mapped_) {
     const auto g = world_to_geographic(p[0], p[1]);
     const auto a = geographic_to_axis(g[0], g[1]);
@@ -480,7 +537,14 @@ Vec3 WorldFrame::normal_to_world(const Vec3& p, const Vec3& n) const {
     return (separable_to_world(axis, value + h) - separable_to_world(axis, value - h)) / (2 * h);
   };
   Vec3 g{0, 0, 0};
-  if (!mapped_) {
+  if (curvilinear_) {
+    // The bilinear map's Jacobian in the cell the position uses.
+    const auto j = curvilinear_->jacobian(p[0], p[1]);
+    const double det = j[0] * j[3] - j[1] * j[2];
+    g[0] = (j[3] * n[0] - j[2] * n[1]) / det;
+    g[1] = (-j[1] * n[0] + j[0] * n[1]) / det;
+    g[2] = n[2] / slope(2, p[2]);
+  } else if (!mapped_) {
     for (int axis = 0; axis < 3; ++axis) g[axis] = n[axis] / slope(axis, p[axis]);
   } else {
     // The horizontal Jacobian {dX/dx, dX/dy, dY/dx, dY/dy} of the bilinear interpolant of
@@ -531,6 +595,11 @@ std::array<double, 2> WorldFrame::world_to_geographic(double x, double y) const 
 
 std::array<double, 2> WorldFrame::geographic_to_axis(double lon, double lat) const {
   check_on_earth();
+  if (curvilinear_) {
+    if (!(std::fabs(lat) <= 90.0)) return {kNaN, kNaN};
+    const auto xy = geographic_to_world(lon, lat);
+    return curvilinear_->index_of(xy[0], xy[1]);
+  }
   if (!mapped_) return {lon0_ + std::remainder(lon - lon0_, 360.0), lat};
   if (!(std::fabs(lat) <= 90.0)) return {kNaN, kNaN};
   auto a = mapped_->projection().to_axis(lon, lat);
@@ -556,6 +625,7 @@ GeographicBounds WorldFrame::geographic_bounds() const {
 }
 
 std::array<double, 2> WorldFrame::sample_world_xy(std::size_t i, std::size_t j) const {
+  if (curvilinear_) return curvilinear_->at(i, j);
   if (mapped_) return mapped_->at(i, j);
   return {xy_samples_[0][i], xy_samples_[1][j]};
 }
@@ -571,6 +641,10 @@ std::string WorldFrame::describe_horizontal() const {
                          axis_names_, mapped_->variable, mapped_->name, lat0_, lon0_);
     case HorizontalMap::kMetric:
       return no_earth_reason_;
+    case HorizontalMap::kCurvilinear:
+      return fmt::format("index axes {} of a {} placed by its 2-D longitudes and latitudes, "
+                         "centred at {:.2f} N, {:.2f} E",
+                         axis_names_, curvilinear_what_, lat0_, lon0_);
   }
   return {};
 }
@@ -606,7 +680,13 @@ WorldBox WorldFrame::mapped_index_box(const IndexBox& box) const {
 
 WorldBox WorldFrame::index_box_world(const IndexBox& box) const {
   WorldBox b;
-  if (mapped_) {
+  if (curvilinear_) {
+    const auto xy = curvilinear_->box_of(box);
+    b.lo[0] = xy[0];
+    b.lo[1] = xy[1];
+    b.hi[0] = xy[2];
+    b.hi[1] = xy[3];
+  } else if (mapped_) {
     b = mapped_index_box(box);
   } else {
     for (int a = 0; a < 2; ++a) {

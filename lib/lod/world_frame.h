@@ -16,6 +16,13 @@
 //   output frame, in km). x and y do not map separately: a grid line is a curve in the
 //   world. Longitudes are taken the short way round from lon0; a grid whose image folds
 //   or tears (it crosses the meridian opposite its centre, or encloses a pole) is refused.
+// - kCurvilinear, a curvilinear grid (index axes placed by the store's 2-D longitudes and
+//   latitudes, format/curvilinear_lonlat.h; the constructor's horizontal_coordinates, from
+//   Store::horizontal_coordinates): the same plane, tangent at the true position of
+//   the grid's centre index. The plane is affine in longitude and latitude, so positions
+//   between columns are the bilinear interpolation of the columns' plane positions
+//   (lod/curvilinear_plane.h) and a cell's edges are straight. A grid that folds or
+//   crosses the meridian opposite its centre is refused, as on mapped frames.
 // - kMetric, a Cartesian grid in m or km without a grid mapping: kilometres from the
 //   range midpoints. It has no place on the Earth: on_earth() is false, and terrain,
 //   flight tracks and the true sun cannot be placed on it.
@@ -46,7 +53,9 @@
 #include <string>
 #include <vector>
 
+#include "format/geometry_file_format.h"
 #include "format/manifest.h"
+#include "lod/curvilinear_plane.h"
 #include "lod/geometry.h"
 #include "octree/octree_layout.h"
 
@@ -66,7 +75,7 @@ struct WorldFrameOptions {
   double vertical_exaggeration = kDefaultVerticalExaggeration;  // finite, > 0
 };
 
-enum class HorizontalMap { kGeographic, kMapped, kMetric };
+enum class HorizontalMap { kGeographic, kMapped, kMetric, kCurvilinear };
 enum class VerticalMap { kHeight, kPressure, kLevelHeights };
 
 // True longitude/latitude extent of a domain (degrees): longitudes continuous about the
@@ -83,7 +92,9 @@ class WorldFrame {
   // level heights, or has units it cannot convert; a store whose geometry is a per-sample
   // field given no level_heights_m; a grid mapping PROJ rejects, that leaves a sample without a
   // geographic position, or whose image folds or crosses the meridian opposite the
-  // domain's centre (naming the sample).
+  // domain's centre (naming the sample); a curvilinear store given no
+  // horizontal_coordinates (or coordinates of another size), or whose columns fold or
+  // cross the meridian opposite the centre on the plane.
   // \error kInvalidInput for empty, non-finite or non-monotonic axis values (as
   // check_axis_values) and for a pressure axis with a value <= 0.
   // \error kInvalidArgument for a vertical exaggeration that is not finite and > 0, and for
@@ -91,8 +102,12 @@ class WorldFrame {
   // `level_heights_m`: one representative height in metres per level-0 z sample, strictly
   // monotonic: the vertical map of a terrain-following store (VerticalMap::kLevelHeights).
   // Empty: the axis's own map, or the manifest's geometry `levels`.
-  explicit WorldFrame(const format::Manifest& manifest, WorldFrameOptions options = {},
-                      std::vector<double> level_heights_m = {});
+  // `horizontal_coordinates`: a curvilinear store's GEOMETRY coordinates
+  // (Store::horizontal_coordinates); ignored for other stores.
+  explicit WorldFrame(
+      const format::Manifest& manifest, WorldFrameOptions options = {},
+      std::vector<double> level_heights_m = {},
+      std::shared_ptr<const format::HorizontalCoordinates> horizontal_coordinates = nullptr);
   // The same frame at another vertical exaggeration, without redoing the horizontal
   // placement (a mapped frame's sample table is shared).
   // \error kInvalidArgument for an exaggeration that is not finite and > 0.
@@ -117,7 +132,7 @@ class WorldFrame {
   // a pressure axis, or a horizontal Jacobian of negative determinant).
   bool mirrored() const { return mirrored_; }
 
-  // Whether the frame has a place on the Earth (geographic and mapped frames).
+  // Whether the frame has a place on the Earth (geographic, mapped and curvilinear frames).
   bool on_earth() const { return horizontal_ != HorizontalMap::kMetric; }
   // Why not, naming the axes, for the errors of callers that need it ("axes 'x' (m) and
   // 'y' (m) are Cartesian coordinates without a grid_mapping ..."); "" when on_earth().
@@ -153,11 +168,17 @@ class WorldFrame {
   WorldBox index_box_world(const IndexBox& box) const;
 
   HorizontalMap horizontal() const { return horizontal_; }
+  // Whether x and y map together (mapped and curvilinear frames): a grid line is a curve
+  // or a polyline in the world, and the domain is the axes' box in axis x/y, not a box of
+  // the world.
+  bool bends_grid_lines() const {
+    return horizontal_ == HorizontalMap::kMapped || horizontal_ == HorizontalMap::kCurvilinear;
+  }
   VerticalMap vertical() const { return vertical_; }
   double vertical_exaggeration() const { return exaggeration_; }
   // Kilometres per axis unit of x or y when they are lengths (Cartesian or projected:
   // map coordinates, not distances on the ground); 0 for degrees (longitude/latitude,
-  // a rotated pole).
+  // a rotated pole) and for a curvilinear grid's index axes.
   double axis_length_km(int axis) const { return axis_km_[axis]; }
   // Metres (height) or pascals (pressure) per unit of the vertical axis; with level
   // heights, the mean metres per unit over the axis (negative where heights fall as the
@@ -178,6 +199,8 @@ class WorldFrame {
   void place_vertical(const format::Manifest& manifest, std::vector<double> level_heights_m);
   void place_level_heights(const Axis& z, std::vector<double> heights_m);
   void place_mapped(const format::Manifest& manifest, bool z_negative);
+  void place_curvilinear(const format::Manifest& manifest, bool z_negative,
+                         const std::shared_ptr<const format::HorizontalCoordinates>& coordinates);
 
   double separable_to_world(int axis, double value) const;
   double separable_to_axis(int axis, double world) const;
@@ -203,6 +226,8 @@ class WorldFrame {
   std::vector<double> z_axis_, z_samples_;
   std::vector<double> level_heights_m_;  // kLevelHeights
   std::shared_ptr<const Mapped> mapped_;
+  std::shared_ptr<const CurvilinearPlane> curvilinear_;
+  std::string curvilinear_what_;  // "curvilinear grid ('lon' / 'lat')"
   WorldBox domain_;
 };
 

@@ -55,13 +55,6 @@ std::vector<std::array<double, 2>> node_ranges_m(const Store& store, std::uint32
 HeightPlacement geometry_placement(const format::Manifest& m, const Store* store) {
   HeightPlacement out;
   const format::GridGeometry& g = *m.geometry;
-  if (g.horizontal.kind == format::HorizontalGeometry::Kind::kCurvilinear) {
-    throw make_error(ErrorCode::kUnsupported,
-                     "the store's horizontal geometry is curvilinear (2-D coordinates '{}' and "
-                     "'{}'): the viewer places only longitude/latitude, mapped and Cartesian "
-                     "axes",
-                     g.horizontal.lon_variable, g.horizontal.lat_variable);
-  }
   const auto quantity = format::vertical_quantity_name(g.vertical.quantity);
   if (!format::has_geometry_field(m)) {
     out.description =

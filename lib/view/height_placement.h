@@ -71,8 +71,7 @@ struct HeightPlacement {
 // with the reason in the description. A store with a geometry field: kVariable by the
 // field, with level_heights_m.
 // \error kCorrupt naming the file when the store's index cannot be read; kUnsupported for
-// a geometry field without `store` (through --connect) and for a curvilinear horizontal
-// geometry; as representative_level_heights_m.
+// a geometry field without `store` (through --connect); as representative_level_heights_m.
 HeightPlacement choose_height_placement(const format::Manifest& manifest, const Store* store);
 
 }  // namespace strielad::view

@@ -9,9 +9,12 @@
 #include "core/error.h"
 
 namespace strielad::view {
-GeometryPlacer::GeometryPlacer(const format::Manifest& manifest, HeightPlacement heights)
-    : frame_(manifest, lod::WorldFrameOptions{.vertical_exaggeration = 1.0},
-             heights.level_heights_m),
+GeometryPlacer::GeometryPlacer(
+    const format::Manifest& manifest, HeightPlacement heights,
+    std::shared_ptr<const format::HorizontalCoordinates> horizontal_coordinates)
+    : frame_(manifest,
+             lod::WorldFrameOptions{.vertical_exaggeration = 1.0}, heights.level_heights_m,
+             std::move(horizontal_coordinates)),
       mirrored_(frame_.mirrored()),
       heights_(std::move(heights)) {}
 

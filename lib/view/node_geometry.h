@@ -84,7 +84,11 @@ struct NodeGeometry {
 class GeometryPlacer {
  public:
   // \error as lod::WorldFrame for axes without a world position.
-  explicit GeometryPlacer(const format::Manifest& manifest, HeightPlacement heights = {});
+  // `horizontal_coordinates`: a curvilinear store's GEOMETRY coordinates
+  // (Store::horizontal_coordinates), which its frame needs (lod::WorldFrameOptions).
+  explicit GeometryPlacer(
+      const format::Manifest& manifest, HeightPlacement heights = {},
+      std::shared_ptr<const format::HorizontalCoordinates> horizontal_coordinates = nullptr);
 
   // The node's meshes of time step `step` packed. `slot_of_id(id)` gives the slot of a sub-volume id (the
   // position of the sub-volume in the scene); a mesh whose id has no slot is left out.

@@ -311,7 +311,7 @@ TerrainTiles::TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod:
   }
   const auto& d = frame.domain();
   const auto axes = frame.axis_ranges();
-  mapped_ = frame.horizontal() == lod::HorizontalMap::kMapped;
+  mapped_ = frame.bends_grid_lines();
   // Clip coordinates: world x/y on a geographic frame (the domain is its world box), the
   // store's own axis x/y on a mapped one (the domain is their box, a curved shape in the
   // world).

@@ -185,7 +185,7 @@ class TerrainTiles {
   std::size_t wrap_columns_ = 0;
   int finest_level_ = 0;
   lod::WorldBox clip_;
-  bool mapped_ = false;  // the frame is mapped: clip coordinates are axis x/y
+  bool mapped_ = false;  // the frame bends grid lines: clip coordinates are axis x/y
 
   mutable std::mutex mutex_;
   std::condition_variable_any wake_;

@@ -63,8 +63,11 @@ class ViewLink {
   // Takes over a client whose dataset is open. With heights from a variable
   // (view/height_placement.h) every scene is sent with that variable as one more
   // attribute (at the end, unless the scene carries it already) and the meshes are
-  // placed by it.
-  explicit ViewLink(std::unique_ptr<client::ServerClient> client, HeightPlacement heights = {});
+  // placed by it. A curvilinear store's frame needs its GEOMETRY coordinates
+  // (`horizontal_coordinates`, as GeometryPlacer).
+  explicit ViewLink(
+      std::unique_ptr<client::ServerClient> client, HeightPlacement heights = {},
+      std::shared_ptr<const format::HorizontalCoordinates> horizontal_coordinates = nullptr);
   ~ViewLink();  // stops the thread; the client says Goodbye
   ViewLink(const ViewLink&) = delete;
   ViewLink& operator=(const ViewLink&) = delete;

@@ -66,6 +66,14 @@ std::array<std::uint32_t, 3> wind_variables(const Store& store, const WindNames&
     throw make_error(ErrorCode::kInvalidArgument, "{}: wind level {}: the octree has {} levels",
                      store.path().string(), level, store.octree().level_count());
   }
+  if (format::is_curvilinear(manifest)) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "{}: advection on a curvilinear grid ('{}' / '{}') is not supported: its x "
+                     "and y are grid indices whose spacing and direction change from cell to "
+                     "cell, and the wind would first need the grid's local scale and rotation",
+                     store.path().string(), manifest.geometry->horizontal.lon_variable,
+                     manifest.geometry->horizontal.lat_variable);
+  }
   if (!time_unit_seconds(manifest)) {
     throw make_error(ErrorCode::kUnsupported,
                      "{}: time axis '{}' has units '{}': advection needs '<seconds|minutes|"
@@ -104,7 +112,8 @@ WindStep load_wind_step(const Store& store, std::uint32_t step, const WindNames&
   }
 
   const lod::WorldFrame frame(manifest, lod::WorldFrameOptions{.vertical_exaggeration = 1.0},
-                              representative_level_heights_m(store));
+                              representative_level_heights_m(store),
+                              store.horizontal_coordinates());
   const WindUnits units = wind_units(frame);
   advect::WindGrid grid;
   grid.horizontal = units.horizontal;
