@@ -448,7 +448,19 @@ InputCatalog mixed_catalog(const InputsByFormat& by_format, const ScanOptions& o
   const InputCatalog grib = grib_catalog(scans, side);
   side.variables = requested.netcdf;
   const InputCatalog netcdf = netcdf_catalog(std::move(files), side);
-  return merge_grib_and_netcdf(grib, netcdf, by_format.grib_first, options);
+  InputCatalog c = merge_grib_and_netcdf(grib, netcdf, by_format.grib_first, options);
+  if (options.variables.empty()) return c;
+  // The variables in the order asked for, as from inputs of one format.
+  std::vector<VariableMeta> variables;
+  std::vector<std::vector<VariableLocation>> locations;
+  for (const std::string& name : options.variables) {
+    const std::size_t v = c.variable_index(name);
+    variables.push_back(std::move(c.variables[v]));
+    locations.push_back(std::move(c.locations[v]));
+  }
+  c.variables = std::move(variables);
+  c.locations = std::move(locations);
+  return c;
 }
 
 }  // namespace

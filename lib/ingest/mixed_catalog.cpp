@@ -217,8 +217,9 @@ InputCatalog merge_grib_and_netcdf(const InputCatalog& grib, const InputCatalog&
   check_same_steps(ref, grib_first ? grib_time : netcdf_time, other,
                    grib_first ? netcdf_time : grib_time);
 
+  // The reference's units and calendar (GRIB's proleptic Gregorian stays so: the steps
+  // are from 1582-10-15 on, where it is the standard calendar).
   InputCatalog c = ref.catalog;
-  if (grib_first) c.time.calendar = grib_time.calendar;
   const std::size_t file_offset = c.files.size();
   c.files.insert(c.files.end(), other.catalog.files.begin(), other.catalog.files.end());
   // Both sides' steps ascend and are the same instants: step i is step i.

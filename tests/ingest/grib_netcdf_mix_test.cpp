@@ -48,6 +48,7 @@ TEST(GribNetcdfMixTest, GribAndNetcdfVariablesOnOneGridJoinInOneCatalog) {
   EXPECT_EQ(c.grid_mapping->name, "lambert_conformal_conic");
   // The GRIB side comes first: its units; the netCDF hours are the same instant.
   EXPECT_EQ(c.time.units, "seconds since 1970-01-01 00:00:00");
+  EXPECT_EQ(c.time.calendar, "proleptic_gregorian");
   ASSERT_EQ(c.time.values.size(), 1u);
   EXPECT_EQ(c.time.values[0], 1169640000.0);
   ASSERT_EQ(c.locations.size(), 2u);
@@ -80,8 +81,9 @@ TEST(GribNetcdfMixTest, VariablesAskedForAreTakenFromEitherFormat) {
   o.variables = {"tmp", "gh"};
   const InputCatalog c = scan_inputs({forecast(), nc}, o);
   ASSERT_EQ(c.variables.size(), 2u);
-  EXPECT_EQ(c.variables[0].name, "gh");
-  EXPECT_EQ(c.variables[1].name, "tmp");
+  EXPECT_EQ(c.variables[0].name, "tmp");  // in the order asked for
+  EXPECT_EQ(c.variables[1].name, "gh");
+  EXPECT_EQ(c.files[c.locations[1][0].file].path, forecast().string());
 }
 
 TEST(GribNetcdfMixTest, AVariableAskedForThatNeitherFormatHasIsNamed) {
