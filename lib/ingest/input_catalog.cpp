@@ -426,10 +426,11 @@ RequestedBySide requested_by_side(const std::vector<std::string>& requested,
   if (!requested.empty() && (out.grib.empty() || out.netcdf.empty())) {
     const bool grib_idle = out.grib.empty();
     throw make_error(ErrorCode::kInvalidArgument,
-                     "{}: none of the variables asked for ({}) is in the {} inputs; leave them "
-                     "out of the conversion",
+                     "{}: none of the variables asked for ({}) is in the {} inputs; leave the {} "
+                     "files out of the conversion",
                      grib_idle ? scans.front().path.string() : files.front().source.path,
-                     fmt::join(requested, ", "), grib_idle ? "GRIB" : "netCDF");
+                     fmt::join(requested, ", "), grib_idle ? "GRIB" : "netCDF",
+                     grib_idle ? "GRIB" : "netCDF");
   }
   return out;
 }

@@ -10,6 +10,7 @@
 #include "ingest/input_catalog.h"
 #include "support/expect_error.h"
 #include "support/grib_as_netcdf.h"
+#include "support/model_levels_fixture.h"
 #include "support/temp_dir.h"
 
 namespace strielad::ingest {
@@ -141,6 +142,23 @@ TEST(GribNetcdfMixTest, NetcdfWithoutTimeIsRefused) {
   const auto nc = netcdf_copy(dir, spec);
   expect_error([&] { scan_inputs({humidity_grib(dir), nc}, {}); }, ErrorCode::kInvalidInput,
                {"t.nc", "no time dimension", "r.grb2"});
+}
+
+TEST(GribNetcdfMixTest, TerrainFollowingNetcdfLevelsAreNotMixed) {
+  const testing::TempDir dir;
+  const testing::ModelLevels g;
+  g.fixture()
+      .variable("z_mc", NC_FLOAT, {"lev", "lat", "lon"},
+                testing::field(1, g.nz, g.plane(),
+                               [](std::size_t, std::size_t k, std::size_t) {
+                                 return 1000.0 - 100.0 * static_cast<double>(k);
+                               }),
+                {testing::NcAttr::text_value("units", "m")})
+      .write(dir / "icon.nc");
+  expect_error([&] { scan_inputs({humidity_grib(dir), dir / "icon.nc"}, {}); },
+               ErrorCode::kUnsupported,
+               {"icon.nc", "netCDF variables", "vertical geometry", "z_mc", "r.grb2",
+                "convert each format separately"});
 }
 
 TEST(GribNetcdfMixTest, StepRangeSelectsAmongTheJoinedSteps) {
