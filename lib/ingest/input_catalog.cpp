@@ -421,7 +421,12 @@ RequestedBySide requested_by_side(const std::vector<std::string>& requested,
                        name, scans.front().path.string(), fmt::join(grib_names, ", "),
                        files.front().source.path);
     }
-    (in_grib ? out.grib : out.netcdf).push_back(asked);
+    // grib_catalog matches names exactly; select_variables takes the leading '/' itself.
+    if (in_grib) {
+      out.grib.emplace_back(name);
+    } else {
+      out.netcdf.push_back(asked);
+    }
   }
   if (!requested.empty() && (out.grib.empty() || out.netcdf.empty())) {
     const bool grib_idle = out.grib.empty();

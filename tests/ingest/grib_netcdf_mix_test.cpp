@@ -79,7 +79,7 @@ TEST(GribNetcdfMixTest, VariablesAskedForAreTakenFromEitherFormat) {
   spec.name = "tmp";
   const auto nc = netcdf_copy(dir, spec);
   ScanOptions o;
-  o.variables = {"tmp", "gh"};
+  o.variables = {"tmp", "/gh"};  // a leading slash as for netCDF alone
   const InputCatalog c = scan_inputs({forecast(), nc}, o);
   ASSERT_EQ(c.variables.size(), 2u);
   EXPECT_EQ(c.variables[0].name, "tmp");  // in the order asked for
