@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // scan_inputs: scans every file, selects the variables, and merges the files into one
 // catalog: one grid (identical in every file), one time axis (sorted, every variable at
-// every step found in exactly one file), and consistent CF attributes per variable.
+// every step found in exactly one file), and consistent CF attributes per variable. GRIB
+// inputs make their own catalog (grib_catalog.h); GRIB and netCDF inputs together make
+// one of each, joined by mixed_catalog.h.
 #include "ingest/input_catalog.h"
 
 #include "ingest/grib_catalog.h"
@@ -319,7 +321,6 @@ InputCatalog catalog_without_time(const SelectedInputs& in) {
   }
   return catalog;
 }
-
 
 // The catalog of netCDF inputs, scanned (scan_distinct_files).
 InputCatalog netcdf_catalog(std::vector<ScannedFile> files, const ScanOptions& options) {
