@@ -133,7 +133,9 @@ int run(const ConvertFlags& f) {
 
 void register_convert(CLI::App& app, cli::Action& action) {
   auto f = std::make_shared<ConvertFlags>();
-  app.add_option("inputs", f->inputs, "CF-NetCDF or GRIB input files (a time series may span files)");
+  app.add_option("inputs", f->inputs,
+                 "CF-NetCDF and GRIB input files, alone or together (a time series may span "
+                 "files)");
   app.add_option("-o,--output", f->output, "Store directory to create or resume");
   app.add_option("--vars", f->vars, "Variables to convert (default: every 3D variable)")
       ->delimiter(',');

@@ -72,10 +72,22 @@ std::string grib_variable_name(const GribScan& scan, const GribVariable& v) {
   return same > 1 ? v.short_name + "_" + v.type_of_level : v.short_name;
 }
 
+std::vector<std::string> grib_variable_names(const std::vector<GribScan>& scans) {
+  std::vector<std::string> names;
+  for (const auto& [name, found] : variables_by_name(scans)) names.push_back(name);
+  return names;
+}
+
 InputCatalog grib_catalog(const std::vector<std::filesystem::path>& inputs,
                           const ScanOptions& options) {
   std::vector<GribScan> scans;
   for (const auto& path : inputs) scans.push_back(scan_grib_file(path));
+  return grib_catalog(scans, options);
+}
+
+InputCatalog grib_catalog(const std::vector<GribScan>& scans, const ScanOptions& options) {
+  std::vector<std::filesystem::path> inputs;
+  for (const auto& s : scans) inputs.push_back(s.path);
   const auto all = variables_by_name(scans);
   if (all.empty()) {
     std::vector<std::string> why;

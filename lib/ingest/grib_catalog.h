@@ -25,6 +25,12 @@ namespace strielad::ingest {
 // grib_levels), so reading needs no second scan.
 InputCatalog grib_catalog(const std::vector<std::filesystem::path>& inputs,
                           const ScanOptions& options);
+// The same from the inputs' scans (scan_grib_file), one per input, in input order.
+InputCatalog grib_catalog(const std::vector<GribScan>& scans, const ScanOptions& options);
+
+// The store names of the 3-D variables of `scans` (grib_variable_name), in the order
+// first seen: what ScanOptions::variables may name.
+std::vector<std::string> grib_variable_names(const std::vector<GribScan>& scans);
 
 // The store name of `v`: its shortName, or "shortName_typeOfLevel" when another 3-D
 // variable of the scan has the same shortName.

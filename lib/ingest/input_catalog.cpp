@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // scan_inputs: scans every file, selects the variables, and merges the files into one
 // catalog: one grid (identical in every file), one time axis (sorted, every variable at
-// every step found in exactly one file), and consistent CF attributes per variable.
+// every step found in exactly one file), and consistent CF attributes per variable. GRIB
+// inputs make their own catalog (grib_catalog.h); GRIB and netCDF inputs together make
+// one of each, joined by mixed_catalog.h.
 #include "ingest/input_catalog.h"
 
 #include "ingest/grib_catalog.h"
 #include "ingest/input_kind.h"
+#include "ingest/mixed_catalog.h"
 #include "ingest/requested_steps.h"
 
 #include <fmt/format.h>
@@ -283,26 +286,21 @@ std::vector<double> common_time_steps(const SelectedInputs& in,
   return std::vector<double>(all_times.begin(), all_times.end());
 }
 
-struct InputKinds {
-  std::size_t grib = 0;
-  std::string a_grib, a_netcdf;  // one of each, for messages
+// The inputs by format, each in input order. Files that do not exist are left to the
+// netCDF scan, which names them.
+struct InputsByFormat {
+  std::vector<std::filesystem::path> grib, netcdf;
+  bool grib_first = false;
 };
 
-// Files that do not exist are left to the netCDF scan, which names them.
-InputKinds grib_inputs(const std::vector<std::filesystem::path>& inputs) {
-  InputKinds k;
+InputsByFormat inputs_by_format(const std::vector<std::filesystem::path>& inputs) {
+  InputsByFormat k;
   for (const auto& path : inputs) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) {
-      k.a_netcdf = path.string();
-      continue;
-    }
-    if (detect_input_kind(path).kind == InputKind::kGrib) {
-      ++k.grib;
-      k.a_grib = path.string();
-    } else {
-      k.a_netcdf = path.string();
-    }
+    const bool grib = std::filesystem::is_regular_file(path, ec) &&
+                      detect_input_kind(path).kind == InputKind::kGrib;
+    if (k.grib.empty() && k.netcdf.empty()) k.grib_first = grib;
+    (grib ? k.grib : k.netcdf).push_back(path);
   }
   return k;
 }
@@ -324,55 +322,10 @@ InputCatalog catalog_without_time(const SelectedInputs& in) {
   return catalog;
 }
 
-}  // namespace
-
-InputCatalog InputCatalog::as_in_files() const {
-  InputCatalog c = *this;
-  if (repeats_first_column()) {
-    c.x.values.pop_back();
-    c.x.periodic = false;
-  }
-  c.source_nx = c.x.size();
-  return c;
-}
-
-std::size_t InputCatalog::variable_index(std::string_view name) const {
-  std::string_view n = name;
-  while (!n.empty() && n.front() == '/') n.remove_prefix(1);
-  for (std::size_t i = 0; i < variables.size(); ++i) {
-    if (variables[i].name == n) return i;
-  }
-  std::vector<std::string> names;
-  for (const auto& v : variables) names.push_back(v.name);
-  throw make_error(ErrorCode::kNotFound, "variable '{}' is not among the converted variables ({})",
-                   name, fmt::join(names, ", "));
-}
-
-InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
-                         const ScanOptions& options) {
-  if (inputs.empty()) throw make_error(ErrorCode::kInvalidArgument, "no input files given");
-  if (const auto kinds = grib_inputs(inputs); kinds.grib > 0) {
-    if (kinds.grib < inputs.size()) {
-      throw make_error(ErrorCode::kUnsupported,
-                       "{} is GRIB and {} is not: GRIB and netCDF inputs cannot be mixed in one "
-                       "conversion; convert the GRIB files to CF-NetCDF first (e.g. `cdo -f nc4 "
-                       "copy`)",
-                       kinds.a_grib, kinds.a_netcdf);
-    }
-    // GRIB places its levels from its own keys (pv, HHL): the netCDF options would be
-    // silently ignored.
-    if (options.height_var || !options.formula_constants.empty()) {
-      throw make_error(ErrorCode::kInvalidArgument,
-                       "{}: {} applies to netCDF input only; GRIB levels are placed from the "
-                       "messages' own keys (hybrid pv with lnsp or sp, HHL for "
-                       "generalVerticalLayer); leave the option out",
-                       kinds.a_grib, options.height_var ? "--height-var" : "--formula-term");
-    }
-    return grib_catalog(inputs, options);
-  }
-
+// The catalog of netCDF inputs, scanned (scan_distinct_files).
+InputCatalog netcdf_catalog(std::vector<ScannedFile> files, const ScanOptions& options) {
   SelectedInputs in;
-  in.files = scan_distinct_files(inputs);
+  in.files = std::move(files);
   in.names = select_variables(in.files, options.variables, height_field_names(options));
   in.occurrences = usable_occurrences(in.files, in.names);
   check_one_grid(in);
@@ -427,6 +380,137 @@ InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
                catalog.y.size(), catalog.z.size(), axis_kind_name(catalog.z.kind),
                catalog.time.size(), n, n == 1 ? "" : "s");
   return catalog;
+}
+
+// Which side holds each variable asked for: a name on both sides, or on neither, is an
+// error; a side none is asked from holds nothing for the conversion.
+struct RequestedBySide {
+  std::vector<std::string> grib, netcdf;
+};
+
+RequestedBySide requested_by_side(const std::vector<std::string>& requested,
+                                  const std::vector<GribScan>& scans,
+                                  const std::vector<ScannedFile>& files) {
+  const std::vector<std::string> grib_names = grib_variable_names(scans);
+  RequestedBySide out;
+  for (const std::string& asked : requested) {
+    std::string_view name = asked;
+    while (!name.empty() && name.front() == '/') name.remove_prefix(1);
+    const bool in_grib =
+        std::find(grib_names.begin(), grib_names.end(), name) != grib_names.end();
+    const ScannedFile* in_netcdf = nullptr;
+    for (const auto& f : files) {
+      if (f.find(name) != nullptr) {
+        in_netcdf = &f;
+        break;
+      }
+    }
+    if (in_grib && in_netcdf) {
+      const auto scan = std::find_if(scans.begin(), scans.end(), [&](const GribScan& s) {
+        const auto n = grib_variable_names({s});
+        return std::find(n.begin(), n.end(), name) != n.end();
+      });
+      throw make_error(ErrorCode::kInvalidInput,
+                       "variable '{}' is in GRIB input {} and in netCDF input {}: every variable "
+                       "of a conversion comes from one format; leave one of the files out",
+                       name, scan->path.string(), in_netcdf->source.path);
+    }
+    if (!in_grib && !in_netcdf) {
+      throw make_error(ErrorCode::kNotFound,
+                       "variable '{}' is in no input: neither a 3-D variable of the GRIB inputs "
+                       "({}: {}) nor a variable of the netCDF inputs ({} ...)",
+                       name, scans.front().path.string(), fmt::join(grib_names, ", "),
+                       files.front().source.path);
+    }
+    // grib_catalog matches names exactly; select_variables takes the leading '/' itself.
+    if (in_grib) {
+      out.grib.emplace_back(name);
+    } else {
+      out.netcdf.push_back(asked);
+    }
+  }
+  if (!requested.empty() && (out.grib.empty() || out.netcdf.empty())) {
+    const bool grib_idle = out.grib.empty();
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "{}: none of the variables asked for ({}) is in the {} inputs; leave the {} "
+                     "files out of the conversion",
+                     grib_idle ? scans.front().path.string() : files.front().source.path,
+                     fmt::join(requested, ", "), grib_idle ? "GRIB" : "netCDF",
+                     grib_idle ? "GRIB" : "netCDF");
+  }
+  return out;
+}
+
+// GRIB and netCDF inputs of one conversion: each format's catalog of the whole time
+// range, joined (ingest/mixed_catalog.h), then the steps asked for.
+InputCatalog mixed_catalog(const InputsByFormat& by_format, const ScanOptions& options) {
+  std::vector<GribScan> scans;
+  for (const auto& path : by_format.grib) scans.push_back(scan_grib_file(path));
+  std::vector<ScannedFile> files = scan_distinct_files(by_format.netcdf);
+  const RequestedBySide requested = requested_by_side(options.variables, scans, files);
+  ScanOptions side = options;
+  side.first_step.reset();
+  side.last_step.reset();
+  side.variables = requested.grib;
+  const InputCatalog grib = grib_catalog(scans, side);
+  side.variables = requested.netcdf;
+  const InputCatalog netcdf = netcdf_catalog(std::move(files), side);
+  InputCatalog c = merge_grib_and_netcdf(grib, netcdf, by_format.grib_first, options);
+  if (options.variables.empty()) return c;
+  // The variables in the order asked for, as from inputs of one format.
+  std::vector<VariableMeta> variables;
+  std::vector<std::vector<VariableLocation>> locations;
+  for (const std::string& name : options.variables) {
+    const std::size_t v = c.variable_index(name);
+    variables.push_back(std::move(c.variables[v]));
+    locations.push_back(std::move(c.locations[v]));
+  }
+  c.variables = std::move(variables);
+  c.locations = std::move(locations);
+  return c;
+}
+
+}  // namespace
+
+InputCatalog InputCatalog::as_in_files() const {
+  InputCatalog c = *this;
+  if (repeats_first_column()) {
+    c.x.values.pop_back();
+    c.x.periodic = false;
+  }
+  c.source_nx = c.x.size();
+  return c;
+}
+
+std::size_t InputCatalog::variable_index(std::string_view name) const {
+  std::string_view n = name;
+  while (!n.empty() && n.front() == '/') n.remove_prefix(1);
+  for (std::size_t i = 0; i < variables.size(); ++i) {
+    if (variables[i].name == n) return i;
+  }
+  std::vector<std::string> names;
+  for (const auto& v : variables) names.push_back(v.name);
+  throw make_error(ErrorCode::kNotFound, "variable '{}' is not among the converted variables ({})",
+                   name, fmt::join(names, ", "));
+}
+
+InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
+                         const ScanOptions& options) {
+  if (inputs.empty()) throw make_error(ErrorCode::kInvalidArgument, "no input files given");
+  const InputsByFormat by_format = inputs_by_format(inputs);
+  if (by_format.grib.empty()) return netcdf_catalog(scan_distinct_files(inputs), options);
+  // GRIB places its levels from its own keys (pv, HHL): the netCDF options would be
+  // silently ignored.
+  if (options.height_var || !options.formula_constants.empty()) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "{}: {} applies to netCDF input only; GRIB levels are placed from the "
+                     "messages' own keys (hybrid pv with lnsp or sp, HHL for "
+                     "generalVerticalLayer); leave the option out",
+                     by_format.grib.front().string(),
+                     options.height_var ? "--height-var" : "--formula-term");
+  }
+  if (by_format.netcdf.empty()) return grib_catalog(inputs, options);
+  return mixed_catalog(by_format, options);
 }
 
 }  // namespace strielad::ingest

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Scans CF-NetCDF input files (classic and NetCDF-4, groups included) into one catalog:
+// Scans CF-NetCDF input files (classic and NetCDF-4, groups included) and GRIB files
+// (ingest/grib_catalog.h), alone or together (ingest/mixed_catalog.h), into one catalog:
 // the common grid (lon, lat, vertical axes kept exactly as stored, or index axes and the
 // 2-D coordinates of a curvilinear grid), the merged time axis across files, and where
 // every (variable, time step) lives.
@@ -146,7 +147,11 @@ struct InputCatalog {
 // kUnsupported (unstructured grids such as ICON's native triangles, 2-D coordinates a
 // variable does not name or the file lacks, dimension orders other than (time, vertical,
 // lat, lon)); kInvalidInput also for 2-D coordinates that cannot place a curvilinear grid
-// (ingest/curvilinear_grid.h) or differ between files.
+// (ingest/curvilinear_grid.h) or differ between files. Inputs are told apart by content
+// (ingest/input_kind.h); GRIB and netCDF inputs together are joined as
+// merge_grib_and_netcdf says (kNotFound for a variable asked for that neither format
+// has, kInvalidInput for one both have, kInvalidArgument for a --vars list that takes
+// nothing from one format).
 InputCatalog scan_inputs(const std::vector<std::filesystem::path>& inputs,
                          const ScanOptions& options);
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // GRIB files (libncarg-data) are recognised and listed through ecCodes; what a conversion
-// cannot take (mixed with netCDF, a reduced grid, no 3-D field, a damaged message) is
+// cannot take (netCDF on another grid, a reduced grid, no 3-D field, a damaged message) is
 // refused by name. ecCodes' own messages never reach stderr.
 #include <gtest/gtest.h>
 
@@ -34,14 +34,15 @@ TEST(GribInputTest, ListsEveryMessageOfARealGrib2File) {
             std::filesystem::file_size(ncarg_file("grb/fh.0012_tl.press_gr.awp211.grb2")));
 }
 
-TEST(GribInputTest, MixingGribAndNetcdfInputsIsRefused) {
+TEST(GribInputTest, MixingWithNetcdfOnAnotherGridIsRefused) {
+  // contour.cdf lies on longitudes and latitudes, the forecast on a Lambert projection.
   expect_error(
       [] {
         scan_inputs(
             {ncarg_file("grb/fh.0012_tl.press_gr.awp211.grb2"), ncarg_file("cdf/contour.cdf")}, {});
       },
-      ErrorCode::kUnsupported,
-      {"fh.0012_tl.press_gr.awp211.grb2 is GRIB", "contour.cdf is not", "cannot be mixed"});
+      ErrorCode::kInvalidInput,
+      {"contour.cdf", "not on the grid of GRIB input", "fh.0012_tl.press_gr.awp211.grb2"});
 }
 
 TEST(GribInputTest, ReducedGridIsRefusedWithHowToRegridIt) {
