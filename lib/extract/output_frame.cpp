@@ -173,24 +173,39 @@ void transform_normal(const Vec3& cx, const Vec3& cy, const Vec3& cz, double det
 // The mesh's normals as its own area-weighted face normals (where those have a length),
 // every triangle's winding first reversed when `reverse` (in the same pass); `sum` is
 // scratch, one entry per vertex.
-void placed_surface_normals(Mesh& mesh, bool reverse, std::vector<Vec3>& sum) {
-  sum.assign(mesh.positions.size(), Vec3{0, 0, 0});
+template <bool kReverse>
+void sum_face_normals(Mesh& mesh, Vec3* __restrict sum) {
+  const Vec3* __restrict p = mesh.positions.data();
   for (auto& t : mesh.triangles) {
-    if (reverse) std::swap(t[1], t[2]);
-    const Vec3 n = area_normal(mesh, t);
-    for (std::uint32_t i : t) {
+    if constexpr (kReverse) std::swap(t[1], t[2]);
+    const std::uint32_t i0 = t[0], i1 = t[1], i2 = t[2];
+    const Vec3 n = cross(sub(p[i1], p[i0]), sub(p[i2], p[i0]));  // area_normal
+    for (const std::uint32_t i : {i0, i1, i2}) {
       Vec3& s = sum[i];
-      for (int a = 0; a < 3; ++a) s[a] += n[a];
+      s[0] += n[0];
+      s[1] += n[1];
+      s[2] += n[2];
     }
   }
+}
+
+void placed_surface_normals(Mesh& mesh, bool reverse, std::vector<Vec3>& sum) {
+  sum.assign(mesh.positions.size(), Vec3{0, 0, 0});
+  if (reverse) {
+    sum_face_normals<true>(mesh, sum.data());
+  } else {
+    sum_face_normals<false>(mesh, sum.data());
+  }
   const std::size_t count = std::min(sum.size(), mesh.normals.size());
+  const Vec3* __restrict s = sum.data();
+  std::array<float, 3>* __restrict out = mesh.normals.data();
   for (std::size_t v = 0; v < count; ++v) {
-    const Vec3& n = sum[v];
+    const Vec3& n = s[v];
     const double len = std::sqrt(dot(n, n));
     if (len > 0 && std::isfinite(len)) {
       const double inv = 1.0 / len;
-      mesh.normals[v] = {static_cast<float>(n[0] * inv), static_cast<float>(n[1] * inv),
-                         static_cast<float>(n[2] * inv)};
+      out[v] = {static_cast<float>(n[0] * inv), static_cast<float>(n[1] * inv),
+                static_cast<float>(n[2] * inv)};
     }
   }
 }
@@ -549,6 +564,26 @@ FrameTransform::MappedPoint FrameTransform::map_point(const std::array<double, 3
   return m;
 }
 
+// height_m at vertices first.. of mesh, the placement's kind decided once.
+void FrameTransform::place_heights(Mesh& mesh, const std::vector<float>* heights,
+                                   std::size_t first) const {
+  std::array<double, 3>* __restrict p = mesh.positions.data();
+  const std::size_t n = mesh.positions.size();
+  if (heights != nullptr && vertical_.kind == VerticalPlacement::Kind::kGeometry &&
+      vertical_.levels.empty()) {
+    const float* __restrict h = heights->data();
+    if (vertical_.pressure) {
+      for (std::size_t v = first; v < n; ++v) p[v][2] = geo::standard_height_m(static_cast<double>(h[v]));
+    } else {
+      for (std::size_t v = first; v < n; ++v) p[v][2] = static_cast<double>(h[v]);
+    }
+    return;
+  }
+  for (std::size_t v = first; v < n; ++v) {
+    p[v][2] = height_m(p[v][2], heights != nullptr ? static_cast<double>((*heights)[v]) : 0.0);
+  }
+}
+
 bool FrameTransform::column_normals() const {
   return (curvilinear_ || !projection_.identity()) &&
          (frame_ == OutputFrame::kLonLat || frame_ == OutputFrame::kLocalMetric) &&
@@ -626,10 +661,8 @@ void FrameTransform::apply(Mesh& mesh) const {
   }
   if (frame_ == OutputFrame::kLonLat && geographic_axes(*manifest_)) {
     // Longitude and latitude stay as they are: only the height is new.
-    for (; v < mesh.positions.size(); ++v) {
-      auto& p = mesh.positions[v];
-      p[2] = height_m(p[2], height_at(v));
-    }
+    place_heights(mesh, heights, v);
+    v = mesh.positions.size();
   }
   for (; v < mesh.positions.size(); ++v) mesh.positions[v] = position(mesh.positions[v], height_at(v));
   // A negative orientation: the map reverses the triangles' winding (a pressure axis, say).

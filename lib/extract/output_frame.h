@@ -151,6 +151,8 @@ class FrameTransform {
   // Whether vertices are mapped column by column: a mapped or curvilinear grid placed in
   // lonlat or metric on its height axis, normals transformed (not replaced).
   bool column_normals() const;
+  // The heights of vertices `first`.. of `mesh` (longitude and latitude kept).
+  void place_heights(Mesh& mesh, const std::vector<float>* heights, std::size_t first) const;
   // apply for column_normals: positions and normals through the column's cached terms.
   void apply_by_columns(Mesh& mesh) const;
   // Whether heights come from a mesh attribute; whether normals are the placed surface's.
