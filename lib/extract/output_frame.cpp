@@ -594,14 +594,20 @@ bool FrameTransform::column_normals() const {
 // height axis the vertical column of the map is constant: map_point's Jacobian columns
 // are the same at every vertex of a column, and so are transform_normal's terms.
 void FrameTransform::apply_by_columns(Mesh& mesh) const {
+  const FramePoint f = frame_point(frame_, lon0_, lat0_, 0.0, lon0_, lat0_);
+  const std::array<Vec3, 3> frame{f.d_lon, f.d_lat, f.d_h};
+  const Vec3 cz = combine(frame[0], frame[1], frame[2], Vec3{0, 0, z_unit_});
   int orientation = 0;
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     auto& q = mesh.positions[v];
     Column& c = column(q[0], q[1]);
     if (!c.has_normal_terms) {
-      const MappedPoint m = map_point(q, 0.0);
-      c.normal_terms = normal_terms(m.cx, m.cy, m.cz);
-      c.det = dot(m.cx, cross(m.cy, m.cz));
+      // map_point's Jacobian columns, the frame's derivatives taken once.
+      const auto& j = column_jacobian(q[0], q[1]);
+      const Vec3 cx = combine(frame[0], frame[1], frame[2], Vec3{j[0], j[2], 0});
+      const Vec3 cy = combine(frame[0], frame[1], frame[2], Vec3{j[1], j[3], 0});
+      c.normal_terms = normal_terms(cx, cy, cz);
+      c.det = dot(cx, cross(cy, cz));
       c.has_normal_terms = true;
     }
     if (orientation == 0 && c.det != 0 && std::isfinite(c.det)) orientation = c.det < 0 ? -1 : 1;
