@@ -14,7 +14,6 @@
 
 #include "core/error.h"
 #include "core/vec3.h"
-#include "extract/mesh_metrics.h"
 #include "format/geometry_field.h"
 #include "geo/horizontal_orientation.h"
 #include "geo/standard_atmosphere.h"
@@ -148,14 +147,15 @@ Vec3 combine(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& v) {
           a[2] * v[0] + b[2] * v[1] + c[2] * v[2]};
 }
 
-// Normal n (unit, axis frame) through the map with Jacobian columns cx, cy, cz
-// (determinant det): n' = J^-T n = (n_x (J_y x J_z) + n_y (J_z x J_x) + n_z (J_x x J_y))
-// / det J, unit length; n is kept where that has none.
-// The cross products transform_normal needs (they depend on the map alone).
+// The cross products transform_normal needs (they depend on the map alone): J_y x J_z,
+// J_z x J_x and J_x x J_y of the Jacobian columns cx, cy, cz.
 std::array<Vec3, 3> normal_terms(const Vec3& cx, const Vec3& cy, const Vec3& cz) {
   return {cross(cy, cz), cross(cz, cx), cross(cx, cy)};
 }
 
+// Normal n (unit, axis frame) through the map with Jacobian columns cx, cy, cz
+// (determinant det, cross products `terms`): n' = J^-T n = (n_x (J_y x J_z) + n_y (J_z x
+// J_x) + n_z (J_x x J_y)) / det J, unit length; n is kept where that has none.
 void transform_normal(const std::array<Vec3, 3>& terms, double det, std::array<float, 3>& n) {
   const auto& [a, b, c] = terms;
   Vec3 g{};
@@ -179,7 +179,7 @@ void sum_face_normals(Mesh& mesh, Vec3* __restrict sum) {
   for (auto& t : mesh.triangles) {
     if constexpr (kReverse) std::swap(t[1], t[2]);
     const std::uint32_t i0 = t[0], i1 = t[1], i2 = t[2];
-    const Vec3 n = cross(sub(p[i1], p[i0]), sub(p[i2], p[i0]));  // area_normal
+    const Vec3 n = cross(sub(p[i1], p[i0]), sub(p[i2], p[i0]));  // area_normal (mesh_metrics.h)
     for (const std::uint32_t i : {i0, i1, i2}) {
       Vec3& s = sum[i];
       s[0] += n[0];
