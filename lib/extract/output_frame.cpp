@@ -14,7 +14,6 @@
 
 #include "core/error.h"
 #include "core/vec3.h"
-#include "extract/mesh_metrics.h"
 #include "format/geometry_field.h"
 #include "geo/horizontal_orientation.h"
 #include "geo/standard_atmosphere.h"
@@ -62,6 +61,11 @@ bool mapped_axes(const format::Manifest& m) {
 }
 
 double midpoint(const Axis& a) { return 0.5 * (a.values.front() + a.values.back()); }
+
+// std::remainder(x, 360.0), the same bits: x itself within [-180, 180] (the remainder
+// rounds the quotient 0.5 to the even 0), which longitudes about a centre nearly always
+// are, without the library call.
+double remainder_360(double x) { return std::fabs(x) <= 180.0 ? x : std::remainder(x, 360.0); }
 
 // Jacobian columns of the frame map at (lon, lat, h): d/dlon, d/dlat (per degree), d/dh.
 struct FramePoint {
@@ -143,11 +147,17 @@ Vec3 combine(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& v) {
           a[2] * v[0] + b[2] * v[1] + c[2] * v[2]};
 }
 
+// The cross products transform_normal needs (they depend on the map alone): J_y x J_z,
+// J_z x J_x and J_x x J_y of the Jacobian columns cx, cy, cz.
+std::array<Vec3, 3> normal_terms(const Vec3& cx, const Vec3& cy, const Vec3& cz) {
+  return {cross(cy, cz), cross(cz, cx), cross(cx, cy)};
+}
+
 // Normal n (unit, axis frame) through the map with Jacobian columns cx, cy, cz
-// (determinant det): n' = J^-T n = (n_x (J_y x J_z) + n_y (J_z x J_x) + n_z (J_x x J_y))
-// / det J, unit length; n is kept where that has none.
-void transform_normal(const Vec3& cx, const Vec3& cy, const Vec3& cz, double det, std::array<float, 3>& n) {
-  const Vec3 a = cross(cy, cz), b = cross(cz, cx), c = cross(cx, cy);
+// (determinant det, cross products `terms`): n' = J^-T n = (n_x (J_y x J_z) + n_y (J_z x
+// J_x) + n_z (J_x x J_y)) / det J, unit length; n is kept where that has none.
+void transform_normal(const std::array<Vec3, 3>& terms, double det, std::array<float, 3>& n) {
+  const auto& [a, b, c] = terms;
   Vec3 g{};
   for (int i = 0; i < 3; ++i) g[i] = (n[0] * a[i] + n[1] * b[i] + n[2] * c[i]) / det;
   const double len = std::sqrt(dot(g, g));
@@ -156,27 +166,46 @@ void transform_normal(const Vec3& cx, const Vec3& cy, const Vec3& cz, double det
   }
 }
 
+void transform_normal(const Vec3& cx, const Vec3& cy, const Vec3& cz, double det, std::array<float, 3>& n) {
+  transform_normal(normal_terms(cx, cy, cz), det, n);
+}
+
 // The mesh's normals as its own area-weighted face normals (where those have a length),
 // every triangle's winding first reversed when `reverse` (in the same pass); `sum` is
 // scratch, one entry per vertex.
-void placed_surface_normals(Mesh& mesh, bool reverse, std::vector<Vec3>& sum) {
-  sum.assign(mesh.positions.size(), Vec3{0, 0, 0});
+template <bool kReverse>
+void sum_face_normals(Mesh& mesh, Vec3* __restrict sum) {
+  const Vec3* __restrict p = mesh.positions.data();
   for (auto& t : mesh.triangles) {
-    if (reverse) std::swap(t[1], t[2]);
-    const Vec3 n = area_normal(mesh, t);
-    for (std::uint32_t i : t) {
+    if constexpr (kReverse) std::swap(t[1], t[2]);
+    const std::uint32_t i0 = t[0], i1 = t[1], i2 = t[2];
+    const Vec3 n = cross(sub(p[i1], p[i0]), sub(p[i2], p[i0]));  // area_normal (mesh_metrics.h)
+    for (const std::uint32_t i : {i0, i1, i2}) {
       Vec3& s = sum[i];
-      for (int a = 0; a < 3; ++a) s[a] += n[a];
+      s[0] += n[0];
+      s[1] += n[1];
+      s[2] += n[2];
     }
   }
+}
+
+void placed_surface_normals(Mesh& mesh, bool reverse, std::vector<Vec3>& sum) {
+  sum.assign(mesh.positions.size(), Vec3{0, 0, 0});
+  if (reverse) {
+    sum_face_normals<true>(mesh, sum.data());
+  } else {
+    sum_face_normals<false>(mesh, sum.data());
+  }
   const std::size_t count = std::min(sum.size(), mesh.normals.size());
+  const Vec3* __restrict s = sum.data();
+  std::array<float, 3>* __restrict out = mesh.normals.data();
   for (std::size_t v = 0; v < count; ++v) {
-    const Vec3& n = sum[v];
+    const Vec3& n = s[v];
     const double len = std::sqrt(dot(n, n));
     if (len > 0 && std::isfinite(len)) {
       const double inv = 1.0 / len;
-      mesh.normals[v] = {static_cast<float>(n[0] * inv), static_cast<float>(n[1] * inv),
-                         static_cast<float>(n[2] * inv)};
+      out[v] = {static_cast<float>(n[0] * inv), static_cast<float>(n[1] * inv),
+                static_cast<float>(n[2] * inv)};
     }
   }
 }
@@ -392,13 +421,9 @@ FrameTransform::FrameTransform(const Store& store, OutputFrame frame, VerticalPl
 std::array<double, 3> FrameTransform::lon_lat_height(const std::array<double, 3>& p,
                                                      double height) const {
   double lon = p[0], lat = p[1];
-  if (curvilinear_) {
-    const auto g = curvilinear_->at(p[0], p[1]);
-    lon = lon0_ + std::remainder(g[0] - lon0_, 360.0);
-    lat = g[1];
-  } else if (!projection_.identity()) {
-    const auto& g = column(p[0], p[1]).geographic;
-    lon = lon0_ + std::remainder(g[0] - lon0_, 360.0);
+  if (curvilinear_ || !projection_.identity()) {
+    const auto& g = column(p[0], p[1]).lonlat;
+    lon = g[0];
     lat = g[1];
   }
   return {lon, lat, height_m(p[2], height)};
@@ -460,8 +485,12 @@ FrameTransform::Column& FrameTransform::column(double x, double y) const {
     c.used = true;
     c.x = bx;
     c.y = by;
-    c.geographic = projection_.to_geographic(x, y);
+    const auto g = curvilinear_ ? curvilinear_->at(x, y) : projection_.to_geographic(x, y);
+    c.lonlat = {lon0_ + remainder_360(g[0] - lon0_), g[1]};
     c.has_jacobian = false;
+    c.has_normal_terms = false;
+    c.memo_used = 0;
+    c.memo_next = 0;
   }
   return c;
 }
@@ -469,7 +498,7 @@ FrameTransform::Column& FrameTransform::column(double x, double y) const {
 const std::array<double, 4>& FrameTransform::column_jacobian(double x, double y) const {
   Column& c = column(x, y);
   if (!c.has_jacobian) {
-    c.jacobian = projection_.jacobian(x, y, jacobian_step_);
+    c.jacobian = curvilinear_ ? curvilinear_->jacobian(x, y) : projection_.jacobian(x, y, jacobian_step_);
     c.has_jacobian = true;
   }
   return c.jacobian;
@@ -494,11 +523,7 @@ FrameTransform::MappedPoint FrameTransform::map_point(const std::array<double, 3
   Vec3 jx{1, 0, 0}, jy{0, 1, 0}, jz{0, 0, 0};
   if (geographic_) {
     llh = lon_lat_height(q, hv);
-    if (curvilinear_) {
-      const auto j = curvilinear_->jacobian(q[0], q[1]);
-      jx = {j[0], j[2], 0};
-      jy = {j[1], j[3], 0};
-    } else if (!projection_.identity()) {
+    if (curvilinear_ || !projection_.identity()) {
       const auto& j = column_jacobian(q[0], q[1]);
       jx = {j[0], j[2], 0};
       jy = {j[1], j[3], 0};
@@ -539,8 +564,85 @@ FrameTransform::MappedPoint FrameTransform::map_point(const std::array<double, 3
   return m;
 }
 
+// height_m at vertices first.. of mesh, the placement's kind decided once.
+void FrameTransform::place_heights(Mesh& mesh, const std::vector<float>* heights,
+                                   std::size_t first) const {
+  std::array<double, 3>* __restrict p = mesh.positions.data();
+  const std::size_t n = mesh.positions.size();
+  if (heights != nullptr && vertical_.kind == VerticalPlacement::Kind::kGeometry &&
+      vertical_.levels.empty()) {
+    const float* __restrict h = heights->data();
+    if (vertical_.pressure) {
+      for (std::size_t v = first; v < n; ++v) p[v][2] = geo::standard_height_m(static_cast<double>(h[v]));
+    } else {
+      for (std::size_t v = first; v < n; ++v) p[v][2] = static_cast<double>(h[v]);
+    }
+    return;
+  }
+  for (std::size_t v = first; v < n; ++v) {
+    p[v][2] = height_m(p[v][2], heights != nullptr ? static_cast<double>((*heights)[v]) : 0.0);
+  }
+}
+
+bool FrameTransform::column_normals() const {
+  return (curvilinear_ || !projection_.identity()) &&
+         (frame_ == OutputFrame::kLonLat || frame_ == OutputFrame::kLocalMetric) &&
+         vertical_.kind == VerticalPlacement::Kind::kHeightAxis;
+}
+
+// In lonlat and metric the frame's Jacobian does not depend on the height, and on a
+// height axis the vertical column of the map is constant: map_point's Jacobian columns
+// are the same at every vertex of a column, and so are transform_normal's terms.
+void FrameTransform::apply_by_columns(Mesh& mesh) const {
+  const FramePoint f = frame_point(frame_, lon0_, lat0_, 0.0, lon0_, lat0_);
+  const std::array<Vec3, 3> frame{f.d_lon, f.d_lat, f.d_h};
+  const Vec3 cz = combine(frame[0], frame[1], frame[2], Vec3{0, 0, z_unit_});
+  int orientation = 0;
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    auto& q = mesh.positions[v];
+    Column& c = column(q[0], q[1]);
+    if (!c.has_normal_terms) {
+      // map_point's Jacobian columns, the frame's derivatives taken once.
+      const auto& j = column_jacobian(q[0], q[1]);
+      const Vec3 cx = combine(frame[0], frame[1], frame[2], Vec3{j[0], j[2], 0});
+      const Vec3 cy = combine(frame[0], frame[1], frame[2], Vec3{j[1], j[3], 0});
+      c.normal_terms = normal_terms(cx, cy, cz);
+      c.det = dot(cx, cross(cy, cz));
+      c.has_normal_terms = true;
+    }
+    if (orientation == 0 && c.det != 0 && std::isfinite(c.det)) orientation = c.det < 0 ? -1 : 1;
+    if (v < mesh.normals.size()) {
+      std::array<float, 3>& n = mesh.normals[v];
+      const auto bits = std::bit_cast<std::array<std::uint32_t, 3>>(n);
+      int hit = -1;
+      for (int k = 0; k < c.memo_used; ++k) {
+        if (std::bit_cast<std::array<std::uint32_t, 3>>(c.normal_memo[k][0]) == bits) hit = k;
+      }
+      if (hit >= 0) {
+        n = c.normal_memo[hit][1];
+      } else {
+        auto& slot = c.normal_memo[c.memo_next];
+        slot[0] = n;
+        transform_normal(c.normal_terms, c.det, n);
+        slot[1] = n;
+        constexpr int kSlots = static_cast<int>(std::tuple_size_v<decltype(c.normal_memo)>);
+        c.memo_next = static_cast<std::uint8_t>((c.memo_next + 1) % kSlots);
+        c.memo_used = static_cast<std::uint8_t>(std::min(c.memo_used + 1, kSlots));
+      }
+    }
+    q = frame_position(frame_, c.lonlat[0], c.lonlat[1], height_m(q[2], 0.0), lon0_, lat0_);
+  }
+  if (orientation < 0) {
+    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+  }
+}
+
 void FrameTransform::apply(Mesh& mesh) const {
   if (frame_ == OutputFrame::kAxis) return;
+  if (column_normals()) {
+    apply_by_columns(mesh);
+    return;
+  }
   const std::vector<float>* heights = placing_heights(mesh);
   auto height_at = [&](std::size_t v) {
     return heights != nullptr ? static_cast<double>((*heights)[v]) : 0.0;
@@ -565,10 +667,8 @@ void FrameTransform::apply(Mesh& mesh) const {
   }
   if (frame_ == OutputFrame::kLonLat && geographic_axes(*manifest_)) {
     // Longitude and latitude stay as they are: only the height is new.
-    for (; v < mesh.positions.size(); ++v) {
-      auto& p = mesh.positions[v];
-      p[2] = height_m(p[2], height_at(v));
-    }
+    place_heights(mesh, heights, v);
+    v = mesh.positions.size();
   }
   for (; v < mesh.positions.size(); ++v) mesh.positions[v] = position(mesh.positions[v], height_at(v));
   // A negative orientation: the map reverses the triangles' winding (a pressure axis, say).

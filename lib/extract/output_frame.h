@@ -126,17 +126,35 @@ class FrameTransform {
   std::array<double, 3> position(const std::array<double, 3>& q, double hv) const;
   std::array<double, 3> cartesian_position(const std::array<double, 3>& q, double hv) const;
   const std::vector<float>* placing_heights(const Mesh& mesh) const;
-  // A mapped grid's geographic position and Jacobian at axis (x, y), computed once per
-  // column of vertices (the same bits of x and y) while the column stays in the cache.
+  // A mapped or curvilinear grid's longitude (continuous about lon0_) and latitude at
+  // axis (x, y), its Jacobian there and, where the frame's Jacobian is the same at every
+  // height of the column (column_normals), the terms that carry a normal through it:
+  // computed once per column of vertices (the same bits of x and y) while the column
+  // stays in the cache, with the same bits as computing them per vertex.
   struct Column {
     std::uint64_t x = 0, y = 0;  // the bits of x and y
-    bool used = false, has_jacobian = false;
-    std::array<double, 2> geographic{};
+    bool used = false, has_jacobian = false, has_normal_terms = false;
+    std::array<double, 2> lonlat{};
     std::array<double, 4> jacobian{};
+    // transform_normal's cross products of the frame's Jacobian columns, and its
+    // determinant.
+    std::array<std::array<double, 3>, 3> normal_terms{};
+    double det = 0;
+    // The last normals carried through (by their bits; a face's vertices along a column
+    // share one), kNormalMemo slots used in turn.
+    std::array<std::array<std::array<float, 3>, 2>, 4> normal_memo{};
+    std::uint8_t memo_used = 0, memo_next = 0;
   };
   static constexpr int kColumnBits = 12;
   Column& column(double x, double y) const;
   const std::array<double, 4>& column_jacobian(double x, double y) const;
+  // Whether vertices are mapped column by column: a mapped or curvilinear grid placed in
+  // lonlat or metric on its height axis, normals transformed (not replaced).
+  bool column_normals() const;
+  // The heights of vertices `first`.. of `mesh` (longitude and latitude kept).
+  void place_heights(Mesh& mesh, const std::vector<float>* heights, std::size_t first) const;
+  // apply for column_normals: positions and normals through the column's cached terms.
+  void apply_by_columns(Mesh& mesh) const;
   // Whether heights come from a mesh attribute; whether normals are the placed surface's.
   bool placed_by_attribute() const;
   bool placed_surface() const;
