@@ -39,13 +39,19 @@ void draw_panel(PanelState& state, const PanelInfo& info, const format::Manifest
   bool edited = false;
   if (!state.scene_error.empty()) error_text("not applied: " + state.scene_error);
   if (ImGui::CollapsingHeader("Sub-volumes", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::PushID("subvolumes");
     edited |= subvolume_section(state, info, manifest);
+    ImGui::PopID();
   }
   if (ImGui::CollapsingHeader("Attributes", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::PushID("attributes");
     edited |= attribute_section(state, manifest);
+    ImGui::PopID();
   }
   if (ImGui::CollapsingHeader("Slices", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::PushID("slices");
     edited |= slice_section(state, manifest);
+    ImGui::PopID();
   }
   if (edited) check_edit(state, manifest);
   if (ImGui::CollapsingHeader("Scene files", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -82,6 +82,7 @@ bool limits_editor(SubVolume& s, const format::Manifest& manifest) {
 // The axis box: per axis of the store, a range bounded by the axis.
 bool axis_box_editor(SubVolume& s, const format::Manifest& manifest) {
   bool edited = false;
+  ImGui::PushID("axis box");
   ImGui::TextDisabled("box in the store's axes");
   for (const Axis* axis : {&manifest.x, &manifest.y, &manifest.z}) {
     std::optional<AxisRange> range;
@@ -94,6 +95,7 @@ bool axis_box_editor(SubVolume& s, const format::Manifest& manifest) {
       s.domain.erase(axis->name);
     }
   }
+  ImGui::PopID();
   return edited;
 }
 
@@ -116,6 +118,7 @@ bool geographic_box_editor(SubVolume& s, const format::Manifest& manifest) {
   note_item(key + " on");
   if (!s.geographic) return edited;
   auto& box = *s.geographic;
+  ImGui::PushID("geographic");
   edited |= optional_range("lon", box.lon,
                            geographic_extent(manifest, GeographicCoordinate::kLongitude),
                            key + " lon");
@@ -125,6 +128,7 @@ bool geographic_box_editor(SubVolume& s, const format::Manifest& manifest) {
   edited |= optional_range("height (m)", box.height,
                            geographic_extent(manifest, GeographicCoordinate::kHeight),
                            key + " height");
+  ImGui::PopID();
   return edited;
 }
 

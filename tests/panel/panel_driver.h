@@ -8,6 +8,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <map>
 #include <stdexcept>
@@ -76,8 +77,24 @@ class PanelDriver {
     const auto r = rect(key);
     press_at(ImVec2(r.x0 + fraction * (r.x1 - r.x0), 0.5f * (r.y0 + r.y1)));
   }
-  // A slider: pressed at `fraction` of its width, then let go.
-  void slide(const std::string& key, float fraction) { click(key, fraction); }
+  // A slider: pressed at `fraction` of its width (inside it), dragged to `fraction`
+  // (beyond the slider where outside 0..1), then let go.
+  void slide(const std::string& key, float fraction) {
+    const auto r = rect(key);
+    const float y = 0.5f * (r.y0 + r.y1);
+    const float x = r.x0 + fraction * (r.x1 - r.x0);
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(std::clamp(x, r.x0 + 1, r.x1 - 1), y);
+    frame();
+    io.MouseDown[0] = true;
+    frame();
+    io.MousePos = ImVec2(x, y);
+    frame();
+    io.MouseDown[0] = false;
+    frame();
+    io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+    frame();
+  }
 
   // Picks `item` from the combo `key` (opened first).
   void pick(const std::string& key, const std::string& item) {
@@ -136,8 +153,11 @@ inline format::Manifest panel_manifest() {
   m.y = axis("lat", AxisKind::kLatitude, "degrees_north", 40, 50);
   m.z = axis("height", AxisKind::kHeight, "m", 0, 10000);
   m.time = TimeAxis{"time", "hours since 2024-06-21 00:00:00", "standard", {0, 1}};
-  m.variables.push_back(format::StoreVariable{.name = "clw"});
-  m.variables.push_back(format::StoreVariable{.name = "ta"});
+  for (const char* name : {"clw", "ta"}) {
+    format::StoreVariable v;
+    v.name = name;
+    m.variables.push_back(v);
+  }
   m.summary = nlohmann::json::parse(
       R"({"variables": {"clw": {"min": 0, "max": 0.001}, "ta": {"min": 200, "max": 300}}})");
   return m;
