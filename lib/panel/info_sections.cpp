@@ -48,6 +48,10 @@ void load(PanelState& state, const format::Manifest& manifest) {
     state.time_step = static_cast<int>(state.scene.time);
     state.time_changed = true;
     state.camera_loaded = loaded.camera;
+    if (state.scene.trajectories) {
+      state.track_minutes = static_cast<float>(state.scene.trajectories->minutes);
+      state.tracks_changed = true;
+    }
     state.file_error.clear();
     state.file_status = fmt::format("loaded {}{}", state.scene_path,
                                     loaded.camera ? " and its camera" : "");

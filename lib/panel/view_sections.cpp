@@ -97,6 +97,8 @@ void view_section(PanelState& state, const PanelInfo& info) {
     if (ImGui::IsItemDeactivatedAfterEdit()) {
       state.track_minutes = std::max(state.track_minutes, 0.1f);
       state.tracks_changed = true;
+      // Saved with the scene; the server does not use it, so the scene is not re-sent.
+      if (state.scene.trajectories) state.scene.trajectories->minutes = state.track_minutes;
     }
     ImGui::EndDisabled();
   }

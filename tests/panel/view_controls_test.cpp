@@ -89,10 +89,14 @@ TEST(PanelViewControlsTest, TrackSwitchAndMinutesOnlyWithTracks) {
   }
   auto state = panel_state(m);
   state.tracks_available = true;
+  state.scene.trajectories = Trajectories{.file = "tracks.csv", .minutes = 2};
   PanelDriver panel(m, state);
   panel.slide("track minutes", 1.0f);
   EXPECT_TRUE(panel.state().tracks_changed);
   EXPECT_NEAR(panel.state().track_minutes, 600.0f, 10.0f);
+  // Saved with the scene, which is not sent again for it.
+  EXPECT_EQ(panel.state().scene.trajectories->minutes, panel.state().track_minutes);
+  EXPECT_FALSE(panel.state().scene_changed);
   panel.click("tracks");
   EXPECT_FALSE(panel.state().tracks_shown);
 }
