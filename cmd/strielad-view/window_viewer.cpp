@@ -31,8 +31,8 @@ namespace {
 constexpr std::size_t kUploadBytesPerFrame = 48u << 20;
 
 // Compiles the user's shader; the panel shows the error of one that does not compile.
-void apply_shader(render::VolumeRenderer& renderer, panel::PanelState& state, const std::string& text,
-                  const std::string& name) {
+void apply_shader(render::VolumeRenderer& renderer, panel::PanelState& state,
+                  const std::string& text, const std::string& name) {
   const auto update = renderer.set_user_shader(text, name);
   if (update.ok) {
     state.shader_error.clear();
@@ -47,7 +47,7 @@ void apply_shader(render::VolumeRenderer& renderer, panel::PanelState& state, co
 
 // The shader editor's starting point: the session's shader, compiled, or the built-in one.
 panel::PanelState panel_with_session_shader(render::VolumeRenderer& renderer,
-                                     const ViewerSession& session) {
+                                            const ViewerSession& session) {
   panel::PanelState state;
   state.shader_name = session.shader_name;
   state.shader_text = session.shader_source.empty() ? renderer.user_shader_source()
@@ -58,6 +58,7 @@ panel::PanelState panel_with_session_shader(render::VolumeRenderer& renderer,
   return state;
 }
 
+// The renderer's counters the panel shows.
 panel::FrameCounters frame_counters(const render::FrameStats& f) {
   return {.fragments_per_covered_pixel = f.fragments_per_covered_pixel(),
           .max_fragments_per_pixel = f.max_fragments_per_pixel,

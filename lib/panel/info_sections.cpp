@@ -104,7 +104,8 @@ void statistics_section(const PanelInfo& info) {
               info.stale_shown, info.complete ? ", complete" : "");
   ImGui::Text("received: %llu results (%llu failed), %s",
               static_cast<unsigned long long>(info.results),
-              static_cast<unsigned long long>(info.failed), bytes_text(info.bytes_received).c_str());
+              static_cast<unsigned long long>(info.failed),
+              bytes_text(info.bytes_received).c_str());
   ImGui::Text("GPU: %zu triangles in %s", info.gpu_triangles, bytes_text(info.gpu_bytes).c_str());
   if (!info.terrain.empty()) ImGui::TextWrapped("%s", info.terrain.c_str());
   const auto& f = info.frame;

@@ -57,7 +57,9 @@ void draw_panel(PanelState& state, const PanelInfo& info, const format::Manifest
   if (ImGui::CollapsingHeader("Scene files", ImGuiTreeNodeFlags_DefaultOpen)) {
     files_section(state, manifest);
   }
-  if (ImGui::CollapsingHeader("Shader")) shader_section(state);
+  const bool shader_open = ImGui::CollapsingHeader("Shader");
+  note_item("header Shader");
+  if (shader_open) shader_section(state);
   if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
     statistics_section(info);
   }

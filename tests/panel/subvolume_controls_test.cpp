@@ -31,6 +31,15 @@ TEST(PanelSubVolumeControlsTest, AddAndRemoveSubVolume) {
   EXPECT_TRUE(panel.state().scene_changed);
 }
 
+TEST(PanelSubVolumeControlsTest, TypedNameIsApplied) {
+  const auto m = panel_manifest();
+  PanelDriver panel(m, panel_state(m));
+  const auto id = panel.state().scene.subvolumes[0].id;
+  panel.type(sv(id, "name"), "thick cloud");
+  EXPECT_EQ(panel.state().scene.subvolumes[0].name, "thick cloud");
+  EXPECT_TRUE(panel.state().scene_changed);
+}
+
 TEST(PanelSubVolumeControlsTest, TypedLimitIsApplied) {
   const auto m = panel_manifest();
   PanelDriver panel(m, panel_state(m));

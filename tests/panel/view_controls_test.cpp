@@ -101,6 +101,34 @@ TEST(PanelViewControlsTest, TrackSwitchAndMinutesOnlyWithTracks) {
   EXPECT_FALSE(panel.state().tracks_shown);
 }
 
+TEST(PanelViewControlsTest, WindControlsOnlyWithWind) {
+  const auto m = panel_manifest();
+  {
+    PanelDriver panel(m, panel_state(m));
+    EXPECT_FALSE(panel.has("advect"));
+  }
+  auto state = panel_state(m);
+  state.advect_available = true;
+  panel::PanelInfo info;
+  info.step_seconds = 3600;
+  PanelDriver panel(m, state, info);
+  panel.click("advect");
+  EXPECT_TRUE(panel.state().advect);
+  panel.slide("advect seconds", 1.0f);
+  EXPECT_NEAR(panel.state().advect_seconds, 3600.0f, 1.0f);
+}
+
+TEST(PanelViewControlsTest, ShaderButtons) {
+  const auto m = panel_manifest();
+  PanelDriver panel(m, panel_state(m));
+  EXPECT_FALSE(panel.has("compile shader"));  // the section starts closed
+  panel.click("header Shader");
+  panel.click("compile shader");
+  EXPECT_TRUE(panel.state().shader_compile);
+  panel.click("reload shader");
+  EXPECT_TRUE(panel.state().shader_reload);
+}
+
 TEST(PanelViewControlsTest, LegendNamesEachSubVolume) {
   const auto m = panel_manifest();
   PanelDriver panel(m, panel_state(m));
