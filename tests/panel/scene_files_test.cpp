@@ -60,6 +60,7 @@ TEST(PanelSceneFilesTest, LoadReplacesSceneAndMovesCamera) {
   other.attributes.clear();
   other.slices.push_back(Slice{.id = 3, .name = "ground", .axis = "height", .value = 100,
                                .var = "ta"});
+  other.trajectories = Trajectories{.file = "tracks.csv", .minutes = 7};
   panel::save_scene_files(dir / "other.json", other, camera());
   PanelDriver panel(m, panel_state(m));
   panel.state().scene_path = (dir / "other.json").string();
@@ -71,6 +72,8 @@ TEST(PanelSceneFilesTest, LoadReplacesSceneAndMovesCamera) {
   EXPECT_TRUE(panel.state().time_changed);
   ASSERT_TRUE(panel.state().camera_loaded.has_value());
   EXPECT_EQ(*panel.state().camera_loaded, camera());
+  EXPECT_EQ(panel.state().track_minutes, 7.0f);
+  EXPECT_TRUE(panel.state().tracks_changed);
 }
 
 TEST(PanelSceneFilesTest, BadFilesShowAnErrorAndLeaveTheScene) {
