@@ -33,7 +33,7 @@ void apply_mouse(GLFWwindow* window, const ImGuiIO& io, int height, Mouse& mouse
 }
 
 void apply_keys(GLFWwindow* window, const ImGuiIO& io, double dt, int time_steps,
-                view::OrbitCamera& camera, PanelState& state) {
+                view::OrbitCamera& camera, panel::PanelState& state) {
   if (io.WantCaptureKeyboard) return;
   const double speed = camera.distance() * 0.6 * dt;
   const auto key = [&](int k) { return glfwGetKey(window, k) == GLFW_PRESS; };

@@ -7,7 +7,7 @@
 #include <imgui.h>
 
 #include "view/orbit_camera.h"
-#include "viewer_panel.h"
+#include "panel/panel_state.h"
 
 struct GLFWwindow;
 
@@ -28,6 +28,6 @@ void apply_mouse(GLFWwindow* window, const ImGuiIO& io, int height, Mouse& mouse
 // distance over `dt` seconds; space plays or pauses, the arrows step through the
 // `time_steps` steps. Nothing while the panel takes the keyboard.
 void apply_keys(GLFWwindow* window, const ImGuiIO& io, double dt, int time_steps,
-                view::OrbitCamera& camera, PanelState& state);
+                view::OrbitCamera& camera, panel::PanelState& state);
 
 }  // namespace strielad::view_cmd

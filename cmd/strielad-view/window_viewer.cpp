@@ -12,10 +12,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "panel/panel.h"
 #include "render/complete_frame.h"
 #include "render/png_file.h"
 #include "view/default_scene.h"
@@ -29,8 +31,8 @@ namespace {
 constexpr std::size_t kUploadBytesPerFrame = 48u << 20;
 
 // Compiles the user's shader; the panel shows the error of one that does not compile.
-void apply_shader(render::VolumeRenderer& renderer, PanelState& state, const std::string& text,
-                  const std::string& name) {
+void apply_shader(render::VolumeRenderer& renderer, panel::PanelState& state,
+                  const std::string& text, const std::string& name) {
   const auto update = renderer.set_user_shader(text, name);
   if (update.ok) {
     state.shader_error.clear();
@@ -44,9 +46,9 @@ void apply_shader(render::VolumeRenderer& renderer, PanelState& state, const std
 }
 
 // The shader editor's starting point: the session's shader, compiled, or the built-in one.
-PanelState panel_with_session_shader(render::VolumeRenderer& renderer,
-                                     const ViewerSession& session) {
-  PanelState state;
+panel::PanelState panel_with_session_shader(render::VolumeRenderer& renderer,
+                                            const ViewerSession& session) {
+  panel::PanelState state;
   state.shader_name = session.shader_name;
   state.shader_text = session.shader_source.empty() ? renderer.user_shader_source()
                                                     : session.shader_source;
@@ -54,6 +56,17 @@ PanelState panel_with_session_shader(render::VolumeRenderer& renderer,
     apply_shader(renderer, state, session.shader_source, session.shader_name);
   }
   return state;
+}
+
+// The renderer's counters the panel shows.
+panel::FrameCounters frame_counters(const render::FrameStats& f) {
+  return {.fragments_per_covered_pixel = f.fragments_per_covered_pixel(),
+          .max_fragments_per_pixel = f.max_fragments_per_pixel,
+          .fragment_capacity = f.fragment_capacity,
+          .dropped_fragments = f.dropped_fragments,
+          .truncated_pixels = f.truncated_pixels,
+          .geometry_ms = f.geometry_ms,
+          .resolve_ms = f.resolve_ms};
 }
 
 view::ViewOptions view_options(const ViewerArgs& args, const ViewerSession& session) {
@@ -84,6 +97,11 @@ WindowViewer::WindowViewer(GLFWwindow* window, const ViewerArgs& args, ViewerSes
   state_.lod_threshold_sr = static_cast<float>(args.lod_threshold_sr);
   state_.max_nodes = static_cast<int>(args.max_nodes);
   state_.boxes = args.boxes;
+  state_.terrain_available = session.terrain != nullptr;
+  state_.drape_available = session.terrain && !args.terrain_image.empty();
+  state_.tracks_available = session.tracks != nullptr;
+  state_.track_minutes = static_cast<float>(args.track_minutes);
+  info_.on_earth = controller_.frame().on_earth();
   if (session.advection) {
     playback_.emplace(*session.advection);
     playback_->set_step(controller_.time_step());
@@ -122,7 +140,10 @@ void WindowViewer::frame() {
   const auto counters = controller_.update(cam);
   renderer_.meshes().sync(controller_.meshes(), kUploadBytesPerFrame);
   const render::FrameInputs inputs = frame_inputs(cam, height);
-  info_.frame = renderer_.render(inputs, 0, width, height);
+  const render::FrameStats stats = renderer_.render(inputs, 0, width, height);
+  info_.frame = frame_counters(stats);
+  info_.nodes_moved = stats.nodes_moved;
+  state_.camera = camera_keyframe();
   update_statistics(now, counters.cut_update_ms);
   present(width, height);
 }
@@ -191,6 +212,35 @@ void WindowViewer::apply_panel_edits(clock_type::time_point now) {
     state_.home = false;
     camera_.home();
   }
+  if (state_.camera_loaded) {
+    const auto& frame = controller_.frame();
+    try {
+      camera_.look_from(frame.to_world(state_.camera_loaded->eye),
+                        frame.to_world(state_.camera_loaded->target));
+    } catch (const Error& e) {
+      state_.file_error = e.what();
+    }
+    state_.camera_loaded.reset();
+  }
+}
+
+// The camera in the store's axis coordinates, as a camera path keyframe (saved with the
+// scene); nothing where the frame cannot take it back to axes.
+std::optional<lod::Keyframe> WindowViewer::camera_keyframe() const {
+  const auto& frame = controller_.frame();
+  try {
+    lod::Keyframe key;
+    key.eye = frame.to_axis(camera_.eye());
+    key.target = frame.to_axis(camera_.target());
+    for (double v : {key.eye[0], key.eye[1], key.eye[2], key.target[0], key.target[1],
+                     key.target[2]}) {
+      if (!std::isfinite(v)) return std::nullopt;
+    }
+    if (key.eye == key.target) return std::nullopt;
+    return key;
+  } catch (const Error&) {
+    return std::nullopt;
+  }
 }
 
 void WindowViewer::compile_shader(const std::string& text) {
@@ -230,16 +280,23 @@ render::FrameInputs WindowViewer::frame_inputs(const lod::Camera& cam, int heigh
     inputs.time_seconds += playback_->seconds();
   }
   const double seconds_after = advecting() ? playback_->seconds() : 0.0;
-  if (session_.tracks) {
-    if (controller_.time_step() != tracks_step_ || seconds_after != tracks_seconds_) {
-      tracks_ = tracks_at(session_, args_, controller_.time_step(), seconds_after);
+  if (session_.tracks && state_.tracks_shown) {
+    if (controller_.time_step() != tracks_step_ || seconds_after != tracks_seconds_ ||
+        state_.tracks_changed) {
+      state_.tracks_changed = false;
+      ViewerArgs args = args_;
+      args.track_minutes = state_.track_minutes;
+      tracks_ = tracks_at(session_, args, controller_.time_step(), seconds_after);
       tracks_step_ = controller_.time_step();
       tracks_seconds_ = seconds_after;
     }
     inputs.tracks = tracks_;
   }
   add_sun(inputs, seconds_after);
-  if (session_.terrain) add_terrain(inputs, cam, height);
+  if (session_.terrain && state_.terrain_shown) {
+    add_terrain(inputs, cam, height);
+    inputs.terrain_drape = state_.drape_shown;
+  }
   info_.step_seconds = playback_ ? playback_->step_seconds() : 0;
   if (state_.boxes) add_cut_outlines(inputs);
   return inputs;
@@ -305,7 +362,6 @@ void WindowViewer::update_statistics(clock_type::time_point now, double cut_upda
   info_.results = link.results;
   info_.failed = link.failed;
   info_.bytes_received = link.bytes_received;
-  info_.nodes_moved = info_.frame.nodes_moved;
   info_.gpu_triangles = renderer_.meshes().triangles();
   info_.gpu_bytes = renderer_.meshes().bytes();
   if (controller_.last_error()) info_.error = *controller_.last_error();
@@ -321,7 +377,7 @@ void WindowViewer::update_statistics(clock_type::time_point now, double cut_upda
 
 // The panel over the rendered view, the --screenshot of the last frame, the swap.
 void WindowViewer::present(int width, int height) {
-  draw_panel(state_, info_, session_.link->manifest());
+  panel::draw_panel(state_, info_, session_.link->manifest());
   ImGui::Render();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, width, height);

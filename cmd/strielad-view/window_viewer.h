@@ -12,13 +12,14 @@
 #include <optional>
 #include <string>
 
+#include "lod/camera_path.h"
 #include "render/volume_renderer.h"
 #include "shader_file_watch.h"
 #include "view/advection_playback.h"
 #include "view/orbit_camera.h"
 #include "view/view_controller.h"
 #include "viewer_args.h"
-#include "viewer_panel.h"
+#include "panel/panel_state.h"
 #include "viewer_session.h"
 #include "window_input.h"
 
@@ -45,6 +46,7 @@ class WindowViewer {
   void advance_playback(double dt, clock_type::time_point now);
   void apply_panel_edits(clock_type::time_point now);
   void apply_shader_edits();
+  std::optional<lod::Keyframe> camera_keyframe() const;
   render::FrameInputs frame_inputs(const lod::Camera& cam, int height);
   void add_sun(render::FrameInputs& inputs, double seconds_after);
   void add_terrain(render::FrameInputs& inputs, const lod::Camera& cam, int height);
@@ -56,7 +58,7 @@ class WindowViewer {
   const ViewerArgs& args_;
   ViewerSession& session_;
   render::VolumeRenderer& renderer_;
-  PanelState state_;
+  panel::PanelState state_;
   std::optional<ShaderFileWatch> watch_;
   view::ViewController controller_;
   view::OrbitCamera camera_;
@@ -67,7 +69,7 @@ class WindowViewer {
   std::uint32_t tracks_step_ = ~0u;
   double tracks_seconds_ = -1;
   Mouse mouse_;
-  PanelInfo info_;
+  panel::PanelInfo info_;
   clock_type::time_point last_frame_;
   clock_type::time_point last_stats_;
   clock_type::time_point last_step_;

@@ -86,7 +86,8 @@ TerrainDrawing::TerrainDrawing() {
 
 TerrainDrawStats TerrainDrawing::draw(const view::TerrainFrame& frame,
                                       const lod::Mat4& view_projection,
-                                      double vertical_exaggeration, const Vec3& sun) {
+                                      double vertical_exaggeration, const Vec3& sun,
+                                      bool drape) {
   TerrainDrawStats stats;
   ++frame_;
   const GLuint p = program_.get();
@@ -141,8 +142,9 @@ TerrainDrawStats TerrainDrawing::draw(const view::TerrainFrame& frame,
       }
     }
     tile.last_frame = frame_;
-    glProgramUniform1i(p, has_drape, tile.drape ? 1 : 0);
-    if (tile.drape) glBindTextureUnit(0, tile.drape.get());
+    const bool draped = drape && tile.drape;
+    glProgramUniform1i(p, has_drape, draped ? 1 : 0);
+    if (draped) glBindTextureUnit(0, tile.drape.get());
     glBindVertexArray(tile.vertex_array.get());
     glDrawElements(GL_TRIANGLES, tile.index_count, GL_UNSIGNED_INT, nullptr);
     ++stats.tiles;

@@ -29,9 +29,11 @@ class TerrainDrawing {
   // Needs a current context; compiles its program. \error kInternal when it does not.
   TerrainDrawing();
   // Draws into the bound framebuffer with depth test and depth writes on; uploads tiles
-  // it has not seen and forgets those unused for a while.
+  // it has not seen and forgets those unused for a while. Without `drape`, tiles with a
+  // drape image are coloured as those without one.
   TerrainDrawStats draw(const view::TerrainFrame& frame, const lod::Mat4& view_projection,
-                        double vertical_exaggeration, const Vec3& sun_direction);
+                        double vertical_exaggeration, const Vec3& sun_direction,
+                        bool drape = true);
 
  private:
   struct GpuTile {

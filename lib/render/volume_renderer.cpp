@@ -363,7 +363,8 @@ void VolumeRenderer::draw_opaque_pass(const FrameInputs& inputs, const FrameSetu
   glDrawArrays(GL_TRIANGLES, 0, 3);
   if (inputs.terrain) {
     const auto drawn = terrain_drawing_.draw(*inputs.terrain, frame.view_projection,
-                                             inputs.vertical_exaggeration, inputs.sun_direction);
+                                             inputs.vertical_exaggeration, inputs.sun_direction,
+                                             inputs.terrain_drape);
     stats.terrain_tiles = drawn.tiles;
     stats.terrain_triangles = drawn.triangles;
   }

@@ -71,6 +71,7 @@ struct FrameInputs {
   std::array<float, 4> track_color{1.0f, 0.55f, 0.1f, 1.0f};
   // Terrain tiles (view/terrain_tiles.h) to draw in the opaque pass; null: none.
   std::shared_ptr<const view::TerrainFrame> terrain;
+  bool terrain_drape = true;  // false: the tiles' drape images are not drawn
   // The scene's slices (drawn from meshes(), opaque): colour map and range per slice slot
   // (render/slice_drawing.h, slice_styles); empty: no slices drawn.
   std::vector<SliceStyle> slice_styles;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Terrain in the renderer's opaque pass, checked by pixels: a mountain lit from the east
-// is brighter on its east slope; a solid-colour drape image colours the terrain; terrain
+// is brighter on its east slope; a solid-colour drape image colours the terrain (unless
+// the frame turns drapes off, as the viewer's panel does); terrain
 // in front of a sub-volume hides it; the sea of a DEM with bathymetry is water, not
 // lowland; where the DEM ends with the store, nothing hangs below its edge.
 #include <cpl_conv.h>
@@ -111,6 +112,13 @@ TEST_F(TerrainPixelsTest, SolidDrapeColoursTheTerrain) {
   EXPECT_NEAR(p.r, 200, 4);
   EXPECT_NEAR(p.g, 40, 4);
   EXPECT_NEAR(p.b, 220, 4);
+  // Drapes off: the ground's own colours.
+  inputs.terrain_drape = false;
+  renderer_->render(inputs, target_->framebuffer(), kSize, kSize);
+  const Pixel off = at(render::VolumeRenderer::read_pixels(target_->framebuffer(), kSize, kSize),
+                       kSize, kSize / 2, kSize / 2);
+  EXPECT_GT(std::abs(off.r - 200) + std::abs(off.g - 40) + std::abs(off.b - 220), 100)
+      << off.r << " " << off.g << " " << off.b;
 }
 
 TEST_F(TerrainPixelsTest, TerrainInFrontHidesASubVolume) {

@@ -1,23 +1,23 @@
 // SPDX-License-Identifier: Apache-2.0
-// The Dear ImGui panel of strielad-view: sub-volumes, time, level of detail, vertical
-// exaggeration, the shader editor and live statistics. The panel edits a PanelState;
-// the window loop applies what changed.
+// What the viewer's panel edits (PanelState) and what it shows (PanelInfo). The panel
+// (panel/panel.h) changes the state and raises a flag for each change; the window loop
+// of strielad-view applies what changed and clears the flag.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <vector>
 
-#include "format/manifest.h"
-#include "render/volume_renderer.h"
+#include "lod/camera_path.h"
 #include "scene/scene.h"
 
-namespace strielad::view_cmd {
+namespace strielad::panel {
 
 struct PanelState {
   Scene scene;                 // edited copy of the scene
-  bool scene_changed = false;  // set by the panel when an edit is complete
+  bool scene_changed = false;  // set by the panel when an edit is complete and valid
+  std::string scene_error;     // why the last edit was not applied (empty: none)
   int time_step = 0;
   bool time_changed = false;
   bool playing = false;
@@ -33,6 +33,27 @@ struct PanelState {
   bool exaggeration_changed = false;
   bool boxes = false;
   bool home = false;
+  // Terrain (--terrain) and its drape image: drawn or not; the switches are offered
+  // only where the session has them.
+  bool terrain_available = false;
+  bool terrain_shown = true;
+  bool drape_available = false;
+  bool drape_shown = true;
+  // Flight tracks (--tracks): drawn or not, and the minutes of each track drawn before
+  // the time shown.
+  bool tracks_available = false;
+  bool tracks_shown = true;
+  float track_minutes = 2.0f;
+  bool tracks_changed = false;
+  // Scene files: the path the panel saves to and loads from (NAME.json, the camera as
+  // a one-keyframe camera path in NAME.camera.json), and what the last save or load did.
+  std::string scene_path = "scene.json";
+  std::string file_status;
+  std::string file_error;
+  // The camera in the store's axis coordinates, kept current by the window loop (saved
+  // with the scene); a loaded camera for the window loop to move to.
+  std::optional<lod::Keyframe> camera;
+  std::optional<lod::Keyframe> camera_loaded;
   // Shader editor.
   std::string shader_name;
   std::string shader_text;
@@ -42,13 +63,23 @@ struct PanelState {
   int shader_error_line = 0;
 };
 
+// The renderer's counters of the last frame that the panel shows.
+struct FrameCounters {
+  double fragments_per_covered_pixel = 0;
+  std::uint32_t max_fragments_per_pixel = 0;
+  std::uint64_t fragment_capacity = 0;
+  std::uint64_t dropped_fragments = 0;
+  std::uint64_t truncated_pixels = 0;
+  double geometry_ms = 0, resolve_ms = 0;
+};
+
 struct PanelInfo {
   std::string dataset;
   double fps = 0, frame_ms = 0, cut_update_ms = 0;
   std::size_t cut_nodes = 0, pending = 0, stale_shown = 0;
   std::uint64_t results = 0, failed = 0, bytes_received = 0;
   std::size_t gpu_triangles = 0, gpu_bytes = 0;
-  render::FrameStats frame;
+  FrameCounters frame;
   double cache_hit_rate = -1;  // from the server's stats; < 0 unknown
   std::string error;           // the last error from the server, if any
   bool complete = false;
@@ -59,8 +90,7 @@ struct PanelInfo {
   std::string sun_viewpoint;                // where it is seen from (view/sun_direction.h)
   std::string terrain;  // terrain status line (empty: no --terrain)
   std::string vertical_placement;  // how heights are placed (view/height_placement.h)
+  bool on_earth = false;  // the store has a place on the Earth (geographic boxes)
 };
 
-void draw_panel(PanelState& state, const PanelInfo& info, const format::Manifest& manifest);
-
-}  // namespace strielad::view_cmd
+}  // namespace strielad::panel
