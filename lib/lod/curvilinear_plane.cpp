@@ -230,13 +230,16 @@ std::array<double, 2> CurvilinearPlane::index_of(double x, double y) const {
     }
   }
   // Beyond the grid: the continued map of a boundary cell, the one whose continuation
-  // `position` uses at the solution (nearest cells first).
+  // `position` uses at the solution (nearest cell centres first).
   std::vector<double> distance(boundary_cells_.size());
   for (std::size_t k = 0; k < distance.size(); ++k) {
     const auto& c = boundary_centres_[k];
     distance[k] = (c[0] - x) * (c[0] - x) + (c[1] - y) * (c[1] - y);
   }
-  for (std::size_t tried = 0; tried < distance.size(); ++tried) {
+  // The nearest few: a point whose continuation none of them reaches is left unplaced
+  // rather than searched for among every boundary cell.
+  constexpr std::size_t kTries = 16;
+  for (std::size_t tried = 0; tried < std::min(kTries, distance.size()); ++tried) {
     const auto k = static_cast<std::size_t>(std::min_element(distance.begin(), distance.end()) -
                                             distance.begin());
     distance[k] = INFINITY;

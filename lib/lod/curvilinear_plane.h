@@ -12,7 +12,8 @@
 //
 // The inverse (plane to index) finds the cell that holds the point through a bucket
 // grid over the cells' boxes, then solves the cell's bilinear map by Newton's method;
-// beyond the grid it solves the continued map of the nearest boundary cell.
+// beyond the grid it solves the continued map of a boundary cell near the point, the one
+// whose continuation `position` uses at the solution.
 #pragma once
 
 #include <array>
@@ -48,8 +49,8 @@ class CurvilinearPlane {
   // {dX/di, dX/dj, dY/di, dY/dj} at (i, j), in the cell `position` uses (on an edge, the
   // cell above it; the last cell at the far end).
   std::array<double, 4> jacobian(double i, double j) const;
-  // The fractional index of plane point (x, y); NaN when no cell's map reaches it (the
-  // continued map of the nearest boundary cell does not converge there).
+  // The fractional index of plane point (x, y); NaN when no cell's map reaches it (beyond
+  // the grid: the continued maps of the 16 boundary cells nearest to it do not).
   std::array<double, 2> index_of(double x, double y) const;
   // +1 or -1: the sign of every cell's determinant (the constructor refuses a mix).
   int orientation() const { return orientation_; }
