@@ -255,13 +255,15 @@ TEST(TerrainFollowingViewTest, WithoutTheStoreOnThisMachineTheViewerRefuses) {
   testing::expect_error([&] { view::choose_height_placement(store->manifest(), nullptr); },
                         ErrorCode::kUnsupported,
                         {"terrain-following", "geometry_height", "own machine"});
-  // A curvilinear horizontal geometry is refused by name.
+  // A curvilinear horizontal geometry is placed by its GEOMETRY coordinates, which only
+  // the store's files give: without them its frame is refused by name.
   format::Manifest curvilinear = store->manifest();
   curvilinear.geometry->horizontal.kind = format::HorizontalGeometry::Kind::kCurvilinear;
   curvilinear.geometry->horizontal.lon_variable = "clon";
   curvilinear.geometry->horizontal.lat_variable = "clat";
-  testing::expect_error([&] { view::choose_height_placement(curvilinear, store.get()); },
-                        ErrorCode::kUnsupported, {"curvilinear", "'clon'"});
+  const view::HeightPlacement heights = view::choose_height_placement(curvilinear, store.get());
+  testing::expect_error([&] { view::GeometryPlacer placer(curvilinear, heights); },
+                        ErrorCode::kUnsupported, {"curvilinear grid ('clon' / 'clat')", "GEOMETRY"});
 }
 
 }  // namespace
