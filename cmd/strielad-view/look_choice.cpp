@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
@@ -80,7 +81,12 @@ std::string legend_title(const format::Manifest& manifest, const std::vector<std
 }  // namespace
 
 std::optional<render::ColourBarLegend> apply_look(const ViewerArgs& args, ViewerSession& session) {
-  if (args.look == "clouds") return std::nullopt;
+  if (args.look == "clouds") {
+    if (!args.color_by.empty() || !args.color_range.empty()) {
+      spdlog::warn("--color-by and --color-range are for --look scalar; ignored");
+    }
+    return std::nullopt;
+  }
   if (args.look != "scalar") {
     throw make_error(ErrorCode::kInvalidArgument, "--look {}: give clouds or scalar", args.look);
   }
@@ -106,7 +112,13 @@ std::optional<render::ColourBarLegend> apply_look(const ViewerArgs& args, Viewer
   look.colormap = args.colormap;
   auto& attributes = session.scene.attributes;
   for (const auto& name : names) {
-    manifest.variable_index(name);  // kNotFound names the store's variables
+    const auto& vars = manifest.variables;
+    if (std::none_of(vars.begin(), vars.end(), [&](const auto& v) { return v.name == name; })) {
+      std::vector<std::string> known;
+      for (const auto& v : vars) known.push_back(v.name);
+      throw make_error(ErrorCode::kNotFound, "--color-by {}: variable '{}' is not in the store "
+                       "(it has: {})", args.color_by, name, fmt::join(known, ", "));
+    }
     auto at = std::find(attributes.begin(), attributes.end(), name);
     if (at == attributes.end()) {
       if (attributes.size() >= view::kViewAttributeSlots) {

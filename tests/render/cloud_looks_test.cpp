@@ -57,10 +57,9 @@ TEST_F(FineSphereTest, DefaultCloudsAreTranslucentWhereThinAndOpaqueWhereThick) 
       brightness(render(thick, kNearEye, kSphereCenter1, opaque_default_shader()).image, centre);
   ASSERT_GT(opaque_thin, 300) << "the thin sphere is not drawn";
   ASSERT_GT(opaque_thick, 300) << "the thick sphere is not drawn";
-  const int thin_b =
-      brightness(render(thin, kNearEye, kSphereCenter1, render::default_user_shader()).image, centre);
-  const int thick_b =
-      brightness(render(thick, kNearEye, kSphereCenter1, render::default_user_shader()).image, centre);
+  const auto& clouds = render::default_user_shader();
+  const int thin_b = brightness(render(thin, kNearEye, kSphereCenter1, clouds).image, centre);
+  const int thick_b = brightness(render(thick, kNearEye, kSphereCenter1, clouds).image, centre);
   // Over a black background the pixel is the cloud's colour times its opacity:
   // 1 - 2^(-4/3) = 0.60 for 4 km, 1.00 for 30 km.
   const double thin_opacity = double(thin_b) / opaque_thin;
