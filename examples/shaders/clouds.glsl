@@ -7,10 +7,10 @@
 // eye looks towards the sun through the cloud. The shading differs little between faces,
 // so the mesh's level steps do not read as hard-edged slabs.
 // Opacity grows with the distance a ray travels inside the sub-volume (Beer-Lambert,
-// 50% after 3 km, 90% after 10 km): thin layers and cloud edges let the terrain show
+// 50% after 4 km, 90% after 13 km): thin layers and cloud edges let the terrain show
 // through, deep cores turn nearly opaque.
 
-const float kHalfOpacityKm = 3.0;  // the distance that hides half of what lies behind
+const float kHalfOpacityKm = 4.0;  // the distance that hides half of what lies behind
 const float kTint = 0.4;           // how much of the palette colour tints the white
 
 vec4 color(int id, float attributes[MAX_ATTRIBUTES], vec3 normal, vec3 sun,
