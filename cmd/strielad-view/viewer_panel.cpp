@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/surface_scalar_look.h"
+#include "render/volume_shaders.h"
 #include "view/default_scene.h"
 #include "view/simulation_time.h"
 #include "view/subvolume_palette.h"
@@ -151,6 +153,17 @@ void shader_editor(PanelState& state) {
   if (ImGui::Button("Compile (Ctrl+Enter)")) state.shader_compile = true;
   ImGui::SameLine();
   if (ImGui::Button("Reload file")) state.shader_reload = true;
+  // The built-in looks into the editor (docs/view.md "Looks"); the scalar one colours by
+  // the first attribute over [0, 1] until its SCALAR_ defines are edited.
+  if (ImGui::Button("Built-in clouds")) {
+    state.shader_text = render::default_user_shader();
+    state.shader_compile = true;
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Built-in scalar on surface")) {
+    state.shader_text = render::surface_scalar_source();
+    state.shader_compile = true;
+  }
   if (!state.shader_error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
     ImGui::TextWrapped("%s", state.shader_error.c_str());
