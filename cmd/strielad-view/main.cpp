@@ -24,6 +24,20 @@ void add_source_options(CLI::App& app, view_cmd::ViewerArgs& args) {
   app.add_option("--shader", args.shader_file,
                  "GLSL file with color() and alpha() (docs/view.md \"User shaders\"); reloaded "
                  "when it changes. Default: examples/shaders/clouds.glsl, built in");
+  app.add_option("--look", args.look,
+                 "Built-in shader (docs/view.md \"Looks\"): 'clouds' (default: soft, "
+                 "sun-lit, translucent where thin) or 'scalar' (opaque surfaces coloured by "
+                 "--color-by, with a legend)")
+      ->check(CLI::IsMember({"clouds", "scalar"}));
+  app.add_option("--color-by", args.color_by,
+                 "With --look scalar: the variable to colour by, or U,V[,W] for the "
+                 "magnitude of a vector (ua,va: horizontal wind speed); added to the "
+                 "scene's attributes when missing");
+  app.add_option("--color-range", args.color_range,
+                 "With --look scalar: LO,HI of the colour map (default: the variable's "
+                 "data range in the store; 0 to the largest magnitude for a vector)");
+  app.add_option("--colormap", args.colormap,
+                 "With --look scalar: viridis (default), magma, coolwarm, greys, turbo");
 }
 
 // How the view is cut and drawn, and the in-process server's resources.

@@ -15,6 +15,7 @@
 #include "cli/image_size.h"
 #include "core/error.h"
 #include "lod/camera_path.h"
+#include "look_choice.h"
 #include "render/complete_frame.h"
 #include "render/headless_context.h"
 #include "view/default_scene.h"
@@ -206,6 +207,7 @@ int run_offscreen(const ViewerArgs& args) {
   auto context = render::HeadlessContext::create();
   spdlog::info("headless {}", context->description());
   ViewerSession session = open_session(args);
+  const auto legend = apply_look(args, session);
 
   render::RenderSettings settings;
   settings.max_fragment_bytes = static_cast<std::size_t>(args.max_fragment_mib * 1048576.0);
@@ -255,7 +257,13 @@ int run_offscreen(const ViewerArgs& args) {
                                                      {.outline_cut = args.boxes});
     const auto out = frame_path(args.out, i, cameras.size() > 1);
     if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
-    render::write_png(out, frame.image);
+    if (legend) {
+      auto image = frame.image;
+      render::draw_colour_bar_legend(image, *legend);
+      render::write_png(out, image);
+    } else {
+      render::write_png(out, frame.image);
+    }
     if (args.json) {
       std::cout << frame_json_line(run, i, out, frame, terrain_wait_ms).dump() << std::endl;
     } else {

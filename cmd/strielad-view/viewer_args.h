@@ -20,6 +20,13 @@ struct ViewerArgs {
   std::string scene_file;   // formats/scene.md; default: view::default_scene
   std::optional<std::uint32_t> time;
   std::string shader_file;  // the user's color()/alpha(); default: the built-in clouds
+  // The built-in look (docs/view.md "Looks"): "clouds" (soft, sun-lit clouds) or
+  // "scalar" (opaque surfaces coloured by --color-by through --colormap over
+  // --color-range, with a legend).
+  std::string look = "clouds";
+  std::string color_by;     // VAR, or U,V[,W] for the magnitude of a vector
+  std::string color_range;  // LO,HI; default: the variable's data range in the store
+  std::string colormap = "viridis";
   // --exaggeration; unset: the domain's default (view/default_exaggeration.h), or
   // lod::kDefaultVerticalExaggeration under a camera path (formats/camera-path.md).
   std::optional<double> exaggeration;

@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "render/headless_context.h"
 #include "render/volume_renderer.h"
+#include "look_choice.h"
 #include "viewer_args.h"
 #include "viewer_session.h"
 #include "window_viewer.h"
@@ -82,6 +83,7 @@ int run_window(const ViewerArgs& args) {
   GlfwLibrary glfw;
   const WindowHandle window = open_gl_window(width0, height0);
   ViewerSession session = open_session(args);
+  apply_look(args, session);  // the window's panel shows no colour bar
   render::RenderSettings settings;
   settings.max_fragment_bytes = static_cast<std::size_t>(args.max_fragment_mib * 1048576.0);
   render::VolumeRenderer renderer(settings);

@@ -19,6 +19,8 @@
 #include "core/error.h"
 #include "panel/panel.h"
 #include "render/complete_frame.h"
+#include "render/surface_scalar_look.h"
+#include "render/volume_shaders.h"
 #include "render/png_file.h"
 #include "view/default_scene.h"
 #include "view/sun_direction.h"
@@ -264,6 +266,13 @@ void WindowViewer::apply_shader_edits() {
     } catch (const Error& e) {
       state_.shader_error = e.what();
     }
+  }
+  if (state_.builtin_look != panel::PanelState::BuiltinLook::kNone) {
+    state_.shader_text = state_.builtin_look == panel::PanelState::BuiltinLook::kClouds
+                             ? render::default_user_shader()
+                             : render::surface_scalar_source();
+    state_.builtin_look = panel::PanelState::BuiltinLook::kNone;
+    state_.shader_compile = true;
   }
   if (state_.shader_compile) {
     state_.shader_compile = false;

@@ -84,6 +84,15 @@ void shader_section(PanelState& state) {
   ImGui::SameLine();
   if (ImGui::Button("Reload file")) state.shader_reload = true;
   note_item("reload shader");
+  // The built-in looks into the editor; the scalar one colours by the first attribute
+  // over [0, 1] until its SCALAR_ defines are edited.
+  if (ImGui::Button("Built-in clouds")) state.builtin_look = PanelState::BuiltinLook::kClouds;
+  note_item("built-in clouds");
+  ImGui::SameLine();
+  if (ImGui::Button("Built-in scalar on surface")) {
+    state.builtin_look = PanelState::BuiltinLook::kScalarOnSurface;
+  }
+  note_item("built-in scalar on surface");
   if (!state.shader_error.empty()) {
     error_text("", state.shader_error);
     ImGui::TextDisabled("the last good shader keeps running");

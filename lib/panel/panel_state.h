@@ -59,6 +59,10 @@ struct PanelState {
   std::string shader_text;
   bool shader_compile = false;  // the editor's text should be compiled
   bool shader_reload = false;   // the file should be read again
+  // A built-in look to load into the editor and compile (docs/view.md "Looks"); the
+  // window loop fills in its source.
+  enum class BuiltinLook { kNone, kClouds, kScalarOnSurface };
+  BuiltinLook builtin_look = BuiltinLook::kNone;
   std::string shader_error;     // the last compile error (empty: none)
   int shader_error_line = 0;
 };

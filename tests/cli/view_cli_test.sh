@@ -38,6 +38,55 @@ expect 4 "bad.glsl:3" -- "$work/store" --shader "$work/bad.glsl" --offscreen --o
 expect 3 "no-shader.glsl" -- "$work/store" --shader "$work/no-shader.glsl" --offscreen --out "$work/x.png"
 expect 4 "bad-camera.json" -- "$work/store" --camera "$work/bad-camera.json" --offscreen --out "$work/x.png"
 expect 3 "time step 7" -- "$work/store" --time 7 --offscreen --out "$work/x.png"
+expect 2 "--look scalar needs --color-by" -- "$work/store" --look scalar --offscreen --out "$work/x.png"
+expect 2 "give one" -- "$work/store" --look scalar --color-by ta --shader "$work/bad.glsl" --offscreen --out "$work/x.png"
+expect 2 "--color-range 5,1" -- "$work/store" --look scalar --color-by ta --color-range 5,1 --offscreen --out "$work/x.png"
+expect 2 "--colormap jet" -- "$work/store" --look scalar --color-by ta --colormap jet --offscreen --out "$work/x.png"
+expect 3 "--color-by ua,nope: variable 'nope'" -- "$work/store" --look scalar --color-by ua,nope --offscreen --out "$work/x.png"
+
+# The scalar look: surfaces coloured by wind speed, and a colour bar in the lower right
+# corner: viridis' yellow end and white text there, neither in the default clouds'
+# picture.
+for look in clouds scalar; do
+  if ! "$view" "$work/store" --offscreen --size 320x180 --threads 2 --look "$look" \
+      --color-by ua,va --color-range 0,30 --out "$work/look-$look.png" 2>"$work/look.err"; then
+    fail "--look $look"; cat "$work/look.err"
+  fi
+done
+python3 - "$work/look-clouds.png" "$work/look-scalar.png" <<'PY' && echo "ok: --look scalar draws a legend" || fail "--look scalar legend"
+import struct, sys, zlib
+def rgba_rows(path):
+    data = open(path, "rb").read()
+    pos, idat, (w, h) = 8, b"", (0, 0)
+    while pos < len(data):
+        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + n]
+        if kind == b"IHDR": w, h = struct.unpack(">II", body[:8])
+        if kind == b"IDAT": idat += body
+        pos += 12 + n
+    raw, rows, prev, stride = zlib.decompress(idat), [], bytearray(w * 4), w * 4
+    for y in range(h):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - 4] if i >= 4 else 0
+            b, c = prev[i], prev[i - 4] if i >= 4 else 0
+            p = a + b - c
+            pred = [0, a, b, (a + b) // 2,
+                    a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else b if abs(p - b) <= abs(p - c) else c][f]
+            line[i] = (line[i] + pred) & 255
+        rows.append(line)
+        prev = line
+    return w, h, rows
+def corner_has(path, test):
+    w, h, rows = rgba_rows(path)
+    return any(test(rows[y][4 * x:4 * x + 3]) for y in range(h // 2, h) for x in range(w // 2, w))
+yellow = lambda p: abs(p[0] - 253) < 12 and abs(p[1] - 231) < 12 and p[2] < 60
+white = lambda p: min(p) == 255
+clouds, scalar = sys.argv[1], sys.argv[2]
+assert corner_has(scalar, yellow), "no viridis yellow in the scalar picture's corner"
+assert corner_has(scalar, white), "no legend text"
+assert not corner_has(clouds, yellow), "yellow in the clouds' corner"
+PY
 
 # One image of the home view, with statistics; without --scene the log says what the
 # viewer chose: the scene (canonical JSON), the exaggeration (10 for the sample's

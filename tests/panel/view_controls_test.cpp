@@ -127,6 +127,10 @@ TEST(PanelViewControlsTest, ShaderButtons) {
   EXPECT_TRUE(panel.state().shader_compile);
   panel.click("reload shader");
   EXPECT_TRUE(panel.state().shader_reload);
+  panel.click("built-in scalar on surface");
+  EXPECT_EQ(panel.state().builtin_look, PanelState::BuiltinLook::kScalarOnSurface);
+  panel.click("built-in clouds");
+  EXPECT_EQ(panel.state().builtin_look, PanelState::BuiltinLook::kClouds);
 }
 
 TEST(PanelViewControlsTest, LegendNamesEachSubVolume) {
