@@ -128,9 +128,9 @@ TEST(PanelViewControlsTest, ShaderButtons) {
   panel.click("reload shader");
   EXPECT_TRUE(panel.state().shader_reload);
   panel.click("built-in scalar on surface");
-  EXPECT_EQ(panel.state().builtin_look, PanelState::BuiltinLook::kScalarOnSurface);
+  EXPECT_EQ(panel.state().builtin_look, panel::PanelState::BuiltinLook::kScalarOnSurface);
   panel.click("built-in clouds");
-  EXPECT_EQ(panel.state().builtin_look, PanelState::BuiltinLook::kClouds);
+  EXPECT_EQ(panel.state().builtin_look, panel::PanelState::BuiltinLook::kClouds);
 }
 
 TEST(PanelViewControlsTest, LegendNamesEachSubVolume) {
