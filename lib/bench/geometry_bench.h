@@ -51,6 +51,11 @@ struct GeometryInputRuns {
   std::vector<double> axis_seconds, unmerged_seconds, placed_seconds;
   // The same runs' CPU seconds (user + system): steadier than wall time on a shared machine.
   std::vector<double> unmerged_cpu_seconds, placed_cpu_seconds;
+  // Placed with the geometry bricks already in a kept brick cache (read for another
+  // step first), the data bricks cold: a server stepping through time with a
+  // time-invariant geometry field. Empty when the geometry has no bricks shared by the
+  // steps (a per-step field, or none).
+  std::vector<double> placed_warm_seconds, placed_warm_cpu_seconds;
   std::uint64_t nodes = 0, triangles_axis = 0, triangles_unmerged = 0, triangles_placed = 0;
   std::uint64_t bricks_axis = 0, bricks_placed = 0;
 };

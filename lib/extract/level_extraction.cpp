@@ -7,6 +7,7 @@
 #include <tbb/task_arena.h>
 
 #include <atomic>
+#include <optional>
 #include <chrono>
 
 #include "core/error.h"
@@ -33,7 +34,8 @@ LevelExtraction extract_level(const Store& store, const ResolvedScene& scene,
 
   LevelExtraction out;
   out.nodes.resize(count);
-  BrickCache cache(options.cache_bytes);
+  std::optional<BrickCache> own_cache;
+  BrickCache& cache = options.cache ? *options.cache : own_cache.emplace(options.cache_bytes);
   const StoreReadCounters before = store.counters();
   std::atomic<std::uint64_t> done{0};
   const auto start = std::chrono::steady_clock::now();

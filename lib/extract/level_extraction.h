@@ -13,11 +13,17 @@
 
 namespace strielad {
 
+class BrickCache;
+
 struct LevelExtractionOptions {
   std::uint32_t step = 0;
   std::uint32_t level = 0;
   int threads = 0;                            // 0: all cores
   std::uint64_t cache_bytes = 256ull << 20;   // brick cache shared by the workers
+  // A cache to use instead of a fresh one of cache_bytes (kept by the caller across
+  // extractions, as the server keeps its cache: a time-invariant geometry field's bricks
+  // are then read once for every step).
+  BrickCache* cache = nullptr;
   std::function<void(std::uint64_t done, std::uint64_t total)> progress;
   // As ExtractRequest::merge_face_squares: false for output frames that bend the lattice.
   bool merge_face_squares = true;

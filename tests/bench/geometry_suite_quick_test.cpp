@@ -35,6 +35,11 @@ TEST(GeometrySuiteQuickTest, SamplesConvertAndPlacedExtractionReadsTheGeometry) 
     ASSERT_EQ(r.placed_seconds.size(), 1u);
     EXPECT_GT(r.triangles_placed, 0u) << r.name;
   }
+  // Only ICON's geometry bricks are shared by the steps: the kept-cache run is its alone.
+  EXPECT_EQ(icon.placed_warm_seconds.size(), 1u);
+  EXPECT_TRUE(rect.placed_warm_seconds.empty());
+  EXPECT_TRUE(sigma.placed_warm_seconds.empty());
+  EXPECT_TRUE(curvilinear.placed_warm_seconds.empty());
   EXPECT_EQ(rect.bricks_placed, rect.bricks_axis);  // the height axis needs no brick
   EXPECT_GT(icon.bricks_placed, icon.bricks_axis);
   EXPECT_LE(icon.bricks_placed, 2 * icon.bricks_axis);

@@ -18,6 +18,7 @@
 #include "extract/output_frame.h"
 #include "format/geometry_field.h"
 #include "scene/scene.h"
+#include "store/brick_cache.h"
 #include "store/level_samples.h"
 #include "store/store.h"
 #include "support/expect_error.h"
@@ -161,6 +162,49 @@ std::vector<Mesh> placed_meshes(const Store& store, const Scene& scene,
     }
   }
   return meshes;
+}
+
+TEST(TerrainFollowingConversionTest, AKeptBrickCacheReadsATimeInvariantGeometryOncePerNode) {
+  const testing::TempDir dir;
+  const auto input = write_model(dir.path(), synthetic::SampleModel::kIcon, 2);
+  build::convert(options(input, dir / "store"));
+  const auto store = Store::open(dir / "store");
+  const format::Manifest& m = store->manifest();
+  ASSERT_FALSE(m.geometry->vertical.varies_in_time);
+  Scene scene;
+  SubVolume cold;
+  cold.id = 1;
+  cold.limits.push_back(Limit{"temp", std::nullopt, 270.0});
+  scene.subvolumes.push_back(cold);
+  scene.attributes.push_back(format::geometry_field_name(m));
+  const ResolvedScene resolved = resolve_scene(scene, m, "test scene");
+  const auto chunks = [&](std::uint32_t step, BrickCache* cache, LevelExtraction* out) {
+    const std::uint64_t before = store->counters().chunks_read;
+    LevelExtractionOptions o;
+    o.step = step;
+    o.cache = cache;
+    o.merge_face_squares = false;
+    *out = extract_level(*store, resolved, o);
+    return store->counters().chunks_read - before;
+  };
+  LevelExtraction fresh, first, kept;
+  const std::uint64_t cold_reads = chunks(0, nullptr, &fresh);
+  BrickCache cache(64ull << 20);
+  const std::uint64_t step1_reads = chunks(1, &cache, &first);
+  const std::uint64_t kept_reads = chunks(0, &cache, &kept);
+  // Step 0 with the cache kept from step 1 reads its data bricks, not the geometry's.
+  const std::uint64_t geometry_bricks = fresh.totals.bricks_used / 2;
+  ASSERT_GT(geometry_bricks, 0u);
+  EXPECT_EQ(step1_reads, cold_reads);
+  EXPECT_EQ(kept_reads + geometry_bricks, cold_reads);
+  ASSERT_EQ(kept.nodes.size(), fresh.nodes.size());
+  for (std::size_t n = 0; n < fresh.nodes.size(); ++n) {
+    ASSERT_EQ(kept.nodes[n].results.size(), fresh.nodes[n].results.size());
+    for (std::size_t r = 0; r < fresh.nodes[n].results.size(); ++r) {
+      EXPECT_EQ(kept.nodes[n].results[r].mesh.positions, fresh.nodes[n].results[r].mesh.positions);
+      EXPECT_EQ(kept.nodes[n].results[r].mesh.attributes, fresh.nodes[n].results[r].mesh.attributes);
+    }
+  }
 }
 
 TEST(TerrainFollowingConversionTest, AGeographicHeightRangeCutsTheBandWithDomainBoxFaces) {
