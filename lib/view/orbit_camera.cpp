@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "lod/wgs84_globe.h"
+
 namespace strielad::view {
 namespace {
 
@@ -14,7 +16,23 @@ constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
 OrbitCamera::OrbitCamera(const lod::WorldBox& domain) : domain_(domain) { home(); }
 
+void OrbitCamera::set_globe(double lon_deg, double lat_deg) {
+  globe_ = true;
+  home_lon_deg_ = lon_deg;
+  home_lat_deg_ = lat_deg;
+  home();
+}
+
 void OrbitCamera::home() {
+  if (globe_) {
+    // The eye over (lon, lat): back = (cos lat cos lon, cos lat sin lon, sin lat).
+    const double lon = home_lon_deg_ * kRadPerDeg;
+    target_ = {0, 0, 0};
+    pitch_deg_ = std::clamp(home_lat_deg_, -89.0, 89.0);
+    yaw_deg_ = std::atan2(-std::cos(lon), -std::sin(lon)) / kRadPerDeg;
+    distance_ = 1.15 * lod::kWgs84SemiMajorKm / std::sin(22.5 * kRadPerDeg);
+    return;
+  }
   target_ = domain_.center();
   distance_ = std::max(domain_.radius(), 1e-3) / std::sin(22.5 * kRadPerDeg);
   yaw_deg_ = 0;
@@ -42,6 +60,13 @@ void OrbitCamera::pan(double right_fraction, double up_fraction) {
 
 void OrbitCamera::zoom(double factor) {
   if (!std::isfinite(factor) || factor <= 0) return;
+  if (globe_) {
+    // Above the ground (the equatorial radius and 10 km more), at most 20 radii away.
+    const double a = lod::kWgs84SemiMajorKm;
+    const double altitude = std::clamp((distance_ - a) * factor, 10.0, 19 * a);
+    distance_ = a + altitude;
+    return;
+  }
   const double size = std::max(domain_.radius(), 1e-3);
   distance_ = std::clamp(distance_ * factor, 0.01, 100 * size);
 }
@@ -71,7 +96,20 @@ void OrbitCamera::rescale_vertical(double ratio, const lod::WorldBox& new_domain
 }
 
 lod::Camera OrbitCamera::camera(double aspect, double fov_y_deg) const {
-  return lod::look_at(eye(), target_, fov_y_deg, aspect, domain_);
+  const double a = lod::kWgs84SemiMajorKm;
+  const Vec3 e = eye();
+  const double r = length(e);
+  if (globe_ && r < 2 * a && r > 0) {
+    // Tilted from the nadir towards the view's up (north of the eye's meridian plane).
+    const double tilt = 70.0 * kRadPerDeg * std::clamp((2 * a - r) / a, 0.0, 1.0);
+    const Vec3 radial = scale(e, 1.0 / r);
+    Vec3 up = sub(Vec3{0, 0, 1}, scale(radial, radial[2]));
+    const double up_length = length(up);
+    up = up_length > 1e-9 ? scale(up, 1.0 / up_length) : Vec3{1, 0, 0};
+    const Vec3 look = add(scale(radial, -std::cos(tilt)), scale(up, std::sin(tilt)));
+    return lod::look_at(e, add(e, scale(look, r - a + 1.0)), fov_y_deg, aspect, domain_);
+  }
+  return lod::look_at(e, target_, fov_y_deg, aspect, domain_);
 }
 
 }  // namespace strielad::view

@@ -2,6 +2,12 @@
 // The viewer's interactive camera in the world frame (lod/world_frame.h, km): orbit
 // about a target, pan, zoom and fly, as mouse and keys drive it. Pitch stays within
 // +-89 degrees so the view never flips over the pole of the orbit.
+//
+// On the globe (lod/world_frame.h, ECEF km; set_globe) the orbit is about the Earth's
+// centre with the polar axis up, so dragging turns the Earth under the view; home looks
+// down on a chosen longitude and latitude from where the whole Earth shows; zoom keeps the
+// eye above the ground; and below two Earth radii from the centre the view tilts from
+// straight down towards the horizon, all the way (70 degrees) at the ground.
 #pragma once
 
 #include "lod/camera.h"
@@ -17,6 +23,9 @@ class OrbitCamera {
   // The home view: the whole domain from the south at 50 degrees elevation, at a
   // distance where a 45 degree view holds its bounding sphere.
   void home();
+  // Globe mode, home above (lon_deg, lat_deg); the domain must be the globe's.
+  void set_globe(double lon_deg, double lat_deg);
+  bool globe() const { return globe_; }
   // Rotates about the target: yaw about world z, pitch up/down (degrees).
   void orbit(double yaw_deg, double pitch_deg);
   // Moves eye and target across the view: fractions of the visible height at the target.
@@ -42,6 +51,8 @@ class OrbitCamera {
   double distance_ = 1.0;
   double yaw_deg_ = 0;    // 0: looking north (eye south of the target)
   double pitch_deg_ = 50; // elevation of the eye above the target's horizon
+  bool globe_ = false;
+  double home_lon_deg_ = 0, home_lat_deg_ = 0;
 };
 
 }  // namespace strielad::view
