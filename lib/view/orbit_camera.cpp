@@ -51,7 +51,39 @@ void OrbitCamera::orbit(double yaw_deg, double pitch_deg) {
   pitch_deg_ = std::clamp(pitch_deg_ + pitch_deg, -89.0, 89.0);
 }
 
+namespace {
+
+// Degrees of the Earth's centre that the view's height spans on the ground below an eye
+// `distance` km from the centre.
+double ground_view_degrees(double distance) {
+  const double altitude = std::max(distance - lod::kWgs84SemiMajorKm, 1.0);
+  return 2 * altitude * std::tan(22.5 * kRadPerDeg) / lod::kWgs84SemiMajorKm / kRadPerDeg;
+}
+
+}  // namespace
+
+double OrbitCamera::drag_scale() const {
+  if (!globe_) return 1.0;
+  const double home = 1.15 / std::sin(22.5 * kRadPerDeg) - 1.0;  // in equatorial radii
+  return std::clamp((distance_ / lod::kWgs84SemiMajorKm - 1.0) / home, 1e-3, 1.0);
+}
+
+void OrbitCamera::zoom_at(double factor, double right_fraction, double up_fraction) {
+  if (globe_ && std::isfinite(factor) && factor > 0 && factor < 1) {
+    // The eye's sub-point moves east as yaw falls and north as pitch grows; towards the
+    // cursor's ground by the share of the view that the zoom removes.
+    const double move = (1.0 - factor) * ground_view_degrees(distance_);
+    orbit(-right_fraction * move, up_fraction * move);
+  }
+  zoom(factor);
+}
+
 void OrbitCamera::pan(double right_fraction, double up_fraction) {
+  if (globe_) {
+    const double view = ground_view_degrees(distance_);
+    orbit(-right_fraction * view, up_fraction * view);
+    return;
+  }
   const auto basis = lod::camera_basis(camera(1.0));
   const double height = 2 * distance_ * std::tan(22.5 * kRadPerDeg);
   target_ = add(target_, add(scale(basis.right, right_fraction * height),
@@ -72,6 +104,15 @@ void OrbitCamera::zoom(double factor) {
 }
 
 void OrbitCamera::fly(double forward_km, double right_km, double up_km) {
+  if (globe_) {
+    // North and east over the ground (scaled to the altitude as the keys' speed is to the
+    // distance), up and down by the altitude's share.
+    const double a = lod::kWgs84SemiMajorKm;
+    const double share = std::clamp((distance_ - a) / distance_, 1e-4, 1.0);
+    orbit(-right_km * share / a / kRadPerDeg, forward_km * share / a / kRadPerDeg);
+    if (up_km != 0) zoom(1.0 + up_km / distance_);
+    return;
+  }
   const double yaw = yaw_deg_ * kRadPerDeg;
   const Vec3 forward{std::sin(yaw), std::cos(yaw), 0}, right{std::cos(yaw), -std::sin(yaw), 0};
   target_ = add(target_, add(scale(forward, forward_km),

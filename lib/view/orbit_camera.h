@@ -6,7 +6,8 @@
 // On the globe (lod/world_frame.h, ECEF km; set_globe) the orbit is about the Earth's
 // centre with the polar axis up, so dragging turns the Earth under the view; home looks
 // down on a chosen longitude and latitude from where the whole Earth shows; zoom keeps the
-// eye above the ground; and below two Earth radii from the centre the view tilts from
+// eye above the ground and towards the point under the cursor (zoom_at); panning and
+// flying turn the Earth by the ground they cross; and below two Earth radii from the centre the view tilts from
 // straight down towards the horizon, all the way (70 degrees) at the ground.
 #pragma once
 
@@ -33,6 +34,12 @@ class OrbitCamera {
   // Moves the eye towards (factor < 1) or away from the target; the distance stays
   // between 10 m and 100 times the domain's size.
   void zoom(double factor);
+  // zoom, and on the globe also towards the ground under the cursor, `right_fraction` and
+  // `up_fraction` of the view's height from its centre (the plane zooms at the centre).
+  void zoom_at(double factor, double right_fraction, double up_fraction);
+  // What a mouse drag's degrees are multiplied by: 1 on the plane; on the globe the
+  // altitude over the home view's, so the ground follows the mouse near the surface.
+  double drag_scale() const;
   // Moves eye and target along the view direction projected on the ground (forward),
   // sideways and vertically, in km.
   void fly(double forward_km, double right_km, double up_km);
