@@ -100,11 +100,11 @@ lod::FrameShape frame_shape(const std::string& name) {
   return lod::FrameShape::kAuto;
 }
 
-// Terrain and flight tracks are placed on the tangent plane only, for now.
+// Flight tracks are placed on the tangent plane only, for now.
 void check_plane_for(const char* option, const std::string& file, const lod::WorldFrame& frame) {
   if (!frame.globe()) return;
   throw make_error(ErrorCode::kUnsupported,
-                   "{} {}: terrain and flight tracks are drawn on the tangent plane only, and "
+                   "{} {}: flight tracks are drawn on the tangent plane only, and "
                    "this domain is shown on the globe (wider than {:g} degrees): add --shape "
                    "plane",
                    option, file, lod::kGlobeMinExtentDeg);
@@ -279,7 +279,6 @@ ViewerSession open_session(const ViewerArgs& args) {
     session.tracks = open_tracks(args, manifest, frame);
   }
   if (!args.terrain_file.empty()) {
-    check_plane_for("--terrain", args.terrain_file, frame);
     session.terrain = open_terrain(args, frame);
   } else if (local_store && manifest.geometry && manifest.geometry->surface && frame.on_earth() &&
              !frame.globe()) {

@@ -4,8 +4,10 @@
 // bright and the night side dim but readable (the built-in clouds shader's ambient light).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <thread>
 
 #include "render/complete_frame.h"
 #include "render/headless_context.h"
@@ -13,12 +15,14 @@
 #include "render/png_file.h"
 #include "render/volume_renderer.h"
 #include "render/volume_shaders.h"
+#include "support/function_dem.h"
 #include "support/globe_store.h"
 #include "support/temp_dir.h"
 #include "view/globe_view.h"
 #include "view/local_server.h"
 #include "view/simulation_time.h"
 #include "view/sun_direction.h"
+#include "view/terrain_tiles.h"
 #include "view/view_controller.h"
 #include "view/view_link.h"
 
@@ -154,6 +158,50 @@ TEST_F(GlobePixelsTest, HomeLooksDownOnTheDaySide) {
   const int centre = brightness(image, {kSize / 2, kSize / 2});
   EXPECT_GT(centre, 400) << "the sub-solar point is not lit";
   EXPECT_LT(brightness(image, {1, 1}), 10);
+}
+
+// A global DEM (0.5 degrees, -180..180 E: it goes round) drapes the globe: the terrain
+// is drawn round the Earth, lit on the day side, dim on the night side.
+TEST_F(GlobePixelsTest, TerrainDrapesTheGlobeLitByTheSun) {
+  Scene empty;  // cloud water nowhere this dense: nothing but the terrain
+  SubVolume none;
+  none.id = 1;
+  none.name = "none";
+  none.limits.push_back(Limit{.var = "clw", .min = 1.0, .max = std::nullopt});
+  empty.subvolumes.push_back(none);
+  controller_->set_scene(empty);
+  const lod::WorldFrame& frame = controller_->frame();
+  auto dem = std::make_shared<FunctionDem>(721, 361, -180.0, 180.0, -90.0, 90.0,
+                                           [](double lon, double lat) {
+    return float(1200.0 + 900.0 * std::sin(lon * 0.1) * std::cos(lat * 0.07));
+  });
+  view::TerrainTiles tiles(dem, frame);
+  EXPECT_GT(tiles.wrap_columns(), 0u);
+  const auto sun = view::sun_at_step(frame, link_->manifest(), 0);
+  ASSERT_TRUE(sun);
+  const auto [lon_s, lat_s] = view::subsolar_point(*view::step_sun_julian_day(link_->manifest(), 0));
+  view::OrbitCamera orbit(frame.domain());
+  orbit.set_globe(lon_s - 90.0, 0.0);
+  const lod::Camera cam = orbit.camera(1.0);
+  auto inputs = render::frame_inputs(*controller_, cam);
+  inputs.sun_direction = sun->direction;
+  std::shared_ptr<const view::TerrainFrame> terrain;
+  for (int i = 0; i < 20000; ++i) {
+    terrain = tiles.update(cam, inputs.vertical_exaggeration, kSize);
+    if (tiles.complete()) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ASSERT_TRUE(tiles.complete());
+  EXPECT_TRUE(terrain->globe);
+  inputs.terrain = terrain;
+  const auto image = render::render_complete_frame(*controller_, *renderer_, *target_, inputs).image;
+  save(image, "globe_terrain.png");
+  EXPECT_LT(brightness(image, {1, 1}), 10);
+  const double top = 1.2 * kExaggeration;
+  const int lit = brightness(image, project(cam, frame.place_geographic(lon_s - 45.0, 0.0, top)));
+  const int dark = brightness(image, project(cam, frame.place_geographic(lon_s - 135.0, 0.0, top)));
+  EXPECT_GT(lit, 2 * dark) << "day " << lit << ", night " << dark;
+  EXPECT_GT(dark, 40) << "the night side is black";
 }
 
 }  // namespace
