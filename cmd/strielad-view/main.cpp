@@ -47,6 +47,11 @@ void add_view_options(CLI::App& app, view_cmd::ViewerArgs& args) {
                  "extents, 10 for the paper's grid, 200 for a global one; 10 under "
                  "--camera; docs/view.md \"Defaults for any domain\")")
       ->check(CLI::PositiveNumber);
+  app.add_option("--shape", args.shape,
+                 "World shape: 'auto' (default) the WGS84 globe for a domain wider than 30 "
+                 "degrees of longitude or latitude (every global one), the tangent plane "
+                 "otherwise; 'plane'; or 'globe' (docs/view.md \"The globe\")")
+      ->check(CLI::IsMember({"auto", "plane", "globe"}));
   app.add_option("--lod-threshold", args.lod_threshold_sr,
                  "Split a node covering more than this solid angle, sr (default 0.01)");
   app.add_option("--max-nodes", args.max_nodes, "Most nodes in the cut (default 4096)");

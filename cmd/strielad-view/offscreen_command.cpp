@@ -19,6 +19,7 @@
 #include "render/complete_frame.h"
 #include "render/headless_context.h"
 #include "view/default_scene.h"
+#include "view/globe_view.h"
 #include "view/orbit_camera.h"
 #include "view/sun_direction.h"
 #include "view/view_controller.h"
@@ -60,7 +61,9 @@ std::vector<lod::Camera> offscreen_cameras(const ViewerArgs& args,
       cameras.push_back(lod::pose_camera(pose, aspect, controller.frame().domain()));
     }
   } else {
-    cameras.push_back(view::OrbitCamera(controller.frame().domain()).camera(aspect));
+    cameras.push_back(view::home_orbit_camera(controller.frame(), controller.link().manifest(),
+                                              controller.scene().time)
+                          .camera(aspect));
   }
   return cameras;
 }

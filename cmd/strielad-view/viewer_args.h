@@ -30,6 +30,9 @@ struct ViewerArgs {
   // --exaggeration; unset: the domain's default (view/default_exaggeration.h), or
   // lod::kDefaultVerticalExaggeration under a camera path (formats/camera-path.md).
   std::optional<double> exaggeration;
+  // --shape: "auto" (the globe for domains wider than lod::kGlobeMinExtentDeg), "plane"
+  // or "globe" (lod::FrameShape).
+  std::string shape = "auto";
   double lod_threshold_sr = lod::kDefaultSplitSolidAngleSr;
   std::size_t max_nodes = lod::kDefaultMaxNodes;
   double max_fragment_mib = render::kDefaultMaxFragmentBytes / double(1 << 20);

@@ -45,6 +45,15 @@ void open_advection(const ViewerArgs& args, ViewerSession& session) {
                                       "needs --wind-store DIR to read the wind from");
     return;
   }
+  if (session.link->placer().frame().globe()) {
+    // The displacement maps move meshes on the tangent plane (view/displacement_map.h).
+    session.advection_status = "advection moves meshes on the tangent plane only: this domain "
+                               "is on the globe (--shape plane to advect)";
+    if (args.advect) {
+      throw make_error(ErrorCode::kUnsupported, "--advect: {}", session.advection_status);
+    }
+    return;
+  }
   view::AdvectionSettings settings;
   settings.names = view::parse_wind_names(args.wind);
   settings.level = args.wind_level;
@@ -74,8 +83,31 @@ std::pair<double, std::string> starting_exaggeration(const ViewerArgs& args,
                         lod::kDefaultVerticalExaggeration)};
   }
   const auto extent = view::domain_extent(frame);
-  return {view::default_vertical_exaggeration(extent),
-          view::describe_default_exaggeration(extent)};
+  const double chosen = view::default_vertical_exaggeration(extent);
+  if (frame.globe() && chosen > view::kMaxGlobeDefaultExaggeration) {
+    return {view::kMaxGlobeDefaultExaggeration,
+            fmt::format("{:g} on the globe (at most {:g}, so that the atmosphere stays a shell "
+                        "over the Earth; the plane's rule gives {})",
+                        view::kMaxGlobeDefaultExaggeration, view::kMaxGlobeDefaultExaggeration,
+                        view::describe_default_exaggeration(extent))};
+  }
+  return {chosen, view::describe_default_exaggeration(extent)};
+}
+
+lod::FrameShape frame_shape(const std::string& name) {
+  if (name == "plane") return lod::FrameShape::kPlane;
+  if (name == "globe") return lod::FrameShape::kGlobe;
+  return lod::FrameShape::kAuto;
+}
+
+// Flight tracks are placed on the tangent plane only, for now.
+void check_plane_for(const char* option, const std::string& file, const lod::WorldFrame& frame) {
+  if (!frame.globe()) return;
+  throw make_error(ErrorCode::kUnsupported,
+                   "{} {}: flight tracks are drawn on the tangent plane only, and "
+                   "this domain is shown on the globe (wider than {:g} degrees): add --shape "
+                   "plane",
+                   option, file, lod::kGlobeMinExtentDeg);
 }
 
 // How the first frame is lit, for the log.
@@ -217,25 +249,39 @@ ViewerSession open_session(const ViewerArgs& args) {
   }
   view::HeightPlacement heights = view::choose_height_placement(manifest, local_store.get());
   session.vertical_placement = heights.description;
+  auto coordinates =
+      format::is_curvilinear(manifest) ? local_store->horizontal_coordinates() : nullptr;
+  // The shape and the exaggeration first: the globe's meshes carry the exaggeration.
+  const lod::WorldFrame probe(
+      manifest, lod::WorldFrameOptions{.vertical_exaggeration = 1.0, .shape = frame_shape(args.shape)},
+      heights.level_heights_m, coordinates);
+  std::string exaggeration_rule;
+  std::tie(session.exaggeration, exaggeration_rule) = starting_exaggeration(args, probe);
   session.link = std::make_unique<view::ViewLink>(
-      std::move(client), std::move(heights),
-      format::is_curvilinear(manifest) ? local_store->horizontal_coordinates() : nullptr);
+      std::move(client), std::move(heights), std::move(coordinates),
+      view::PlacerShape{.shape = frame_shape(args.shape),
+                        .globe_exaggeration = session.exaggeration});
   const lod::WorldFrame& frame = session.link->placer().frame();
-  spdlog::info("world frame: {}", frame.describe_horizontal());
+  spdlog::info("world frame: {}{}", frame.describe_horizontal(),
+               frame.globe() ? fmt::format(", on the WGS84 globe (wider than {:g} degrees or "
+                                           "--shape globe)",
+                                           lod::kGlobeMinExtentDeg)
+                             : std::string());
   spdlog::info("vertical placement: {}", session.vertical_placement);
   check_true_sun_placeable(args, frame);
-  std::string exaggeration_rule;
-  std::tie(session.exaggeration, exaggeration_rule) =
-      starting_exaggeration(args, session.link->placer().frame());
   view::log_view_choices({.default_scene = args.scene_file.empty() ? std::optional<Scene>(session.scene)
                                                                    : std::nullopt,
                           .exaggeration = exaggeration_rule,
                           .sun = sun_choice(args, session)});
   open_advection(args, session);
-  if (!args.tracks_file.empty()) session.tracks = open_tracks(args, manifest, frame);
+  if (!args.tracks_file.empty()) {
+    check_plane_for("--tracks", args.tracks_file, frame);
+    session.tracks = open_tracks(args, manifest, frame);
+  }
   if (!args.terrain_file.empty()) {
     session.terrain = open_terrain(args, frame);
-  } else if (local_store && manifest.geometry && manifest.geometry->surface && frame.on_earth()) {
+  } else if (local_store && manifest.geometry && manifest.geometry->surface && frame.on_earth() &&
+             !frame.globe()) {
     // The model's own surface as the default terrain.
     auto dem = std::make_shared<const view::ModelSurfaceDem>(
         manifest, frame, local_store->horizontal_coordinates(), session.dataset_name);

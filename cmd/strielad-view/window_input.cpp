@@ -18,13 +18,21 @@ void apply_mouse(GLFWwindow* window, const ImGuiIO& io, int height, Mouse& mouse
     const bool left = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
     const bool pan = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
                      glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
-    if (left && mouse.left) camera.orbit(-(mx - mouse.x) * 0.3, (my - mouse.y) * 0.3);
+    const double drag = 0.3 * camera.drag_scale();
+    if (left && mouse.left) camera.orbit(-(mx - mouse.x) * drag, (my - mouse.y) * drag);
     if (pan && mouse.pan && height > 0) {
       camera.pan(-(mx - mouse.x) / height, (my - mouse.y) / height);
     }
     mouse.left = left;
     mouse.pan = pan;
-    if (io.MouseWheel != 0) camera.zoom(std::pow(0.88, io.MouseWheel));
+    if (io.MouseWheel != 0 && height > 0) {
+      // The cursor in window coordinates, as fractions of the window's height.
+      int w = 0, h = 0;
+      glfwGetWindowSize(window, &w, &h);
+      if (h > 0) {
+        camera.zoom_at(std::pow(0.88, io.MouseWheel), (mx - 0.5 * w) / h, (0.5 * h - my) / h);
+      }
+    }
   } else {
     mouse.left = mouse.pan = false;
   }

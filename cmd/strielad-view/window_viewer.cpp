@@ -91,7 +91,8 @@ WindowViewer::WindowViewer(GLFWwindow* window, const ViewerArgs& args, ViewerSes
       watch_(args.shader_file.empty() ? std::nullopt
                                       : std::optional<ShaderFileWatch>(args.shader_file)),
       controller_(*session.link, session.scene, view_options(args, session)),
-      camera_(controller_.frame().domain()) {
+      camera_(view::home_orbit_camera(controller_.frame(), session.link->manifest(),
+                                      session.scene.time)) {
   apply_scene_layout(session.scene);
   state_.scene = session.scene;
   state_.time_step = static_cast<int>(session.scene.time);

@@ -16,6 +16,7 @@
 #include "render/volume_renderer.h"
 #include "shader_file_watch.h"
 #include "view/advection_playback.h"
+#include "view/globe_view.h"
 #include "view/orbit_camera.h"
 #include "view/view_controller.h"
 #include "viewer_args.h"

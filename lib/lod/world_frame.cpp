@@ -410,6 +410,12 @@ WorldFrame::WorldFrame(const format::Manifest& m, WorldFrameOptions options,
                        std::vector<double> level_heights_m,
                        std::shared_ptr<const format::HorizontalCoordinates> coordinates)
     : exaggeration_(options.vertical_exaggeration), dims_(m.dims()) {
+  place(m, std::move(level_heights_m), coordinates);
+  choose_shape(options.shape);
+}
+
+void WorldFrame::place(const format::Manifest& m, std::vector<double> level_heights_m,
+                       const std::shared_ptr<const format::HorizontalCoordinates>& coordinates) {
   if (!std::isfinite(exaggeration_) || exaggeration_ <= 0) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "vertical exaggeration {} must be a finite number > 0", exaggeration_);
@@ -454,8 +460,11 @@ WorldFrame WorldFrame::with_exaggeration(double e) const {
     f.z_samples_[k] = f.vertical_to_world(z_axis_[k]);
   }
   const auto [lo, hi] = std::minmax_element(f.z_samples_.begin(), f.z_samples_.end());
-  f.domain_.lo[2] = *lo;
-  f.domain_.hi[2] = *hi;
+  f.plane_domain_.lo[2] = *lo;
+  f.plane_domain_.hi[2] = *hi;
+  f.domain_ = f.globe_ ? f.globe_index_box(IndexBox{{0, 0, 0}, {dims_.x - 1, dims_.y - 1,
+                                                                 dims_.z - 1}})
+                       : f.plane_domain_;
   return f;
 }
 
@@ -504,6 +513,20 @@ std::array<double, 2> WorldFrame::mapped_xy(double x, double y) const {
 }
 
 Vec3 WorldFrame::to_world(const Vec3& p) const {
+  const Vec3 plane = plane_to_world(p);
+  return globe_ ? plane_to_globe(plane) : plane;
+}
+
+Vec3 WorldFrame::to_axis(const Vec3& world) const {
+  return plane_to_axis(globe_ ? globe_to_plane(world) : world);
+}
+
+Vec3 WorldFrame::normal_to_world(const Vec3& p, const Vec3& n) const {
+  const Vec3 plane = plane_normal(p, n);
+  return globe_ ? globe_normal(plane_to_world(p), plane) : plane;
+}
+
+Vec3 WorldFrame::plane_to_world(const Vec3& p) const {
   if (curvilinear_) {
     const auto xy = curvilinear_->position(p[0], p[1]);
     return {xy[0], xy[1], vertical_to_world(p[2])};
@@ -515,20 +538,20 @@ Vec3 WorldFrame::to_world(const Vec3& p) const {
   return {separable_to_world(0, p[0]), separable_to_world(1, p[1]), vertical_to_world(p[2])};
 }
 
-Vec3 WorldFrame::to_axis(const Vec3& p) const {
+Vec3 WorldFrame::plane_to_axis(const Vec3& p) const {
   if (curvilinear_) {
     const auto a = curvilinear_->index_of(p[0], p[1]);
     return {a[0], a[1], world_to_vertical(p[2])};
   }
   if (mapped_) {
-    const auto g = world_to_geographic(p[0], p[1]);
+    const auto g = geographic_of_plane(p[0], p[1]);
     const auto a = geographic_to_axis(g[0], g[1]);
     return {a[0], a[1], world_to_vertical(p[2])};
   }
   return {separable_to_axis(0, p[0]), separable_to_axis(1, p[1]), world_to_vertical(p[2])};
 }
 
-Vec3 WorldFrame::normal_to_world(const Vec3& p, const Vec3& n) const {
+Vec3 WorldFrame::plane_normal(const Vec3& p, const Vec3& n) const {
   // d world / d axis along one axis at `value`, by a central difference scaled to the
   // value (the maps are smooth and monotonic; linear ones give their exact slope).
   const auto slope = [this](int axis, double value) {
@@ -583,21 +606,31 @@ void WorldFrame::check_on_earth() const {
   if (!on_earth()) throw make_error(ErrorCode::kUnsupported, "{}", no_earth_reason_);
 }
 
+std::array<double, 2> WorldFrame::plane_of_geographic(double lon, double lat) const {
+  return {std::remainder(lon - lon0_, 360.0) * km_per_lon_, (lat - lat0_) * kKmPerDegree};
+}
+
+std::array<double, 2> WorldFrame::geographic_of_plane(double x, double y) const {
+  return {x / km_per_lon_ + lon0_, y / kKmPerDegree + lat0_};
+}
+
 std::array<double, 2> WorldFrame::geographic_to_world(double lon, double lat) const {
   check_on_earth();
-  return {std::remainder(lon - lon0_, 360.0) * km_per_lon_, (lat - lat0_) * kKmPerDegree};
+  check_plane("geographic_to_world");
+  return plane_of_geographic(lon, lat);
 }
 
 std::array<double, 2> WorldFrame::world_to_geographic(double x, double y) const {
   check_on_earth();
-  return {x / km_per_lon_ + lon0_, y / kKmPerDegree + lat0_};
+  check_plane("world_to_geographic");
+  return geographic_of_plane(x, y);
 }
 
 std::array<double, 2> WorldFrame::geographic_to_axis(double lon, double lat) const {
   check_on_earth();
   if (curvilinear_) {
     if (!(std::fabs(lat) <= 90.0)) return {kNaN, kNaN};
-    const auto xy = geographic_to_world(lon, lat);
+    const auto xy = plane_of_geographic(lon, lat);
     return curvilinear_->index_of(xy[0], xy[1]);
   }
   if (!mapped_) return {lon0_ + std::remainder(lon - lon0_, 360.0), lat};
@@ -619,8 +652,9 @@ double WorldFrame::lat0() const {
 }
 
 GeographicBounds WorldFrame::geographic_bounds() const {
-  const auto a = world_to_geographic(domain_.lo[0], domain_.lo[1]);
-  const auto b = world_to_geographic(domain_.hi[0], domain_.hi[1]);
+  check_on_earth();
+  const auto a = geographic_of_plane(plane_domain_.lo[0], plane_domain_.lo[1]);
+  const auto b = geographic_of_plane(plane_domain_.hi[0], plane_domain_.hi[1]);
   return {std::min(a[0], b[0]), std::max(a[0], b[0]), std::min(a[1], b[1]), std::max(a[1], b[1])};
 }
 
@@ -679,6 +713,10 @@ WorldBox WorldFrame::mapped_index_box(const IndexBox& box) const {
 }
 
 WorldBox WorldFrame::index_box_world(const IndexBox& box) const {
+  return globe_ ? globe_index_box(box) : plane_index_box(box);
+}
+
+WorldBox WorldFrame::plane_index_box(const IndexBox& box) const {
   WorldBox b;
   if (curvilinear_) {
     const auto xy = curvilinear_->box_of(box);

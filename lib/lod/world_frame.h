@@ -42,6 +42,15 @@
 // Descending axes (latitude north to south, height top down, pressure) map the same way:
 // world coordinates do not depend on storage order.
 //
+// The globe (FrameShape::kGlobe, or kAuto on a wide or global domain; frames on the Earth
+// only): world = WGS84 earth-centred, earth-fixed kilometres (lod/wgs84_globe.h: origin at
+// the Earth's centre, x towards 0 N 0 E, y towards 0 N 90 E, z towards the north pole) of
+// the true longitude and latitude of the plane's position, at the height vertical_to_world
+// (exaggerated) above the ellipsoid. "Up" is the ellipsoid normal (up_at), not z. The
+// plane stays the frame's intermediate: geographic_bounds, lon0 and lat0 keep their
+// meaning; the 2-D geographic_to_world and world_to_geographic (plane x/y) refuse on a
+// globe: place_geographic and geographic_of place in 3-D on either shape.
+//
 // Thread safety: const members may be called from any thread (a mapped frame runs PROJ
 // through a per-thread GridProjection).
 #pragma once
@@ -71,8 +80,18 @@ inline constexpr double kDefaultVerticalExaggeration = 10.0;
 // Kilometres per degree of latitude (and of longitude at the equator).
 inline constexpr double kKmPerDegree = 6371.0088 * std::numbers::pi / 180.0;
 
+// The shape of the world: the tangent plane (above), or the WGS84 globe (below).
+enum class FrameShape { kPlane, kGlobe, kAuto };
+
+// kAuto chooses the globe for a frame on the Earth whose longitude or latitude extent
+// exceeds this many degrees (every global data set does); smaller domains keep the plane.
+// At 30 degrees the tangent plane misplaces the domain's corners by about 1% of its width
+// (cos of 15 degrees off the tangent point), and the curvature shows in a view.
+inline constexpr double kGlobeMinExtentDeg = 30.0;
+
 struct WorldFrameOptions {
   double vertical_exaggeration = kDefaultVerticalExaggeration;  // finite, > 0
+  FrameShape shape = FrameShape::kPlane;
 };
 
 enum class HorizontalMap { kGeographic, kMapped, kMetric, kCurvilinear };
@@ -121,7 +140,19 @@ class WorldFrame {
   // on a mapped frame where the world point has no latitude (beyond the poles) or the
   // mapping no inverse.
   Vec3 to_axis(const Vec3& world) const;
-  // The vertical map alone (every frame's z maps by itself).
+  // Whether the world is the WGS84 globe (ECEF km) rather than the tangent plane.
+  bool globe() const { return globe_; }
+  // The local up direction (unit) at world position `world`: +z on the plane, the
+  // ellipsoid normal on the globe.
+  Vec3 up_at(const Vec3& world) const;
+  // True longitude/latitude (degrees) at world height `world_height` (km, exaggerated, as
+  // vertical_to_world gives) to world km on either shape. \error as geographic_to_world.
+  Vec3 place_geographic(double lon, double lat, double world_height) const;
+  // The inverse: {longitude continuous about lon0, latitude, world height}.
+  // \error as geographic_to_world.
+  Vec3 geographic_of(const Vec3& world) const;
+  // The vertical map alone (every frame's z maps by itself; on the globe, the height
+  // above the ellipsoid).
   double vertical_to_world(double z) const;
   double world_to_vertical(double world_z) const;
 
@@ -138,7 +169,8 @@ class WorldFrame {
   // 'y' (m) are Cartesian coordinates without a grid_mapping ..."); "" when on_earth().
   const std::string& no_earth_reason() const { return no_earth_reason_; }
   // True longitude/latitude (degrees) to world x/y km, the longitude taken the short way
-  // round from lon0. \error kUnsupported with no_earth_reason() when !on_earth().
+  // round from lon0. \error kUnsupported with no_earth_reason() when !on_earth(), and on
+  // a globe (where a position needs its height: place_geographic).
   std::array<double, 2> geographic_to_world(double lon, double lat) const;
   // World x/y km to true longitude/latitude (longitude continuous about lon0; latitude
   // beyond +-90 where the plane is beyond the poles). \error as geographic_to_world.
@@ -161,7 +193,7 @@ class WorldFrame {
   // The smallest and largest axis values of x and y: {x lo, x hi, y lo, y hi}.
   const std::array<double, 4>& axis_ranges() const { return axis_ranges_; }
   // The box that holds every point of the grid: on a mapped frame the box of the
-  // boundary's image, padded as node_world_boxes pads.
+  // boundary's image, padded as node_world_boxes pads; on a globe an ECEF box.
   const WorldBox& domain() const { return domain_; }
   // The box of the level-0 index box `box` (inclusive sample indices) as
   // node_world_boxes computes it.
@@ -194,6 +226,9 @@ class WorldFrame {
   struct Mapped;  // a mapped frame's pipeline and sample table (shared by copies)
 
   // Parts of the constructor.
+  // The plane (the constructor but the shape).
+  void place(const format::Manifest& manifest, std::vector<double> level_heights_m,
+             const std::shared_ptr<const format::HorizontalCoordinates>& coordinates);
   void place_horizontal(const format::Manifest& manifest);
   // Also samples z and sets the domain's z range.
   void place_vertical(const format::Manifest& manifest, std::vector<double> level_heights_m);
@@ -201,6 +236,21 @@ class WorldFrame {
   void place_mapped(const format::Manifest& manifest, bool z_negative);
   void place_curvilinear(const format::Manifest& manifest, bool z_negative,
                          const std::shared_ptr<const format::HorizontalCoordinates>& coordinates);
+
+  // The plane's maps (the whole frame on the plane; the globe's first step).
+  Vec3 plane_to_world(const Vec3& axis) const;
+  Vec3 plane_to_axis(const Vec3& plane) const;
+  Vec3 plane_normal(const Vec3& axis, const Vec3& normal) const;
+  WorldBox plane_index_box(const IndexBox& box) const;
+  std::array<double, 2> plane_of_geographic(double lon, double lat) const;
+  std::array<double, 2> geographic_of_plane(double x, double y) const;
+  // The globe's (world_frame_globe.cpp).
+  void choose_shape(FrameShape shape);
+  Vec3 plane_to_globe(const Vec3& plane) const;
+  Vec3 globe_to_plane(const Vec3& world) const;
+  Vec3 globe_normal(const Vec3& plane, const Vec3& plane_normal) const;
+  WorldBox globe_index_box(const IndexBox& box) const;
+  void check_plane(const char* what) const;
 
   double separable_to_world(int axis, double value) const;
   double separable_to_axis(int axis, double world) const;
@@ -229,6 +279,8 @@ class WorldFrame {
   std::shared_ptr<const CurvilinearPlane> curvilinear_;
   std::string curvilinear_what_;  // "curvilinear grid ('lon' / 'lat')"
   WorldBox domain_;
+  WorldBox plane_domain_;  // the domain on the plane (the same as domain_ off the globe)
+  bool globe_ = false;
 };
 
 // The world box of every octree node, indexed by NodeId: spanned by the node's brick's
@@ -240,6 +292,12 @@ class WorldFrame {
 // differences along each grid line): the image of a grid cell's edge is a curve, not the
 // chord between its samples. A map without folds sends the brick's interior inside the
 // image of its boundary, so every placed vertex of the node's meshes is in its box.
+// On a globe the box is that of the ECEF images of the brick's horizontal boundary samples
+// at its bottom and top heights, padded for the bulge of the ellipsoid over the brick:
+// (a + h_top)(1 - cos alpha) + (a - b) alpha, alpha the largest angle at the Earth's centre
+// between the brick's centre sample and a point of its boundary (a boundary sample's angle
+// plus the largest step between neighbouring boundary samples, and 0.2 degrees for the
+// ellipsoid normal's tilt from the radius), clamped to the sphere of radius a + h_top.
 // \error kInvalidArgument when the layout's grid is not the frame's dims.
 std::vector<WorldBox> node_world_boxes(const OctreeLayout& layout, const WorldFrame& frame);
 

@@ -10,7 +10,7 @@ namespace strielad::render {
 FrameInputs frame_inputs(const view::ViewController& controller, const lod::Camera& camera) {
   FrameInputs inputs;
   inputs.camera = camera;
-  inputs.vertical_exaggeration = controller.options().vertical_exaggeration;
+  inputs.vertical_exaggeration = controller.renderer_vertical_scale();
   inputs.mirrored = controller.link().placer().mirrored();
   const Scene& scene = controller.scene();
   if (!scene.slices.empty()) {

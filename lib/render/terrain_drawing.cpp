@@ -17,6 +17,8 @@ layout(location = 3) in float a_water;  // 1: no value or below sea level (at 0 
 layout(location = 4) in vec2 a_clip;    // clip coordinates (view/terrain_tiles.h)
 uniform mat4 u_view_projection;
 uniform float u_vertical_exaggeration;
+uniform bool u_globe;             // positions ECEF km, placed at u_gradient_scale
+uniform float u_gradient_scale;   // the globe's exaggeration
 out vec3 v_world;
 out vec3 v_normal;
 out float v_height_m;
@@ -24,9 +26,24 @@ out vec2 v_uv;
 out float v_water;
 out vec2 v_clip;
 void main() {
-  v_world = vec3(a_position.xy, a_position.z * u_vertical_exaggeration);
-  v_normal = normalize(vec3(-a_gradient * u_vertical_exaggeration, 1.0));
-  v_height_m = a_position.z * 1000.0;
+  if (u_globe) {
+    // The local east/north/up frame (up along the radius: within 0.2 degrees of the
+    // ellipsoid normal), the height above the WGS84 ellipsoid along the radius.
+    v_world = a_position;
+    vec3 up = normalize(a_position);
+    vec3 east = cross(vec3(0.0, 0.0, 1.0), up);
+    east = length(east) > 1e-6 ? normalize(east) : vec3(1.0, 0.0, 0.0);
+    vec3 north = cross(up, east);
+    vec2 g = a_gradient * u_gradient_scale;
+    v_normal = normalize(up - g.x * east - g.y * north);
+    const float a = 6378.137, b = 6356.752314;
+    float r = inversesqrt(dot(up.xy, up.xy) / (a * a) + up.z * up.z / (b * b));
+    v_height_m = (length(a_position) - r) / u_gradient_scale * 1000.0;
+  } else {
+    v_world = vec3(a_position.xy, a_position.z * u_vertical_exaggeration);
+    v_normal = normalize(vec3(-a_gradient * u_vertical_exaggeration, 1.0));
+    v_height_m = a_position.z * 1000.0;
+  }
   v_uv = a_uv;
   v_water = a_water;
   v_clip = a_clip;
@@ -96,6 +113,9 @@ TerrainDrawStats TerrainDrawing::draw(const view::TerrainFrame& frame,
                             view_projection.data());
   glProgramUniform1f(p, glGetUniformLocation(p, "u_vertical_exaggeration"),
                      static_cast<float>(vertical_exaggeration));
+  glProgramUniform1i(p, glGetUniformLocation(p, "u_globe"), frame.globe ? 1 : 0);
+  glProgramUniform1f(p, glGetUniformLocation(p, "u_gradient_scale"),
+                     static_cast<float>(frame.gradient_scale));
   const Vec3 s = normalize(sun);
   glProgramUniform3f(p, glGetUniformLocation(p, "u_sun"), float(s[0]), float(s[1]), float(s[2]));
   glProgramUniform4f(p, glGetUniformLocation(p, "u_clip"), float(frame.clip.lo[0]),

@@ -24,6 +24,10 @@ namespace strielad::view {
 inline constexpr double kExaggeratedDepthShare = 0.28;
 inline constexpr double kMinDefaultExaggeration = 1.0;     // never flatter than true scale
 inline constexpr double kMaxDefaultExaggeration = 1000.0;
+// On the globe (lod/world_frame.h) the default is at most this: a 30 km deep atmosphere
+// becomes a shell 600 km thick, a tenth of the Earth's radius, instead of the plane's
+// 200 for a global domain, which would lift it by the Earth's radius.
+inline constexpr double kMaxGlobeDefaultExaggeration = 20.0;
 
 // A domain's size in true kilometres (no exaggeration).
 struct DomainExtent {

@@ -16,10 +16,21 @@
 
 namespace strielad::view {
 
-void HeightPlacement::widen_boxes(std::vector<lod::WorldBox>& boxes, double exaggeration) const {
+void HeightPlacement::widen_boxes(std::vector<lod::WorldBox>& boxes, double exaggeration,
+                                  std::optional<double> globe_frame_height_km) const {
   if (kind != Kind::kVariable) return;
   const double scale = 1e-3 * exaggeration;
   for (std::size_t n = 0; n < boxes.size() && n < node_heights_m.size(); ++n) {
+    if (globe_frame_height_km) {
+      const double pad =
+          std::max(std::fabs(node_heights_m[n][0]), std::fabs(node_heights_m[n][1])) * scale +
+          *globe_frame_height_km;
+      for (int c = 0; c < 3; ++c) {
+        boxes[n].lo[c] -= pad;
+        boxes[n].hi[c] += pad;
+      }
+      continue;
+    }
     boxes[n].lo[2] = std::min(boxes[n].lo[2], node_heights_m[n][0] * scale);
     boxes[n].hi[2] = std::max(boxes[n].hi[2], node_heights_m[n][1] * scale);
   }

@@ -25,6 +25,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,8 +60,12 @@ struct HeightPlacement {
   std::string description;  // one line for the log and the panel
 
   // The vertical extent of every box (world km at `exaggeration`) widened to
-  // node_heights_m; nothing for kFrame.
-  void widen_boxes(std::vector<lod::WorldBox>& boxes, double exaggeration) const;
+  // node_heights_m; nothing for kFrame. On the globe, where up is not z, given
+  // `globe_frame_height_km` (the frame's largest |world height| of a level), every side
+  // moves out by the node's largest |height| plus that: a vertex moves along its
+  // ellipsoid normal from its frame height to its own by at most so much.
+  void widen_boxes(std::vector<lod::WorldBox>& boxes, double exaggeration,
+                   std::optional<double> globe_frame_height_km = std::nullopt) const;
   // The height in metres of a value of the variable (kVariable).
   double metres(double value) const;
 };

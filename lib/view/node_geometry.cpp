@@ -11,12 +11,15 @@
 namespace strielad::view {
 GeometryPlacer::GeometryPlacer(
     const format::Manifest& manifest, HeightPlacement heights,
-    std::shared_ptr<const format::HorizontalCoordinates> horizontal_coordinates)
+    std::shared_ptr<const format::HorizontalCoordinates> horizontal_coordinates,
+    PlacerShape shape)
     : frame_(manifest,
-             lod::WorldFrameOptions{.vertical_exaggeration = 1.0}, heights.level_heights_m,
-             std::move(horizontal_coordinates)),
+             lod::WorldFrameOptions{.vertical_exaggeration = 1.0, .shape = shape.shape},
+             heights.level_heights_m, std::move(horizontal_coordinates)),
       mirrored_(frame_.mirrored()),
-      heights_(std::move(heights)) {}
+      heights_(std::move(heights)) {
+  if (frame_.globe()) frame_ = frame_.with_exaggeration(shape.globe_exaggeration);
+}
 
 namespace {
 
@@ -127,8 +130,16 @@ void GeometryPlacer::place_heights(const std::vector<float>& values, std::size_t
   for (std::size_t v = 0; v < n; ++v) {
     const float value = values[v];
     if (!std::isfinite(value)) continue;
-    out.vertices[(first + v) * kVertexFloats + kVertexPosition + 2] =
-        static_cast<float>(heights_.metres(value) * 1e-3);
+    float* position = &out.vertices[(first + v) * kVertexFloats + kVertexPosition];
+    const double km = heights_.metres(value) * 1e-3;
+    if (!frame_.globe()) {
+      position[2] = static_cast<float>(km);
+      continue;
+    }
+    // On the globe: the same longitude and latitude, at the value's height.
+    const Vec3 g = frame_.geographic_of({position[0], position[1], position[2]});
+    const Vec3 placed = frame_.place_geographic(g[0], g[1], km * frame_.vertical_exaggeration());
+    for (int c = 0; c < 3; ++c) position[c] = static_cast<float>(placed[c]);
   }
   // Normals of the placed surface: area-weighted face normals, outward (flipped where
   // the map reverses orientation, as the renderer's front-face rule is).

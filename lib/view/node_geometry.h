@@ -13,6 +13,10 @@
 // variable's value (carried as a mesh attribute), and its normal the placed surface's
 // own (area-weighted face normals): the map's vertical derivatives are not known per
 // vertex. Vertices where the value is missing, and slices, keep the frame's height.
+//
+// On the globe (lod::FrameShape; WGS84 ECEF km) "up" is not z, so the exaggeration cannot
+// be a scale of z: positions are placed at the globe's exaggeration (PlacerShape), and
+// the renderer scales nothing (placed_exaggeration() is what they carry).
 #pragma once
 
 #include <array>
@@ -80,7 +84,15 @@ struct NodeGeometry {
   bool empty() const { return indices.empty() && slice_indices.empty(); }
 };
 
-// Maps axis coordinates of a store to the viewer's world frame at exaggeration 1.
+// The world's shape for a placer: the plane, the globe, or the globe for wide domains
+// (lod::kGlobeMinExtentDeg), and the vertical exaggeration placed into a globe's positions.
+struct PlacerShape {
+  lod::FrameShape shape = lod::FrameShape::kPlane;
+  double globe_exaggeration = lod::kDefaultVerticalExaggeration;  // finite, > 0
+};
+
+// Maps axis coordinates of a store to the viewer's world frame at exaggeration 1 (on the
+// globe, at PlacerShape::globe_exaggeration).
 class GeometryPlacer {
  public:
   // \error as lod::WorldFrame for axes without a world position.
@@ -88,7 +100,12 @@ class GeometryPlacer {
   // (Store::horizontal_coordinates), which its frame needs (lod::WorldFrameOptions).
   explicit GeometryPlacer(
       const format::Manifest& manifest, HeightPlacement heights = {},
-      std::shared_ptr<const format::HorizontalCoordinates> horizontal_coordinates = nullptr);
+      std::shared_ptr<const format::HorizontalCoordinates> horizontal_coordinates = nullptr,
+      PlacerShape shape = {});
+
+  // The exaggeration the placed positions carry: 1 on the plane (the renderer scales z),
+  // the globe's on the globe (the renderer must not scale).
+  double placed_exaggeration() const { return frame_.vertical_exaggeration(); }
 
   // The node's meshes of time step `step` packed. `slot_of_id(id)` gives the slot of a sub-volume id (the
   // position of the sub-volume in the scene); a mesh whose id has no slot is left out.

@@ -96,8 +96,21 @@ std::optional<SunAtTime> sun_at_step(const lod::WorldFrame& frame, const format:
   const auto jd = step_sun_julian_day(manifest, step, seconds_after);
   if (!jd) return std::nullopt;
   const auto b = frame.geographic_bounds();
-  return sun_for_domain(*jd, b.lon_lo, b.lon_hi, std::max(b.lat_lo, -90.0),
-                        std::min(b.lat_hi, 90.0), frame.lon0(), frame.lat0());
+  auto sun = sun_for_domain(*jd, b.lon_lo, b.lon_hi, std::max(b.lat_lo, -90.0),
+                            std::min(b.lat_hi, 90.0), frame.lon0(), frame.lat0());
+  if (frame.globe()) sun.direction = globe_sun_direction(*jd);
+  return sun;
+}
+
+std::array<double, 2> subsolar_point(double julian_day) {
+  const auto at_origin = geo::solar_position(julian_day, 0.0, 0.0);
+  return {near_longitude(-at_origin.hour_angle_deg, 0.0), at_origin.declination_deg};
+}
+
+Vec3 globe_sun_direction(double julian_day) {
+  const auto [lon, lat] = subsolar_point(julian_day);
+  const double cl = std::cos(lat * kDeg);
+  return {cl * std::cos(lon * kDeg), cl * std::sin(lon * kDeg), std::sin(lat * kDeg)};
 }
 
 std::string describe_sun(const SunAtTime& sun) {

@@ -16,6 +16,7 @@
 //   when every point of it has the sun below the horizon.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -50,8 +51,18 @@ double domain_longitude_span_deg(const lod::WorldFrame& frame);
 // WorldFrame::no_earth_reason) or the time axis has no date (units not "<unit> since
 // <date>", calendar none). A model calendar (360_day, ...) keeps the model's season and
 // time of day (step_sun_julian_day).
+// On the globe the direction is globe_sun_direction (the rest describes the sunniest
+// point as above).
 std::optional<SunAtTime> sun_at_step(const lod::WorldFrame& frame, const format::Manifest& manifest,
                                      std::uint32_t step, double seconds_after = 0);
+
+// The sub-solar point at `julian_day` (UTC): {longitude in (-180, 180], latitude}
+// (degrees), where the sun stands in the zenith.
+std::array<double, 2> subsolar_point(double julian_day);
+// The direction towards the sun in the globe's frame (WGS84 ECEF, lod/world_frame.h): the
+// unit vector from the Earth's centre through the sub-solar point (the sun is far enough
+// that one direction lights the whole Earth: its day side is the half facing it).
+Vec3 globe_sun_direction(double julian_day);
 
 // The sun at `julian_day` (UTC) for a domain of longitudes [lon_lo, lon_hi] and
 // latitudes [lat_lo, lat_hi] (degrees; lon_lo <= lon_hi, which may pass 180) centred at

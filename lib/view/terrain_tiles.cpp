@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <limits>
 #include <tuple>
 #include <utility>
@@ -220,6 +221,23 @@ std::vector<std::size_t> with_ring(const std::vector<std::size_t>& samples, std:
 // The terrain's gradient (dz/dx, dz/dy) at lattice point i by central differences in the
 // world frame: the plane through the neighbours in both directions (one-sided where the
 // ring around the tile was clamped). `wc`: the lattice's row length.
+// The same on the globe, from each sample's longitude/latitude and height (km): its
+// neighbours placed on the plane tangent at the sample itself.
+std::array<double, 2> local_gradient(const std::vector<geo::LonLat>& ll,
+                                     const std::vector<float>& heights_m, std::size_t i,
+                                     std::size_t wc) {
+  const double k = lod::kKmPerDegree, cos_lat = std::cos(ll[i].lat * std::numbers::pi / 180.0);
+  const auto at = [&](std::size_t j) {
+    const float h = heights_m[j];
+    return Vec3{std::remainder(ll[j].lon - ll[i].lon, 360.0) * k * cos_lat,
+                (ll[j].lat - ll[i].lat) * k, is_water(h) ? 0.0 : h * 1e-3};
+  };
+  const Vec3 a = sub(at(i + 1), at(i - 1)), b = sub(at(i + wc), at(i - wc));
+  const Vec3 n = cross(a, b);
+  if (!(std::fabs(n[2]) > 1e-12)) return {0.0, 0.0};
+  return {-n[0] / n[2], -n[1] / n[2]};
+}
+
 std::array<double, 2> surface_gradient(const std::vector<Vec3>& p, std::size_t i,
                                        std::size_t wc) {
   const auto& pl = p[i - 1];
@@ -311,7 +329,8 @@ TerrainTiles::TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod:
   }
   const auto& d = frame.domain();
   const auto axes = frame.axis_ranges();
-  mapped_ = frame.bends_grid_lines();
+  globe_ = frame.globe();
+  mapped_ = frame.bends_grid_lines() || globe_;
   // Clip coordinates: world x/y on a geographic frame (the domain is its world box), the
   // store's own axis x/y on a mapped one (the domain is their box, a curved shape in the
   // world).
@@ -380,6 +399,7 @@ TerrainTileSamples TerrainTiles::samples(const TerrainTileKey& k) const {
 }
 
 Vec3 TerrainTiles::place(const geo::LonLat& ll) const {
+  if (globe_) return frame_.place_geographic(ll.lon, ll.lat, 0.0);
   const auto xy = frame_.geographic_to_world(ll.lon, ll.lat);
   return {xy[0], xy[1], 0.0};
 }
@@ -427,9 +447,14 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
   dem_->georeference(cd, rd, ll);
   std::vector<Vec3> p(wc * wr);
   for (std::size_t i = 0; i < p.size(); ++i) {
-    p[i] = place(ll[i]);
     // Water (no value, or below sea level) lies flat at sea level.
-    p[i][2] = is_water(heights[i]) ? 0.0 : heights[i] * 1e-3;
+    const double km = is_water(heights[i]) ? 0.0 : heights[i] * 1e-3;
+    if (globe_) {
+      p[i] = frame_.place_geographic(ll[i].lon, ll[i].lat, km * frame_.vertical_exaggeration());
+    } else {
+      p[i] = place(ll[i]);
+      p[i][2] = km;
+    }
   }
   auto mesh = std::make_shared<TerrainTileMesh>();
   mesh->key = key;
@@ -447,7 +472,7 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
   for (std::size_t r = 0; r < nr; ++r) {
     for (std::size_t c = 0; c < nc; ++c) {
       const std::size_t i = (r + 1) * wc + (c + 1);
-      const auto [gx, gy] = surface_gradient(p, i, wc);
+      const auto [gx, gy] = globe_ ? local_gradient(ll, heights, i, wc) : surface_gradient(p, i, wc);
       const bool water = is_water(heights[i]);
       const float x = float(p[i][0]), y = float(p[i][1]), z = float(p[i][2]);
       const auto clip = clip_coordinates(ll[i], p[i]);
@@ -467,10 +492,12 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
   // Only edges inside the extent can meet a tile of another level; the extent's own
   // edges get no skirt (a curtain there would show where the DEM ends at the store's
   // edge, as at the poles of a global DEM).
-  if (s.rows.front() != row0_) add_skirt(*mesh, bottom);
-  if (s.rows.back() != row1_) add_skirt(*mesh, top);
-  if (s.cols.front() != col0_) add_skirt(*mesh, left);
-  if (s.cols.back() != col1_) add_skirt(*mesh, right);
+  if (!globe_) {
+    if (s.rows.front() != row0_) add_skirt(*mesh, bottom);
+    if (s.rows.back() != row1_) add_skirt(*mesh, top);
+    if (s.cols.front() != col0_) add_skirt(*mesh, left);
+    if (s.cols.back() != col1_) add_skirt(*mesh, right);
+  }
   mesh->load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return mesh;
@@ -522,6 +549,9 @@ std::shared_ptr<const TerrainFrame> TerrainTiles::update(const lod::Camera& came
                                                          double exaggeration, int viewport_height) {
   auto frame = std::make_shared<TerrainFrame>();
   frame->clip = clip_;
+  frame->globe = globe_;
+  frame->gradient_scale = globe_ ? frame_.vertical_exaggeration() : 1.0;
+  if (globe_) exaggeration = 1.0;  // the tiles carry the globe's
   const lod::Frustum frustum = lod::view_frustum(camera);
   const double pixels_per_radian =
       double(std::max(viewport_height, 1)) / (2.0 * std::tan(camera.fov_y_deg * std::numbers::pi / 360.0));

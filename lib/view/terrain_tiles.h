@@ -36,6 +36,12 @@
 // - Normals come from per-vertex height gradients (central differences over the tile's
 //   samples plus a ring of neighbours, so shading is continuous across tile edges); the
 //   renderer turns them into normals at the current exaggeration.
+// - On the globe (lod/world_frame.h): positions are ECEF km at the frame's exaggeration
+//   (placed, as the meshes are: the renderer scales nothing), gradients are east/north
+//   in true km per km from each sample's own neighbours, the drawing turns them into
+//   normals in the local east/north/up frame, clip coordinates are the store's axis
+//   x/y, and tiles hang no skirts (their edges are not straight down on a globe: cracks
+//   between tiles of different levels may show as hairlines).
 #pragma once
 
 #include <atomic>
@@ -104,6 +110,10 @@ struct TerrainFrame {
   // the store's domain. World km on a geographic frame; on a mapped frame the store's
   // axis box (rlon/rlat, projected x/y), whose image in the world is a curved shape.
   lod::WorldBox clip;
+  // On the globe: positions are ECEF (exaggerated), and the gradients' exaggeration is
+  // gradient_scale (the frame's).
+  bool globe = false;
+  double gradient_scale = 1.0;
   std::size_t triangles() const {
     std::size_t n = 0;
     for (const auto& t : tiles) n += t->triangles();
@@ -186,6 +196,7 @@ class TerrainTiles {
   int finest_level_ = 0;
   lod::WorldBox clip_;
   bool mapped_ = false;  // the frame bends grid lines: clip coordinates are axis x/y
+  bool globe_ = false;   // positions in ECEF at the frame's exaggeration
 
   mutable std::mutex mutex_;
   std::condition_variable_any wake_;

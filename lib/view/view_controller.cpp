@@ -12,7 +12,9 @@ namespace strielad::view {
 ViewController::ViewController(ViewLink& link, const Scene& scene, ViewOptions options)
     : link_(link), options_(options) {
   lod::validate_lod_options(options_.lod);
-  set_vertical_exaggeration(options_.vertical_exaggeration);
+  const lod::WorldFrame& placed = link_.placer().frame();
+  set_vertical_exaggeration(placed.globe() ? placed.vertical_exaggeration()
+                                           : options_.vertical_exaggeration);
   set_scene(scene);
 }
 
@@ -41,6 +43,13 @@ void ViewController::set_vertical_exaggeration(double exaggeration) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "vertical exaggeration {} must be finite and > 0", exaggeration);
   }
+  const lod::WorldFrame& placed = link_.placer().frame();
+  if (placed.globe() && exaggeration != placed.vertical_exaggeration()) {
+    throw make_error(ErrorCode::kUnsupported,
+                     "vertical exaggeration {}: on the globe the meshes carry the exaggeration "
+                     "they were placed at ({}), chosen when the store is opened",
+                     exaggeration, placed.vertical_exaggeration());
+  }
   // The link's frame, at the new exaggeration (its horizontal placement is shared).
   frame_ = std::make_unique<lod::WorldFrame>(
       link_.placer().frame().with_exaggeration(exaggeration));
@@ -57,7 +66,15 @@ void ViewController::set_lod_options(const lod::LodOptions& options) {
 void ViewController::rebuild_cut() {
   cut_rebuilt_ = cut_ != nullptr;
   auto boxes = lod::node_world_boxes(link_.octree(), *frame_);
-  link_.placer().heights().widen_boxes(boxes, options_.vertical_exaggeration);
+  std::optional<double> globe_frame_height_km;
+  if (frame_->globe()) {
+    globe_frame_height_km = 0.0;
+    for (std::size_t k = 0; k < frame_->dims().z; ++k) {
+      globe_frame_height_km = std::max(*globe_frame_height_km, std::fabs(frame_->sample_world_z(k)));
+    }
+  }
+  link_.placer().heights().widen_boxes(boxes, options_.vertical_exaggeration,
+                                       globe_frame_height_km);
   cut_ = std::make_unique<lod::LodCut>(link_.octree(), std::move(boxes), options_.lod);
 }
 

@@ -44,8 +44,15 @@ class ViewController {
   void set_scene(const Scene& scene);
   // A new time step, as set_scene. \error kNotFound for a step the store lacks.
   void set_time(std::uint32_t step);
-  // \error kInvalidArgument for a value that is not finite and > 0.
+  // \error kInvalidArgument for a value that is not finite and > 0. On the globe the
+  // exaggeration is placed into the meshes when the link opens (view/node_geometry.h):
+  // the controller takes the link's, and \error kUnsupported for another value.
   void set_vertical_exaggeration(double exaggeration);
+  // The z scale the renderer applies: the exaggeration on the plane, 1 on the globe
+  // (whose meshes carry theirs).
+  double renderer_vertical_scale() const {
+    return frame_->globe() ? 1.0 : options_.vertical_exaggeration;
+  }
   // \error as lod::validate_lod_options.
   void set_lod_options(const lod::LodOptions& options);
 

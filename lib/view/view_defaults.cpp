@@ -10,6 +10,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -127,6 +128,18 @@ double round_1_2_5(double value) {
 }  // namespace
 
 DomainExtent domain_extent(const lod::WorldFrame& frame) {
+  if (frame.globe()) {
+    // The size on the ground, not the ECEF box: the tangent plane's extent.
+    const auto b = frame.geographic_bounds();
+    const double cos_lat0 = std::cos(frame.lat0() * std::numbers::pi / 180.0);
+    double lo = INFINITY, hi = -INFINITY;
+    for (std::size_t k = 0; k < frame.dims().z; ++k) {
+      lo = std::min(lo, frame.sample_world_z(k));
+      hi = std::max(hi, frame.sample_world_z(k));
+    }
+    return {(b.lon_hi - b.lon_lo) * lod::kKmPerDegree * cos_lat0,
+            (b.lat_hi - b.lat_lo) * lod::kKmPerDegree, (hi - lo) / frame.vertical_exaggeration()};
+  }
   const auto& d = frame.domain();
   return {d.hi[0] - d.lo[0], d.hi[1] - d.lo[1],
           (d.hi[2] - d.lo[2]) / frame.vertical_exaggeration()};

@@ -29,11 +29,12 @@ LinkEvent message_event(LinkEvent::Kind kind, std::uint64_t epoch, NodeId node,
 }  // namespace
 
 ViewLink::ViewLink(std::unique_ptr<client::ServerClient> client, HeightPlacement heights,
-                   std::shared_ptr<const format::HorizontalCoordinates> horizontal_coordinates)
+                   std::shared_ptr<const format::HorizontalCoordinates> horizontal_coordinates,
+                   PlacerShape shape)
     : client_(std::move(client)),
       manifest_(client_->manifest()),
       octree_(std::make_unique<OctreeLayout>(client_->octree())),
-      placer_(manifest_, std::move(heights), std::move(horizontal_coordinates)) {
+      placer_(manifest_, std::move(heights), std::move(horizontal_coordinates), shape) {
   thread_ = std::thread([this] { run(); });
 }
 

@@ -64,10 +64,12 @@ class ViewLink {
   // (view/height_placement.h) every scene is sent with that variable as one more
   // attribute (at the end, unless the scene carries it already) and the meshes are
   // placed by it. A curvilinear store's frame needs its GEOMETRY coordinates
-  // (`horizontal_coordinates`, as GeometryPlacer).
+  // (`horizontal_coordinates`, as GeometryPlacer). `shape`: the world's shape (the plane,
+  // or the globe with its exaggeration placed into the meshes).
   explicit ViewLink(
       std::unique_ptr<client::ServerClient> client, HeightPlacement heights = {},
-      std::shared_ptr<const format::HorizontalCoordinates> horizontal_coordinates = nullptr);
+      std::shared_ptr<const format::HorizontalCoordinates> horizontal_coordinates = nullptr,
+      PlacerShape shape = {});
   ~ViewLink();  // stops the thread; the client says Goodbye
   ViewLink(const ViewLink&) = delete;
   ViewLink& operator=(const ViewLink&) = delete;

@@ -131,8 +131,9 @@ PY
   ncgen -o "$work/global.nc" "$work/global.cdl" &&
     "$convert" "$work/global.nc" -o "$work/global-store" --brick 8 -q 2>"$work/global-convert.err" ||
     fail "global store: $(cat "$work/global-convert.err")"
-  if "$view" "$work/global-store" --offscreen --size 160x90 --threads 2 --out "$work/global.png" \
-      --json >"$work/global.json" 2>"$work/global.err"; then
+  # On the plane (--shape plane) as before the globe.
+  if "$view" "$work/global-store" --shape plane --offscreen --size 160x90 --threads 2 \
+      --out "$work/global.png" --json >"$work/global.json" 2>"$work/global.err"; then
     python3 - "$work/global.json" <<'PY' || fail "global: $(cat "$work/global.json")"
 import json, sys
 d = json.loads(open(sys.argv[1]).readline())
@@ -146,6 +147,34 @@ PY
     echo "ok: a global grid gets its own exaggeration and the day side's sun"
   else
     fail "global grid"; cat "$work/global.err"
+  fi
+  # By default on the globe: the exaggeration capped at 20, the home view over the
+  # sub-solar point (the image's centre drawn, its corners the background), and --tracks
+  # refused with the way out.
+  if "$view" "$work/global-store" --offscreen --size 160x90 --threads 2 \
+      --out "$work/globe.png" --json >"$work/globe.json" 2>"$work/globe.err"; then
+    python3 - "$work/globe.json" <<'PY' || fail "globe: $(cat "$work/globe.json")"
+import json, sys
+d = json.loads(open(sys.argv[1]).readline())
+assert d["vertical_exaggeration"] == 20, d["vertical_exaggeration"]
+assert d["sun_elevation_deg"] > 89, d["sun_elevation_deg"]
+PY
+    grep -q " info\] world frame: .*on the WGS84 globe" "$work/globe.err" ||
+      fail "globe not logged: $(cat "$work/globe.err")"
+    grep -q " info\] vertical exaggeration 20 on the globe" "$work/globe.err" ||
+      fail "globe exaggeration not logged: $(cat "$work/globe.err")"
+    echo "ok: a global grid opens on the globe"
+  else
+    fail "globe"; cat "$work/globe.err"
+  fi
+  printf 'id,time,lat,lon,alt\n' >"$work/globe-tracks.csv"
+  if "$view" "$work/global-store" --offscreen --size 160x90 --threads 2 --tracks "$work/globe-tracks.csv" \
+      --out "$work/globe-tracks.png" 2>"$work/globe-tracks.err"; then
+    fail "--tracks on the globe was not refused"
+  else
+    grep -q "flight tracks are drawn on the tangent plane only.*--shape plane" "$work/globe-tracks.err" ||
+      fail "--tracks on the globe: $(cat "$work/globe-tracks.err")"
+    echo "ok: --tracks on the globe is refused with the way out"
   fi
 else
   echo "skip: global grid (no ncgen)"

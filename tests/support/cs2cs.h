@@ -21,6 +21,11 @@ bool have_cs2cs();
 std::optional<std::vector<std::array<double, 2>>> cs2cs(
     const std::string& from, const std::string& to, const std::vector<std::array<double, 2>>& points);
 
+// The same with a third coordinate (a height in metres, or ECEF z), e.g. "+proj=longlat
+// +datum=WGS84" to "+proj=geocent +datum=WGS84 +units=m".
+std::optional<std::vector<std::array<double, 3>>> cs2cs_3d(
+    const std::string& from, const std::string& to, const std::vector<std::array<double, 3>>& points);
+
 // The rotated pole of EURO-CORDEX and COSMO (39.25 N, 162 W) as a PROJ string written by
 // hand: ob_tran with the pole at o_lat_p, lon_0 = pole longitude + 180.
 inline const std::string kEuroCordexRotatedPole =

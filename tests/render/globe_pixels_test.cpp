@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: Apache-2.0
+// A global store seen on the globe (lod/world_frame.h FrameShape, view/globe_view.h): a
+// round Earth on the background, lit by the true sun at the simulation time, the day side
+// bright and the night side dim but readable (the built-in clouds shader's ambient light).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <thread>
+
+#include "render/complete_frame.h"
+#include "render/headless_context.h"
+#include "render/offscreen_target.h"
+#include "render/png_file.h"
+#include "render/volume_renderer.h"
+#include "render/volume_shaders.h"
+#include "support/function_dem.h"
+#include "support/globe_store.h"
+#include "support/temp_dir.h"
+#include "view/globe_view.h"
+#include "view/local_server.h"
+#include "view/simulation_time.h"
+#include "view/sun_direction.h"
+#include "view/terrain_tiles.h"
+#include "view/view_controller.h"
+#include "view/view_link.h"
+
+namespace strielad::testing {
+namespace {
+
+constexpr int kSize = 160;
+constexpr double kExaggeration = 20.0;
+
+class GlobePixelsTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new TempDir();
+    // At 00 UTC on the June solstice the sun stands over 180 E, 23.4 N.
+    store_ = new std::filesystem::path(
+        write_globe_store(dir_->path(), "seconds since 2024-06-21 00:00:00"));
+    context_ = render::HeadlessContext::create().release();
+  }
+  static void TearDownTestSuite() {
+    delete context_;
+    delete store_;
+    delete dir_;
+  }
+
+  void SetUp() override {
+    connection_ = view::open_local_store(*store_, view::LocalServerOptions{.threads = 2});
+    link_ = std::make_unique<view::ViewLink>(
+        std::move(connection_.client), view::HeightPlacement{}, nullptr,
+        view::PlacerShape{.shape = lod::FrameShape::kAuto, .globe_exaggeration = kExaggeration});
+    render::RenderSettings settings;
+    settings.background_top = settings.background_bottom = {0, 0, 0};
+    renderer_ = std::make_unique<render::VolumeRenderer>(settings);
+    target_ = std::make_unique<render::OffscreenTarget>(kSize, kSize);
+    Scene scene;
+    SubVolume shell;
+    shell.id = 1;
+    shell.name = "ground";
+    shell.limits.push_back(Limit{.var = "height_km", .min = std::nullopt, .max = 2.0});
+    scene.subvolumes.push_back(shell);
+    controller_ = std::make_unique<view::ViewController>(*link_, scene);
+    EXPECT_TRUE(renderer_->set_scene_layout({1}, scene.attributes).ok);
+    EXPECT_TRUE(renderer_->set_user_shader(render::default_user_shader(), "clouds.glsl").ok);
+  }
+  void TearDown() override {
+    controller_.reset();
+    link_.reset();
+    connection_.server.reset();
+  }
+
+  render::CompleteFrame render(const lod::Camera& camera, const Vec3& sun) {
+    auto inputs = render::frame_inputs(*controller_, camera);
+    inputs.sun_direction = sun;
+    return render::render_complete_frame(*controller_, *renderer_, *target_, inputs);
+  }
+
+  static std::pair<int, int> project(const lod::Camera& cam, const Vec3& p) {
+    const auto clip =
+        lod::to_clip(lod::multiply(lod::projection_matrix(cam), lod::view_matrix(cam)), p);
+    return {static_cast<int>((clip[0] / clip[3] + 1) / 2 * kSize),
+            static_cast<int>((1 - clip[1] / clip[3]) / 2 * kSize)};
+  }
+
+  static int brightness(const render::RgbaImage& image, std::pair<int, int> px) {
+    const auto p = image.at(px.first, px.second);
+    return p[0] + p[1] + p[2];
+  }
+
+  static void save(const render::RgbaImage& image, const char* name) {
+    if (const char* out = std::getenv("STRIELAD_TEST_IMAGES")) {
+      render::write_png(std::filesystem::path(out) / name, image);
+    }
+  }
+
+  static inline TempDir* dir_ = nullptr;
+  static inline std::filesystem::path* store_ = nullptr;
+  static inline render::HeadlessContext* context_ = nullptr;
+  view::LocalConnection connection_;
+  std::unique_ptr<view::ViewLink> link_;
+  std::unique_ptr<view::ViewController> controller_;
+  std::unique_ptr<render::VolumeRenderer> renderer_;
+  std::unique_ptr<render::OffscreenTarget> target_;
+};
+
+TEST_F(GlobePixelsTest, AGlobalStoreOpensAsAGlobeWithItsExaggerationPlaced) {
+  const lod::WorldFrame& frame = controller_->frame();
+  ASSERT_TRUE(frame.globe());
+  EXPECT_DOUBLE_EQ(frame.vertical_exaggeration(), kExaggeration);
+  EXPECT_DOUBLE_EQ(controller_->renderer_vertical_scale(), 1.0);
+  // The domain is the Earth and its 15 km x 20 atmosphere.
+  EXPECT_NEAR(frame.domain().hi[0], 6378.137 + 300.0, 1.0);
+  EXPECT_NEAR(frame.domain().lo[2], -(6356.752 + 300.0), 25.0);
+  EXPECT_THROW(controller_->set_vertical_exaggeration(10.0), Error);
+}
+
+TEST_F(GlobePixelsTest, TheSunLightsTheDaySideAndTheNightSideStaysReadable) {
+  const lod::WorldFrame& frame = controller_->frame();
+  const auto sun = view::sun_at_step(frame, link_->manifest(), 0);
+  ASSERT_TRUE(sun);
+  const auto jd = view::step_sun_julian_day(link_->manifest(), 0);
+  ASSERT_TRUE(jd);
+  const auto [lon_s, lat_s] = view::subsolar_point(*jd);
+  EXPECT_NEAR(std::fabs(lon_s), 180.0, 2.0);
+  EXPECT_NEAR(lat_s, 23.44, 0.1);
+  // Seen over the evening terminator, 90 degrees west of the sub-solar point.
+  view::OrbitCamera orbit(frame.domain());
+  orbit.set_globe(lon_s - 90.0, 0.0);
+  const lod::Camera cam = orbit.camera(1.0);
+  const auto image = render(cam, sun->direction).image;
+  save(image, "globe_terminator.png");
+  for (const auto& corner : {std::pair{1, 1}, std::pair{kSize - 2, 1}, std::pair{1, kSize - 2},
+                            std::pair{kSize - 2, kSize - 2}}) {
+    EXPECT_LT(brightness(image, corner), 10) << "corner " << corner.first << "," << corner.second;
+  }
+  const double top = 2.0 * kExaggeration;  // the shell's top, km
+  const auto day = project(cam, frame.place_geographic(lon_s - 45.0, 0.0, top));
+  const auto night = project(cam, frame.place_geographic(lon_s - 135.0, 0.0, top));
+  const int lit = brightness(image, day), dark = brightness(image, night);
+  // The built-in shader's light is 0.35 + 0.55 cos(sun) + 0.10 cos(view): at 45 degrees
+  // from the sub-solar point about 0.8, on the night side at most 0.45.
+  EXPECT_GT(lit, 1.5 * dark) << "day " << lit << ", night " << dark;
+  EXPECT_GT(dark, 60) << "the night side is black";
+  // The disk's centre, on the terminator, is drawn.
+  EXPECT_GT(brightness(image, project(cam, frame.place_geographic(lon_s - 90.0, 0.0, top))), 10);
+}
+
+TEST_F(GlobePixelsTest, HomeLooksDownOnTheDaySide) {
+  const lod::WorldFrame& frame = controller_->frame();
+  const auto sun = view::sun_at_step(frame, link_->manifest(), 0);
+  ASSERT_TRUE(sun);
+  const lod::Camera cam = view::home_orbit_camera(frame, link_->manifest(), 0).camera(1.0);
+  const auto image = render(cam, sun->direction).image;
+  save(image, "globe_home.png");
+  const int centre = brightness(image, {kSize / 2, kSize / 2});
+  EXPECT_GT(centre, 400) << "the sub-solar point is not lit";
+  EXPECT_LT(brightness(image, {1, 1}), 10);
+}
+
+// A global DEM (0.5 degrees, -180..180 E: it goes round) drapes the globe: the terrain
+// is drawn round the Earth, lit on the day side, dim on the night side.
+TEST_F(GlobePixelsTest, TerrainDrapesTheGlobeLitByTheSun) {
+  Scene empty;  // cloud water nowhere this dense: nothing but the terrain
+  SubVolume none;
+  none.id = 1;
+  none.name = "none";
+  none.limits.push_back(Limit{.var = "clw", .min = 1.0, .max = std::nullopt});
+  empty.subvolumes.push_back(none);
+  controller_->set_scene(empty);
+  const lod::WorldFrame& frame = controller_->frame();
+  auto dem = std::make_shared<FunctionDem>(721, 361, -180.0, 180.0, -90.0, 90.0,
+                                           [](double lon, double lat) {
+    return float(1200.0 + 900.0 * std::sin(lon * 0.1) * std::cos(lat * 0.07));
+  });
+  view::TerrainTiles tiles(dem, frame);
+  EXPECT_GT(tiles.wrap_columns(), 0u);
+  const auto sun = view::sun_at_step(frame, link_->manifest(), 0);
+  ASSERT_TRUE(sun);
+  const auto [lon_s, lat_s] = view::subsolar_point(*view::step_sun_julian_day(link_->manifest(), 0));
+  view::OrbitCamera orbit(frame.domain());
+  orbit.set_globe(lon_s - 90.0, 0.0);
+  const lod::Camera cam = orbit.camera(1.0);
+  auto inputs = render::frame_inputs(*controller_, cam);
+  inputs.sun_direction = sun->direction;
+  std::shared_ptr<const view::TerrainFrame> terrain;
+  for (int i = 0; i < 20000; ++i) {
+    terrain = tiles.update(cam, inputs.vertical_exaggeration, kSize);
+    if (tiles.complete()) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ASSERT_TRUE(tiles.complete());
+  EXPECT_TRUE(terrain->globe);
+  inputs.terrain = terrain;
+  const auto image = render::render_complete_frame(*controller_, *renderer_, *target_, inputs).image;
+  save(image, "globe_terrain.png");
+  EXPECT_LT(brightness(image, {1, 1}), 10);
+  const double top = 1.2 * kExaggeration;
+  const int lit = brightness(image, project(cam, frame.place_geographic(lon_s - 45.0, 0.0, top)));
+  const int dark = brightness(image, project(cam, frame.place_geographic(lon_s - 135.0, 0.0, top)));
+  EXPECT_GT(lit, 2 * dark) << "day " << lit << ", night " << dark;
+  EXPECT_GT(dark, 40) << "the night side is black";
+}
+
+}  // namespace
+}  // namespace strielad::testing
