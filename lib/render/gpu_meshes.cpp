@@ -121,6 +121,14 @@ void GpuMeshes::upload(NodeId node, std::shared_ptr<const view::NodeGeometry> ge
   ++shown_version_;
 }
 
+void GpuMeshes::clear() {
+  end_retaining();
+  meshes_.clear();
+  bytes_ = triangles_ = slice_triangles_ = deferred_ = 0;
+  synced_version_ = ~0ull;
+  ++shown_version_;
+}
+
 void GpuMeshes::count(const GpuMesh& mesh, int sign) {
   const auto apply = [sign](std::size_t& total, std::size_t n) {
     total = sign > 0 ? total + n : total - n;

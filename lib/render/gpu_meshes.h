@@ -37,7 +37,7 @@ class GpuMeshes {
   // frames; until a node's new mesh is uploaded its previous one stays drawn.
   // Returns the bytes uploaded.
   std::size_t sync(const view::ProgressiveMeshes& meshes, std::size_t max_upload_bytes);
-  void clear() { meshes_.clear(); }
+  void clear();
 
   const std::unordered_map<NodeId, GpuMesh>& meshes() const { return meshes_; }
   std::size_t bytes() const { return bytes_; }

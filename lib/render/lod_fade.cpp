@@ -83,13 +83,14 @@ std::size_t LodCrossFade::sync(GpuMeshes& meshes, const view::ProgressiveMeshes&
     if (meshes.retaining()) meshes.end_retaining();
     return meshes.sync(shown, max_upload_bytes);
   }
+  const double shown_weight = schedule_.weight();  // of the frame on screen
   if (schedule_.running()) {
     schedule_.advance(seconds);
     if (!schedule_.running()) meshes.end_retaining();  // over: the outgoing set is freed
   }
   if (!meshes.retaining()) meshes.begin_retaining();
   const bool change_coming = shown.version() != synced_shown_version_;
-  if (schedule_.running() && change_coming && schedule_.weight() >= 0.5) {
+  if (schedule_.running() && change_coming && shown_weight >= 0.5) {
     // The incoming set, already the larger part of the picture, becomes the outgoing one.
     schedule_.stop();
     meshes.begin_retaining();

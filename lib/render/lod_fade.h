@@ -9,9 +9,9 @@
 // as (1 - w) * outgoing + w * incoming, w going linearly from 0 to 1 (docs/view.md).
 // Outside a fade a frame costs one render, as without fading; the outgoing set shares
 // the GPU meshes of the nodes that did not change (GpuMeshes retaining).
-// A change during a fade: before the weight reaches 1/2 the outgoing set stays and the
-// incoming one is the newest; from 1/2 on the incoming set becomes the outgoing one
-// and the fade starts over. Either way a frame changes by at most half of a pop. A
+// A change during a fade: while the frame on screen weighs the incoming set below 1/2
+// the outgoing set stays and the incoming one is the newest; from 1/2 on the incoming
+// set becomes the outgoing one and the fade starts over. Either way a frame changes by at most half of a pop. A
 // change from nothing drawn at all (the first picture) does not fade.
 #pragma once
 
