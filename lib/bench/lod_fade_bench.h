@@ -2,11 +2,14 @@
 // The `strielad-bench view-fade` measure: the default fly-in over a generated sample
 // store, rendered frame by frame at a fixed frame rate (each frame complete, simulated
 // time 1 / fps per frame, render/complete_frame.h) once with the level-of-detail
-// cross-fade off and once on (render/lod_fade.h). For each pair of consecutive frames it
-// takes the per-pixel change (the largest difference of any channel, 0-255) and reports
-// its maximum and 99.9th percentile over the pixels; the largest of those along the path
-// is how hard the worst pop is. The camera moves in both runs alike, so the difference
-// between the runs is the level-of-detail changes'.
+// cross-fade off and once on (render/lod_fade.h). The per-pixel change of two images is
+// the largest difference of any channel (0-255); its maximum and 99.9th percentile over
+// the pixels are taken for two pairs per frame:
+// - the level-of-detail change: frame i against what was on screen at frame i - 1 (its
+//   meshes and fade weight) drawn from frame i's camera, so that only the change of
+//   meshes (and the fade's progress) counts, not the camera's motion;
+// - the frame-to-frame change, camera motion included (edges that move saturate it).
+// The largest of each along the path is how hard the worst pop is.
 #pragma once
 
 #include <cstdint>
@@ -48,11 +51,14 @@ struct FadeRun {
   std::size_t frames = 0;
   std::size_t cut_changes = 0;    // frames whose cut differs from the previous frame's
   std::size_t faded_frames = 0;   // frames drawn as a blend (two renders)
-  FrameChange largest;            // the largest max and p99.9 along the path
-  std::size_t largest_at = 0;     // the frame (its change from the one before) of the max
-  double median_max = 0;          // median of the per-frame max
+  // Level-of-detail change (same camera): the largest max and p99.9 along the path, the
+  // frame of the largest max, the median of the per-frame max over frames whose cut changed.
+  FrameChange lod;
+  std::size_t lod_at = 0;
+  double lod_median_max = 0;
+  FrameChange motion;             // frame to frame, camera motion included
   double render_ms_mean = 0;      // wall time per frame's render, read-back included
-  std::vector<FrameChange> changes;  // per frame from the second on
+  std::vector<FrameChange> lod_changes, motion_changes;  // per frame from the second on
 };
 
 struct FadeBenchReport {
