@@ -120,7 +120,8 @@ void LodCrossFade::finish(GpuMeshes& meshes) {
 
 FrameStats LodCrossFade::render(VolumeRenderer& renderer, const FrameInputs& inputs,
                                 GLuint framebuffer, int width, int height) {
-  if (!schedule_.running() || !renderer.meshes().retained_differs()) {
+  if (!schedule_.running() || !renderer.meshes().retained_differs() || width <= 0 ||
+      height <= 0) {
     last_weight_ = 1;
     return renderer.render(inputs, framebuffer, width, height);
   }
