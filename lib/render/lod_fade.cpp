@@ -89,7 +89,8 @@ std::size_t LodCrossFade::sync(GpuMeshes& meshes, const view::ProgressiveMeshes&
     if (!schedule_.running()) meshes.end_retaining();  // over: the outgoing set is freed
   }
   if (!meshes.retaining()) meshes.begin_retaining();
-  const bool change_coming = shown.version() != synced_shown_version_;
+  const bool change_coming =
+      shown.version() != synced_shown_version_ || meshes.deferred() > 0;
   if (schedule_.running() && change_coming && shown_weight >= 0.5) {
     // The incoming set, already the larger part of the picture, becomes the outgoing one.
     schedule_.stop();
