@@ -42,7 +42,9 @@ int run(const FadeFlags& f) {
   o.command_line = f.command_line;
   const auto report = bench::run_fade_bench(o);
   std::cout << bench::fade_report_text(report) << std::flush;
-  if (!f.json.empty()) bench::write_text_file(f.json, bench::fade_report_json(report).dump(1) + "\n");
+  if (!f.json.empty()) {
+    bench::write_text_file(f.json, bench::fade_report_json(report).dump(1) + "\n");
+  }
   return 0;
 }
 

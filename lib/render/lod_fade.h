@@ -11,8 +11,9 @@
 // the GPU meshes of the nodes that did not change (GpuMeshes retaining).
 // A change during a fade: while the frame on screen weighs the incoming set below 1/2
 // the outgoing set stays and the incoming one is the newest; from 1/2 on the incoming
-// set becomes the outgoing one and the fade starts over. Either way a frame changes by at most half of a pop. A
-// change from nothing drawn at all (the first picture) does not fade.
+// set becomes the outgoing one and the fade starts over. Either way a frame changes by
+// at most about half of a pop. A change from nothing drawn at all (the first picture)
+// does not fade.
 #pragma once
 
 #include <cstdint>
