@@ -13,6 +13,7 @@ void register_io(CLI::App& app, cli::Action& action, std::string command_line);
 void register_extract(CLI::App& app, cli::Action& action, std::string command_line);
 void register_latency(CLI::App& app, cli::Action& action, std::string command_line);
 void register_view(CLI::App& app, cli::Action& action, std::string command_line);
+void register_view_fade(CLI::App& app, cli::Action& action, std::string command_line);
 void register_advect(CLI::App& app, cli::Action& action, std::string command_line);
 void register_robustness(CLI::App& app, cli::Action& action, std::string command_line);
 void register_scene(CLI::App& app, cli::Action& action, std::string command_line);

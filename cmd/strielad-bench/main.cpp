@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
         bench_cmd::register_extract(app, action, command_line);
         bench_cmd::register_latency(app, action, command_line);
         bench_cmd::register_view(app, action, command_line);
+        bench_cmd::register_view_fade(app, action, command_line);
         bench_cmd::register_advect(app, action, command_line);
         bench_cmd::register_robustness(app, action, command_line);
         bench_cmd::register_scene(app, action, command_line);

@@ -55,6 +55,9 @@ void add_view_options(CLI::App& app, view_cmd::ViewerArgs& args) {
   app.add_option("--lod-threshold", args.lod_threshold_sr,
                  "Split a node covering more than this solid angle, sr (default 0.01)");
   app.add_option("--max-nodes", args.max_nodes, "Most nodes in the cut (default 4096)");
+  app.add_option("--lod-fade-ms", args.lod_fade_ms,
+                 "Cross-fade when the level of detail changes, ms (default 300; 0: off; "
+                 "camera paths advance 1/fps per frame)");
   app.add_option("--max-fragment-mib", args.max_fragment_mib,
                  "A-buffer fragment memory bound, MiB (default 256: 16 M fragments)");
   app.add_flag("--boxes", args.boxes, "Outline the cut's node boxes");

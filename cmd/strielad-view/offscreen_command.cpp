@@ -153,6 +153,7 @@ nlohmann::json frame_json_line(const RunFacts& run, std::size_t i,
                       {"vertical_exaggeration", session.exaggeration},
                       {"vertical_placement", session.vertical_placement},
                       {"nodes_moved", s.nodes_moved},
+                      {"lod_fade_weight", frame.fade_weight},
                       {"tracks_shown", tracks ? tracks->tracks_shown : 0},
                       {"track_segments", tracks ? tracks->segment_count() : 0},
                       {"track_window_ms", run.track_window_ms},
@@ -242,6 +243,7 @@ int run_offscreen(const ViewerArgs& args) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tracks_start).count();
   const RunFacts run{session, controller, renderer, advect_s, sun, tracks, track_window_ms,
                      motions};
+  render::LodCrossFade fade(args.lod_fade_ms);
   for (std::size_t i = 0; i < cameras.size(); ++i) {
     double terrain_wait_ms = 0;
     std::shared_ptr<const view::TerrainFrame> terrain;
@@ -256,8 +258,9 @@ int run_offscreen(const ViewerArgs& args) {
     inputs.tracks = tracks;
     inputs.time_seconds = time_s;
     inputs.motions = motions;
-    const auto frame = render::render_complete_frame(controller, renderer, target, inputs,
-                                                     {.outline_cut = args.boxes});
+    const auto frame = render::render_complete_frame(
+        controller, renderer, target, inputs,
+        {.outline_cut = args.boxes, .fade = &fade, .fade_seconds = 1.0 / args.fps});
     const auto out = frame_path(args.out, i, cameras.size() > 1);
     if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
     if (legend) {

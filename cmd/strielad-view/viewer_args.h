@@ -8,6 +8,7 @@
 
 #include "lod/lod_cut.h"
 #include "lod/world_frame.h"
+#include "render/lod_fade.h"
 #include "render/volume_renderer.h"
 
 namespace strielad::view_cmd {
@@ -35,6 +36,7 @@ struct ViewerArgs {
   std::string shape = "auto";
   double lod_threshold_sr = lod::kDefaultSplitSolidAngleSr;
   std::size_t max_nodes = lod::kDefaultMaxNodes;
+  double lod_fade_ms = render::kDefaultLodFadeMs;  // cross-fade of LOD changes; 0: off
   double max_fragment_mib = render::kDefaultMaxFragmentBytes / double(1 << 20);
   bool boxes = false;
   std::string size = "1280x720";

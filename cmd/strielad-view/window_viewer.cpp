@@ -91,6 +91,7 @@ WindowViewer::WindowViewer(GLFWwindow* window, const ViewerArgs& args, ViewerSes
       watch_(args.shader_file.empty() ? std::nullopt
                                       : std::optional<ShaderFileWatch>(args.shader_file)),
       controller_(*session.link, session.scene, view_options(args, session)),
+      fade_(args.lod_fade_ms),
       camera_(view::home_orbit_camera(controller_.frame(), session.link->manifest(),
                                       session.scene.time)) {
   apply_scene_layout(session.scene);
@@ -99,6 +100,7 @@ WindowViewer::WindowViewer(GLFWwindow* window, const ViewerArgs& args, ViewerSes
   state_.exaggeration = static_cast<float>(session.exaggeration);
   state_.lod_threshold_sr = static_cast<float>(args.lod_threshold_sr);
   state_.max_nodes = static_cast<int>(args.max_nodes);
+  state_.lod_fade_ms = static_cast<float>(args.lod_fade_ms);
   state_.boxes = args.boxes;
   state_.terrain_available = session.terrain != nullptr;
   state_.drape_available = session.terrain && !args.terrain_image.empty();
@@ -141,9 +143,10 @@ void WindowViewer::frame() {
   const double aspect = height > 0 ? double(width) / double(height) : 1.0;
   const lod::Camera cam = camera_.camera(aspect);
   const auto counters = controller_.update(cam);
-  renderer_.meshes().sync(controller_.meshes(), kUploadBytesPerFrame);
+  fade_.set_fade_ms(state_.lod_fade_ms, renderer_.meshes());
+  fade_.sync(renderer_.meshes(), controller_.meshes(), kUploadBytesPerFrame, dt);
   const render::FrameInputs inputs = frame_inputs(cam, height);
-  const render::FrameStats stats = renderer_.render(inputs, 0, width, height);
+  const render::FrameStats stats = fade_.render(renderer_, inputs, 0, width, height);
   info_.frame = frame_counters(stats);
   info_.nodes_moved = stats.nodes_moved;
   state_.camera = camera_keyframe();

@@ -62,6 +62,7 @@ class WindowViewer {
   panel::PanelState state_;
   std::optional<ShaderFileWatch> watch_;
   view::ViewController controller_;
+  render::LodCrossFade fade_;
   view::OrbitCamera camera_;
   std::optional<view::AdvectionPlayback> playback_;
   // The tracks windowed at tracks_step_ plus tracks_seconds_ (windowed again only when

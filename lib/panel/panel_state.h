@@ -29,6 +29,8 @@ struct PanelState {
   float lod_threshold_sr = 0.01f;
   int max_nodes = 4096;
   bool lod_changed = false;
+  // Cross-fade between levels of detail, ms (0: off; render/lod_fade.h); read each frame.
+  float lod_fade_ms = 300.0f;
   float exaggeration = 10.0f;
   bool exaggeration_changed = false;
   bool boxes = false;

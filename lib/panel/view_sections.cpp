@@ -64,6 +64,8 @@ void view_section(PanelState& state, const PanelInfo& info) {
     state.lod_changed = true;
   }
   note_item("max nodes");
+  ImGui::SliderFloat("LOD fade (ms)", &state.lod_fade_ms, 0.0f, 2000.0f, "%.0f");
+  note_item("lod fade");
   if (ImGui::SliderFloat("vertical exaggeration", &state.exaggeration, 1.0f, 1000.0f, "%.1f",
                          ImGuiSliderFlags_Logarithmic)) {
     state.exaggeration_changed = true;

@@ -50,7 +50,11 @@ CompleteFrame render_complete_frame(view::ViewController& controller, VolumeRend
       inputs.outline_boxes.push_back(controller.cut().box(n.node));
     }
   }
-  renderer.meshes().sync(controller.meshes(), SIZE_MAX);
+  if (options.fade) {
+    options.fade->sync(renderer.meshes(), controller.meshes(), SIZE_MAX, options.fade_seconds);
+  } else {
+    renderer.meshes().sync(controller.meshes(), SIZE_MAX);
+  }
   // Slices without a range span the values shown: now that every node has arrived.
   if (!controller.scene().slices.empty()) {
     inputs.slice_styles = slice_styles(
@@ -59,7 +63,13 @@ CompleteFrame render_complete_frame(view::ViewController& controller, VolumeRend
   }
   frame.slice_styles = inputs.slice_styles;
   const auto t0 = clock::now();
-  frame.stats = renderer.render(inputs, target.framebuffer(), target.width(), target.height());
+  if (options.fade) {
+    frame.stats = options.fade->render(renderer, inputs, target.framebuffer(), target.width(),
+                                       target.height());
+    frame.fade_weight = options.fade->last_weight();
+  } else {
+    frame.stats = renderer.render(inputs, target.framebuffer(), target.width(), target.height());
+  }
   frame.image = RgbaImage{target.width(), target.height(),
                           VolumeRenderer::read_pixels(target.framebuffer(), target.width(),
                                                       target.height())};

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstddef>
 
+#include "render/lod_fade.h"
 #include "render/offscreen_target.h"
 #include "render/png_file.h"
 #include "render/volume_renderer.h"
@@ -20,6 +21,10 @@ struct CompleteFrameOptions {
   std::chrono::milliseconds timeout{std::chrono::minutes(10)};
   // Outline the boxes of the cut that was complete (replacing inputs.outline_boxes).
   bool outline_cut = false;
+  // Level-of-detail cross-fade (render/lod_fade.h); null: the new cut is drawn at once.
+  // `fade_seconds` pass before the frame (a camera path: 1 / fps).
+  LodCrossFade* fade = nullptr;
+  double fade_seconds = 0;
 };
 
 struct CompleteFrame {
@@ -30,6 +35,7 @@ struct CompleteFrame {
   std::size_t cut_nodes = 0;
   std::size_t nodes_with_mesh = 0;
   std::vector<SliceStyle> slice_styles;  // the slices' colour maps and ranges drawn
+  double fade_weight = 1;     // the incoming set's weight in a cross-fade (1: none)
 };
 
 // \error kCancelled when the cut is not complete within the timeout; kIo when the

@@ -2,6 +2,7 @@
 #include "render/gpu_meshes.h"
 
 #include <algorithm>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -37,10 +38,9 @@ std::size_t GpuMeshes::sync(const view::ProgressiveMeshes& meshes, std::size_t m
   for (auto it = meshes_.begin(); it != meshes_.end();) {
     const auto entry = meshes.entries().find(it->first);
     if (entry == meshes.entries().end() || !entry->second.mesh) {
-      bytes_ -= gpu_bytes(it->second);
-      triangles_ -= static_cast<std::size_t>(it->second.index_count) / 3;
-      slice_triangles_ -= static_cast<std::size_t>(it->second.slice_index_count) / 3;
-      it = meshes_.erase(it);
+      const auto next = std::next(it);
+      drop(it);
+      it = next;
     } else {
       ++it;
     }
@@ -114,14 +114,72 @@ void GpuMeshes::upload(NodeId node, std::shared_ptr<const view::NodeGeometry> ge
     mesh.slice_index_count = static_cast<GLsizei>(g.slice_indices.size());
   }
   mesh.source = std::move(geometry);
-  auto& slot = meshes_[node];
-  bytes_ -= gpu_bytes(slot);
-  triangles_ -= static_cast<std::size_t>(slot.index_count) / 3;
-  slice_triangles_ -= static_cast<std::size_t>(slot.slice_index_count) / 3;
-  bytes_ += gpu_bytes(mesh);
-  triangles_ += static_cast<std::size_t>(mesh.index_count) / 3;
-  slice_triangles_ += static_cast<std::size_t>(mesh.slice_index_count) / 3;
-  slot = std::move(mesh);
+  if (const auto it = meshes_.find(node); it != meshes_.end()) drop(it);
+  count(mesh, +1);
+  meshes_.emplace(node, std::move(mesh));
+  if (retaining_) fresh_.insert(node);
+  ++shown_version_;
+}
+
+void GpuMeshes::clear() {
+  end_retaining();
+  meshes_.clear();
+  bytes_ = triangles_ = slice_triangles_ = deferred_ = 0;
+  synced_version_ = ~0ull;
+  ++shown_version_;
+}
+
+void GpuMeshes::count(const GpuMesh& mesh, int sign) {
+  const auto apply = [sign](std::size_t& total, std::size_t n) {
+    total = sign > 0 ? total + n : total - n;
+  };
+  apply(bytes_, gpu_bytes(mesh));
+  apply(triangles_, static_cast<std::size_t>(mesh.index_count) / 3);
+  apply(slice_triangles_, static_cast<std::size_t>(mesh.slice_index_count) / 3);
+}
+
+void GpuMeshes::drop(std::unordered_map<NodeId, GpuMesh>::iterator it) {
+  count(it->second, -1);
+  ++shown_version_;
+  const NodeId node = it->first;
+  if (retaining_ && !fresh_.contains(node) && !retired_.contains(node)) {
+    retired_.insert(meshes_.extract(it));
+    return;
+  }
+  fresh_.erase(node);
+  meshes_.erase(it);
+}
+
+void GpuMeshes::begin_retaining() {
+  end_retaining();
+  retaining_ = true;
+}
+
+void GpuMeshes::end_retaining() {
+  retired_.clear();
+  fresh_.clear();
+  retaining_ = false;
+}
+
+void GpuMeshes::exchange_retained() {
+  // meshes() - fresh + retired <-> meshes(); the fresh meshes become the ones set aside,
+  // and the retired nodes the ones that are new relative to them.
+  std::unordered_map<NodeId, GpuMesh> aside;
+  for (const NodeId node : fresh_) {
+    auto handle = meshes_.extract(node);
+    count(handle.mapped(), -1);
+    aside.insert(std::move(handle));
+  }
+  std::unordered_set<NodeId> fresh;
+  while (!retired_.empty()) {
+    auto handle = retired_.extract(retired_.begin());
+    fresh.insert(handle.key());
+    count(handle.mapped(), +1);
+    meshes_.insert(std::move(handle));
+  }
+  retired_ = std::move(aside);
+  fresh_ = std::move(fresh);
+  ++shown_version_;
 }
 
 }  // namespace strielad::render

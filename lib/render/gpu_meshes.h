@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "render/gl_handles.h"
 #include "view/progressive_meshes.h"
@@ -36,7 +37,7 @@ class GpuMeshes {
   // frames; until a node's new mesh is uploaded its previous one stays drawn.
   // Returns the bytes uploaded.
   std::size_t sync(const view::ProgressiveMeshes& meshes, std::size_t max_upload_bytes);
-  void clear() { meshes_.clear(); }
+  void clear();
 
   const std::unordered_map<NodeId, GpuMesh>& meshes() const { return meshes_; }
   std::size_t bytes() const { return bytes_; }
@@ -44,9 +45,28 @@ class GpuMeshes {
   std::size_t slice_triangles() const { return slice_triangles_; }
   // Meshes whose upload was deferred by the byte budget in the last sync.
   std::size_t deferred() const { return deferred_; }
+  // Increases whenever a mesh is uploaded or freed (what is drawn changed).
+  std::uint64_t shown_version() const { return shown_version_; }
+
+  // The level-of-detail cross-fade (render/lod_fade.h) keeps the set shown before a
+  // change alive next to the new one, sharing the nodes that did not change. While
+  // retaining, a mesh that sync frees or replaces is set aside (the first one of each
+  // node: the mesh shown when retaining began) instead of being destroyed, and nodes
+  // uploaded since are remembered; exchange_retained() swaps between the two sets
+  // (twice: back), moving handles only, no GPU work.
+  void begin_retaining();
+  // Frees the meshes set aside; meshes() stays what it is.
+  void end_retaining();
+  bool retaining() const { return retaining_; }
+  // True when the retained set differs from meshes().
+  bool retained_differs() const { return !retired_.empty() || !fresh_.empty(); }
+  void exchange_retained();
 
  private:
   void upload(NodeId node, std::shared_ptr<const view::NodeGeometry> geometry);
+  // Frees (or sets aside, while retaining) the mesh of `node`.
+  void drop(std::unordered_map<NodeId, GpuMesh>::iterator it);
+  void count(const GpuMesh& mesh, int sign);
 
   std::unordered_map<NodeId, GpuMesh> meshes_;
   std::uint64_t synced_version_ = ~0ull;
@@ -54,6 +74,10 @@ class GpuMeshes {
   std::size_t triangles_ = 0;
   std::size_t slice_triangles_ = 0;
   std::size_t deferred_ = 0;
+  std::uint64_t shown_version_ = 0;
+  bool retaining_ = false;
+  std::unordered_map<NodeId, GpuMesh> retired_;  // shown when retaining began, since replaced
+  std::unordered_set<NodeId> fresh_;             // uploaded since retaining began
 };
 
 }  // namespace strielad::render

@@ -10,6 +10,7 @@ class OffscreenTarget {
  public:
   OffscreenTarget(int width, int height);
   GLuint framebuffer() const { return framebuffer_.get(); }
+  GLuint color_texture() const { return color_.get(); }
   int width() const { return width_; }
   int height() const { return height_; }
 

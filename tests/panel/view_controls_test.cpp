@@ -29,6 +29,17 @@ TEST(PanelViewControlsTest, MaxNodesSliderSetsLimit) {
   EXPECT_EQ(panel.state().max_nodes, 1);
 }
 
+TEST(PanelViewControlsTest, LodFadeSliderSetsTheFadeTime) {
+  const auto m = panel_manifest();
+  PanelDriver panel(m, panel_state(m));
+  EXPECT_EQ(panel.state().lod_fade_ms, 300.0f);
+  panel.slide("lod fade", 0.0f);
+  EXPECT_EQ(panel.state().lod_fade_ms, 0.0f);
+  panel.slide("lod fade", 1.0f);
+  EXPECT_GT(panel.state().lod_fade_ms, 1900.0f);
+  EXPECT_LE(panel.state().lod_fade_ms, 2000.0f);
+}
+
 TEST(PanelViewControlsTest, ExaggerationSliderSetsExaggeration) {
   const auto m = panel_manifest();
   PanelDriver panel(m, panel_state(m));
