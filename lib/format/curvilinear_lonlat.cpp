@@ -20,18 +20,39 @@ CurvilinearLonLat::CurvilinearLonLat(
   }
 }
 
-CurvilinearLonLat::Cell CurvilinearLonLat::cell(double i, double j) const {
-  const auto pick = [](double x, std::uint32_t n) {
+GridCell grid_cell(double i, double j, std::size_t nx, std::size_t ny) {
+  const auto pick = [](double x, std::size_t n) {
     const double last = double(n) - 2;  // the last cell's first index
     const double f = std::clamp(std::floor(x), 0.0, last);
     return std::pair{static_cast<std::size_t>(f), x - f};
   };
-  const auto [i0, s] = pick(i, c_->nx);
-  const auto [j0, t] = pick(j, c_->ny);
+  const auto [i0, s] = pick(i, nx);
+  const auto [j0, t] = pick(j, ny);
   return {i0, j0, s, t};
 }
 
-std::array<std::array<double, 2>, 4> CurvilinearLonLat::corners(const Cell& c) const {
+std::array<double, 2> bilinear(const CellCorners& p, double s, double t) {
+  const auto& [p00, p10, p01, p11] = p;
+  std::array<double, 2> out{};
+  for (int k = 0; k < 2; ++k) {
+    const double bottom = p00[k] + s * (p10[k] - p00[k]);
+    const double top = p01[k] + s * (p11[k] - p01[k]);
+    out[k] = bottom + t * (top - bottom);
+  }
+  return out;
+}
+
+std::array<double, 4> bilinear_jacobian(const CellCorners& p, double s, double t) {
+  const auto& [p00, p10, p01, p11] = p;
+  std::array<double, 4> d{};
+  for (int k = 0; k < 2; ++k) {
+    d[2 * k] = (1 - t) * (p10[k] - p00[k]) + t * (p11[k] - p01[k]);
+    d[2 * k + 1] = (1 - s) * (p01[k] - p00[k]) + s * (p11[k] - p10[k]);
+  }
+  return d;
+}
+
+CellCorners CurvilinearLonLat::corners(const GridCell& c) const {
   const auto at = [&](std::size_t i, std::size_t j) {
     const std::size_t k = j * c_->nx + i;
     return std::array<double, 2>{c_->lon[k], c_->lat[k]};
@@ -40,26 +61,13 @@ std::array<std::array<double, 2>, 4> CurvilinearLonLat::corners(const Cell& c) c
 }
 
 std::array<double, 2> CurvilinearLonLat::at(double i, double j) const {
-  const Cell c = cell(i, j);
-  const auto [p00, p10, p01, p11] = corners(c);
-  std::array<double, 2> out{};
-  for (int k = 0; k < 2; ++k) {
-    const double bottom = p00[k] + c.s * (p10[k] - p00[k]);
-    const double top = p01[k] + c.s * (p11[k] - p01[k]);
-    out[k] = bottom + c.t * (top - bottom);
-  }
-  return out;
+  const GridCell c = grid_cell(i, j, c_->nx, c_->ny);
+  return bilinear(corners(c), c.s, c.t);
 }
 
 std::array<double, 4> CurvilinearLonLat::jacobian(double i, double j) const {
-  const Cell c = cell(i, j);
-  const auto [p00, p10, p01, p11] = corners(c);
-  std::array<double, 4> d{};
-  for (int k = 0; k < 2; ++k) {
-    d[2 * k] = (1 - c.t) * (p10[k] - p00[k]) + c.t * (p11[k] - p01[k]);      // d/di
-    d[2 * k + 1] = (1 - c.s) * (p01[k] - p00[k]) + c.s * (p11[k] - p10[k]);  // d/dj
-  }
-  return d;
+  const GridCell c = grid_cell(i, j, c_->nx, c_->ny);
+  return bilinear_jacobian(corners(c), c.s, c.t);
 }
 
 std::array<double, 2> CurvilinearLonLat::centre() const {

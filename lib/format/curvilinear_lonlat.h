@@ -14,6 +14,23 @@
 
 namespace strielad {
 
+// Where fractional index (i, j) lies among a grid's nx x ny columns: the cell (i0, j0)
+// (clamped to the grid's cells, so positions beyond it continue the edge cell; on a cell
+// edge, the cell above it) and the fractions (s, t) within it.
+struct GridCell {
+  std::size_t i0 = 0, j0 = 0;
+  double s = 0, t = 0;
+};
+GridCell grid_cell(double i, double j, std::size_t nx, std::size_t ny);
+
+// A cell's corners (i0, j0), (i0 + 1, j0), (i0, j0 + 1), (i0 + 1, j0 + 1), two
+// components each.
+using CellCorners = std::array<std::array<double, 2>, 4>;
+// The bilinear interpolation of the corners at fractions (s, t), and its derivatives
+// {d0/ds, d0/dt, d1/ds, d1/dt}.
+std::array<double, 2> bilinear(const CellCorners& p, double s, double t);
+std::array<double, 4> bilinear_jacobian(const CellCorners& p, double s, double t);
+
 class CurvilinearLonLat {
  public:
   // \error kInvalidArgument when the coordinates are not at least 2 x 2 or their arrays
@@ -33,13 +50,7 @@ class CurvilinearLonLat {
   int orientation() const;
 
  private:
-  struct Cell {
-    std::size_t i0, j0;
-    double s, t;  // fractions within the cell
-  };
-  Cell cell(double i, double j) const;
-  // The cell's corners (i0, j0), (i0 + 1, j0), (i0, j0 + 1), (i0 + 1, j0 + 1).
-  std::array<std::array<double, 2>, 4> corners(const Cell& c) const;
+  CellCorners corners(const GridCell& c) const;
 
   std::shared_ptr<const format::HorizontalCoordinates> c_;
 };

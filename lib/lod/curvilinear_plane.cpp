@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "format/curvilinear_lonlat.h"
 #include "lod/world_frame.h"
 
 namespace strielad::lod {
@@ -150,39 +151,18 @@ void CurvilinearPlane::build_buckets() {
   }
 }
 
-CurvilinearPlane::Cell CurvilinearPlane::cell(double i, double j) const {
-  const auto pick = [](double x, std::size_t n) {
-    const double f = std::clamp(std::floor(x), 0.0, double(n) - 2);
-    return std::pair{static_cast<std::size_t>(f), x - f};
-  };
-  const auto [i0, s] = pick(i, nx_);
-  const auto [j0, t] = pick(j, ny_);
-  return {i0, j0, s, t};
+CellCorners CurvilinearPlane::corners(std::size_t i0, std::size_t j0) const {
+  return {at(i0, j0), at(i0 + 1, j0), at(i0, j0 + 1), at(i0 + 1, j0 + 1)};
 }
 
 std::array<double, 2> CurvilinearPlane::position(double i, double j) const {
-  const Cell c = cell(i, j);
-  const auto &p00 = at(c.i0, c.j0), &p10 = at(c.i0 + 1, c.j0), &p01 = at(c.i0, c.j0 + 1),
-             &p11 = at(c.i0 + 1, c.j0 + 1);
-  std::array<double, 2> out{};
-  for (int k = 0; k < 2; ++k) {
-    const double bottom = p00[k] + c.s * (p10[k] - p00[k]);
-    const double top = p01[k] + c.s * (p11[k] - p01[k]);
-    out[k] = bottom + c.t * (top - bottom);
-  }
-  return out;
+  const GridCell c = grid_cell(i, j, nx_, ny_);
+  return bilinear(corners(c.i0, c.j0), c.s, c.t);
 }
 
 std::array<double, 4> CurvilinearPlane::jacobian(double i, double j) const {
-  const Cell c = cell(i, j);
-  const auto &p00 = at(c.i0, c.j0), &p10 = at(c.i0 + 1, c.j0), &p01 = at(c.i0, c.j0 + 1),
-             &p11 = at(c.i0 + 1, c.j0 + 1);
-  std::array<double, 4> d{};
-  for (int k = 0; k < 2; ++k) {
-    d[2 * k] = (1 - c.t) * (p10[k] - p00[k]) + c.t * (p11[k] - p01[k]);
-    d[2 * k + 1] = (1 - c.s) * (p01[k] - p00[k]) + c.s * (p11[k] - p10[k]);
-  }
-  return d;
+  const GridCell c = grid_cell(i, j, nx_, ny_);
+  return bilinear_jacobian(corners(c.i0, c.j0), c.s, c.t);
 }
 
 bool CurvilinearPlane::solve(std::size_t i0, std::size_t j0, double x, double y, double& s,
@@ -246,7 +226,7 @@ std::array<double, 2> CurvilinearPlane::index_of(double x, double y) const {
     const std::size_t i0 = boundary_cells_[k] % nx_, j0 = boundary_cells_[k] / nx_;
     double s = 0, t = 0;
     if (!solve(i0, j0, x, y, s, t)) continue;
-    const Cell used = cell(double(i0) + s, double(j0) + t);
+    const GridCell used = grid_cell(double(i0) + s, double(j0) + t, nx_, ny_);
     if (used.i0 == i0 && used.j0 == j0) return {double(i0) + s, double(j0) + t};
   }
   return {kNaN, kNaN};

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "format/curvilinear_lonlat.h"
 #include "format/geometry_file_format.h"
 #include "octree/octree_layout.h"
 
@@ -59,11 +60,7 @@ class CurvilinearPlane {
   std::array<double, 4> box_of(const IndexBox& box) const;
 
  private:
-  struct Cell {
-    std::size_t i0, j0;
-    double s, t;
-  };
-  Cell cell(double i, double j) const;
+  CellCorners corners(std::size_t i0, std::size_t j0) const;
   // Solves cell (i0, j0)'s bilinear map for (x, y) from the cell's centre; the fractions
   // when it converges.
   bool solve(std::size_t i0, std::size_t j0, double x, double y, double& s, double& t) const;
