@@ -83,11 +83,12 @@ int run_window(const ViewerArgs& args) {
   GlfwLibrary glfw;
   const WindowHandle window = open_gl_window(width0, height0);
   ViewerSession session = open_session(args);
-  apply_look(args, session);  // the window's panel shows no colour bar
+  const auto legend = apply_look(args, session);
   render::RenderSettings settings;
   settings.max_fragment_bytes = static_cast<std::size_t>(args.max_fragment_mib * 1048576.0);
   render::VolumeRenderer renderer(settings);
   WindowViewer viewer(window.get(), args, session, renderer);
+  if (legend) viewer.show_colour_bar(*legend);  // in the panel's legend
   start_imgui(window.get());
   while (!glfwWindowShouldClose(window.get())) viewer.frame();
   stop_imgui();

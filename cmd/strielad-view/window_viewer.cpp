@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "panel/panel.h"
 #include "render/complete_frame.h"
+#include "render/slice_drawing.h"
 #include "render/surface_scalar_look.h"
 #include "render/volume_shaders.h"
 #include "render/png_file.h"
@@ -282,6 +283,15 @@ void WindowViewer::apply_shader_edits() {
     state_.shader_compile = false;
     compile_shader(state_.shader_text);
   }
+}
+
+void WindowViewer::show_colour_bar(const render::ColourBarLegend& legend) {
+  panel::ScalarLegend shown{legend.title, legend.lo, legend.hi, {}};
+  constexpr int kColours = 33;
+  for (int k = 0; k < kColours; ++k) {
+    shown.colours.push_back(render::colormap_color(legend.colormap, double(k) / (kColours - 1)));
+  }
+  info_.scalar_legend = std::move(shown);
 }
 
 render::FrameInputs WindowViewer::frame_inputs(const lod::Camera& cam, int height) {

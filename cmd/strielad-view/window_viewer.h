@@ -13,6 +13,7 @@
 #include <string>
 
 #include "lod/camera_path.h"
+#include "render/colour_bar_legend.h"
 #include "render/volume_renderer.h"
 #include "shader_file_watch.h"
 #include "view/advection_playback.h"
@@ -36,6 +37,8 @@ class WindowViewer {
   // (an error is shown in the panel, the built-in shader keeps running).
   WindowViewer(GLFWwindow* window, const ViewerArgs& args, ViewerSession& session,
                render::VolumeRenderer& renderer);
+  // The scalar look's colour map, shown in the panel's legend section.
+  void show_colour_bar(const render::ColourBarLegend& legend);
 
   // One frame, from the events to the swap; asks the window to close after --frames.
   void frame();

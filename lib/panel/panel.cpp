@@ -35,7 +35,7 @@ void draw_panel(PanelState& state, const PanelInfo& info, const format::Manifest
     time_section(state, info, manifest);
   }
   if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) view_section(state, info);
-  if (ImGui::CollapsingHeader("Legend", ImGuiTreeNodeFlags_DefaultOpen)) legend_section(state);
+  if (ImGui::CollapsingHeader("Legend", ImGuiTreeNodeFlags_DefaultOpen)) legend_section(state, info);
   bool edited = false;
   if (!state.scene_error.empty()) error_text("not applied: " + state.scene_error);
   if (ImGui::CollapsingHeader("Sub-volumes", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -11,7 +11,7 @@ namespace strielad::panel {
 
 void time_section(PanelState& state, const PanelInfo& info, const format::Manifest& manifest);
 void view_section(PanelState& state, const PanelInfo& info);
-void legend_section(const PanelState& state);
+void legend_section(const PanelState& state, const PanelInfo& info);
 // Sub-volumes: name, limits, axis box, geographic box (on the Earth only), add, remove.
 bool subvolume_section(PanelState& state, const PanelInfo& info,
                        const format::Manifest& manifest);

@@ -4,10 +4,12 @@
 // of strielad-view applies what changed and clears the flag.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "lod/camera_path.h"
 #include "scene/scene.h"
@@ -79,8 +81,17 @@ struct FrameCounters {
   double geometry_ms = 0, resolve_ms = 0;
 };
 
+// The colour map of the "scalar on surface" look, for the legend: the title, the range
+// and the map's colours at evenly spaced values from lo to hi (both ends included).
+struct ScalarLegend {
+  std::string title;
+  double lo = 0, hi = 1;
+  std::vector<std::array<float, 3>> colours;
+};
+
 struct PanelInfo {
   std::string dataset;
+  std::optional<ScalarLegend> scalar_legend;  // the scalar look's colour bar, if shown
   double fps = 0, frame_ms = 0, cut_update_ms = 0;
   std::size_t cut_nodes = 0, pending = 0, stale_shown = 0;
   std::uint64_t results = 0, failed = 0, bytes_received = 0;

@@ -114,7 +114,32 @@ void view_section(PanelState& state, const PanelInfo& info) {
 
 // Each sub-volume's name in its palette colour (view/subvolume_palette.h): the colours
 // the built-in shader draws, and user shaders through subvolume_color(id).
-void legend_section(const PanelState& state) {
+void legend_section(const PanelState& state, const PanelInfo& info) {
+  if (const auto& legend = info.scalar_legend; legend && legend->colours.size() >= 2) {
+    // The colour bar: one rectangle per pair of neighbouring colours, shaded between them.
+    ImGui::TextUnformatted(legend->title.c_str());
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const float width = std::max(ImGui::GetContentRegionAvail().x - 8.0f, 40.0f), height = 14.0f;
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const std::size_t n = legend->colours.size();
+    const auto colour = [&](std::size_t k) {
+      const auto& c = legend->colours[k];
+      return ImGui::GetColorU32(ImVec4(c[0], c[1], c[2], 1.0f));
+    };
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+      const float x0 = origin.x + width * float(k) / float(n - 1);
+      const float x1 = origin.x + width * float(k + 1) / float(n - 1);
+      draw->AddRectFilledMultiColor(ImVec2(x0, origin.y), ImVec2(x1, origin.y + height),
+                                    colour(k), colour(k + 1), colour(k + 1), colour(k));
+    }
+    ImGui::Dummy(ImVec2(width, height));
+    note_item("scalar legend");
+    ImGui::Text("%.4g", legend->lo);
+    ImGui::SameLine(width * 0.5f - 10.0f);
+    ImGui::Text("%.4g", 0.5 * (legend->lo + legend->hi));
+    ImGui::SameLine(std::max(width - 30.0f, 0.0f));
+    ImGui::Text("%.4g", legend->hi);
+  }
   for (const auto& entry : view::subvolume_legend(state.scene)) {
     const auto& c = entry.color;
     ImGui::PushID(static_cast<int>(entry.id));

@@ -144,6 +144,15 @@ TEST(PanelViewControlsTest, ShaderButtons) {
   EXPECT_EQ(panel.state().builtin_look, panel::PanelState::BuiltinLook::kClouds);
 }
 
+TEST(PanelViewControlsTest, TheScalarLooksColourBarIsInTheLegendOnlyWhenShown) {
+  const auto m = panel_manifest();
+  EXPECT_FALSE(PanelDriver(m, panel_state(m)).has("scalar legend"));
+  panel::PanelInfo info;
+  info.scalar_legend = panel::ScalarLegend{"wind speed (m s-1)", 0, 50, {{0, 0, 0}, {1, 1, 0}}};
+  PanelDriver panel(m, panel_state(m), info);
+  EXPECT_TRUE(panel.has("scalar legend"));
+}
+
 TEST(PanelViewControlsTest, LegendNamesEachSubVolume) {
   const auto m = panel_manifest();
   PanelDriver panel(m, panel_state(m));
