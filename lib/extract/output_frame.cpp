@@ -17,6 +17,7 @@
 #include "format/geometry_field.h"
 #include "geo/horizontal_orientation.h"
 #include "geo/standard_atmosphere.h"
+#include "geo/wgs84.h"
 #include "grid/units.h"
 #include "store/store.h"
 
@@ -26,9 +27,6 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kMeanRadius = 6371008.8;
-constexpr double kWgs84A = 6378137.0;
-constexpr double kWgs84F = 1.0 / 298.257223563;
-constexpr double kWgs84E2 = kWgs84F * (2.0 - kWgs84F);
 constexpr double kStandardGravity = 9.80665;
 
 std::string lower(std::string_view s) {
@@ -72,29 +70,9 @@ struct FramePoint {
   Vec3 p, d_lon, d_lat, d_h;
 };
 
-// The geocentric map's terms at one longitude and latitude (all but the height).
-struct EcefTerms {
-  double sl, cl, so, co;  // sin and cos of the latitude and of the reduced longitude
-  double w, n;            // sqrt(1 - e2 sin^2 lat); the prime vertical radius a / w
-};
-
-EcefTerms ecef_terms(double lon, double lat) {
-  // The longitude reduced exactly to [-180, 180] first, so that a meridian and the same
-  // meridian a turn on (a periodic grid's seam) give the same bits.
-  const double lr = std::remainder(lon, 360.0);
-  EcefTerms e;
-  e.sl = std::sin(lat * kDeg);
-  e.cl = std::cos(lat * kDeg);
-  e.so = std::sin(lr * kDeg);
-  e.co = std::cos(lr * kDeg);
-  e.w = std::sqrt(1.0 - kWgs84E2 * e.sl * e.sl);
-  e.n = kWgs84A / e.w;
-  return e;
-}
-
-Vec3 ecef_position(const EcefTerms& e, double h) {
-  return {(e.n + h) * e.cl * e.co, (e.n + h) * e.cl * e.so, (e.n * (1.0 - kWgs84E2) + h) * e.sl};
-}
+using geo::ecef_position;
+using geo::ecef_terms;
+using geo::EcefTerms;
 
 // Metres per degree of longitude and of latitude on the local metric plane.
 std::array<double, 2> metric_scales(double lat0) {
@@ -130,9 +108,9 @@ FramePoint frame_point(OutputFrame frame, double lon, double lat, double h, doub
     return f;
   }
   const EcefTerms e = ecef_terms(lon, lat);
-  const double sl = e.sl, cl = e.cl, so = e.so, co = e.co, n = e.n, w = e.w;
+  const double sl = e.sl, cl = e.cl, so = e.so, co = e.co, n = e.n;
   // Meridional radius of curvature: dN/dlat folded in.
-  const double m_radius = kWgs84A * (1.0 - kWgs84E2) / (w * w * w);
+  const double m_radius = e.meridional_radius();
   f.p = ecef_position(e, h);
   f.d_lon = {-(n + h) * cl * so * kDeg, (n + h) * cl * co * kDeg, 0};
   f.d_lat = {-(m_radius + h) * sl * co * kDeg, -(m_radius + h) * sl * so * kDeg,

@@ -10,23 +10,15 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 }  // namespace
 
 double prime_vertical_radius_km(double lat_deg) {
-  const double s = std::sin(lat_deg * kDeg);
-  return kWgs84SemiMajorKm / std::sqrt(1.0 - kWgs84E2 * s * s);
+  return geo::ecef_terms(0.0, lat_deg, kWgs84SemiMajorKm).n;
 }
 
 double meridional_radius_km(double lat_deg) {
-  const double s = std::sin(lat_deg * kDeg);
-  const double w = std::sqrt(1.0 - kWgs84E2 * s * s);
-  return kWgs84SemiMajorKm * (1.0 - kWgs84E2) / (w * w * w);
+  return geo::ecef_terms(0.0, lat_deg, kWgs84SemiMajorKm).meridional_radius();
 }
 
 Vec3 geodetic_to_ecef_km(double lon_deg, double lat_deg, double h) {
-  // The longitude reduced exactly first, so that a periodic grid's seam gives the same bits.
-  const double lon = std::remainder(lon_deg, 360.0) * kDeg, lat = lat_deg * kDeg;
-  const double sl = std::sin(lat), cl = std::cos(lat);
-  const double n = prime_vertical_radius_km(lat_deg);
-  return {(n + h) * cl * std::cos(lon), (n + h) * cl * std::sin(lon),
-          (n * (1.0 - kWgs84E2) + h) * sl};
+  return geo::ecef_position(geo::ecef_terms(lon_deg, lat_deg, kWgs84SemiMajorKm), h);
 }
 
 Geodetic ecef_km_to_geodetic(const Vec3& p) {

@@ -1,18 +1,19 @@
 // SPDX-License-Identifier: Apache-2.0
 // The WGS84 ellipsoid in kilometres, for the viewer's globe frame (lod/world_frame.h):
 // earth-centred, earth-fixed (ECEF) positions of geodetic longitude, latitude and height,
-// the inverse, and the local east/north/up directions. The same closed form as the ECEF
-// output frame of extraction (extract/output_frame.cpp), without PROJ.
+// the inverse, and the local east/north/up directions. The closed form of geo/wgs84.h, the
+// ECEF output frame's of extraction, without PROJ.
 #pragma once
 
+#include "geo/wgs84.h"
 #include "lod/geometry.h"
 
 namespace strielad::lod {
 
+// geo::kWgs84SemiMajorM in km, written out: 6378137 * 1e-3 is not exactly 6378.137.
 inline constexpr double kWgs84SemiMajorKm = 6378.137;
-inline constexpr double kWgs84Flattening = 1.0 / 298.257223563;
-inline constexpr double kWgs84E2 = kWgs84Flattening * (2.0 - kWgs84Flattening);
-inline constexpr double kWgs84SemiMinorKm = kWgs84SemiMajorKm * (1.0 - kWgs84Flattening);
+inline constexpr double kWgs84E2 = geo::kWgs84E2;
+inline constexpr double kWgs84SemiMinorKm = kWgs84SemiMajorKm * (1.0 - geo::kWgs84Flattening);
 
 // Geodetic longitude and latitude (degrees), height above the ellipsoid (km) to ECEF km:
 // x towards (0 N, 0 E), y towards (0 N, 90 E), z towards the north pole.
