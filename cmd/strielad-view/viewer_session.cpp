@@ -269,8 +269,7 @@ ViewerSession open_session(const ViewerArgs& args) {
   }
   if (!args.terrain_file.empty()) {
     session.terrain = open_terrain(args, frame);
-  } else if (local_store && manifest.geometry && manifest.geometry->surface && frame.on_earth() &&
-             !frame.globe()) {
+  } else if (local_store && manifest.geometry && manifest.geometry->surface && frame.on_earth()) {
     // The model's own surface as the default terrain.
     auto dem = std::make_shared<const view::ModelSurfaceDem>(
         manifest, frame, local_store->horizontal_coordinates(), session.dataset_name);
