@@ -147,9 +147,11 @@ PY
   else
     fail "globe"; cat "$work/globe.err"
   fi
-  # Flight tracks on the globe: a leg along 23.4 N from 30 W (11 UTC) to 30 E (13 UTC),
-  # its last hour drawn at 12 UTC: from 30 W to the home view's centre (the sub-solar
-  # point, 0.5 E), so the track colour lies left of the centre, on its row.
+  # Flight tracks on the globe: a leg from 30 W (11 UTC) to 30 E (13 UTC), both at
+  # 23.4 N, its last hour drawn at 12 UTC: from 30 W along the great circle, which bows
+  # north to 26.6 N at 0 E, where the aircraft is at 12 UTC. The home view looks down on
+  # the sub-solar point (0.5 E, 23.4 N): the track lies left of the centre, on the rows
+  # just above it. Where clouds lie in front of it, the colour is veiled.
   printf 'id,time,lon,lat,altitude\nG1,2024-06-21T11:00:00Z,-30,23.4,11000\nG1,2024-06-21T13:00:00Z,30,23.4,11000\n' \
     >"$work/globe-tracks.csv"
   if "$view" "$work/global-store" --offscreen --size 160x90 --threads 2 --tracks "$work/globe-tracks.csv" \
@@ -160,17 +162,17 @@ PY
 import json, sys
 from png_rgba import rgba_rows
 d = json.loads(open(sys.argv[1]).readline())
-assert d["tracks_shown"] == 1 and d["track_segments"] >= 60, d
+assert d["tracks_shown"] == 1 and d["track_segments"] >= 50, d  # 27.5 degrees of arc
 track = lambda p: p[0] > 150 and 80 < p[1] < 170 and p[2] < 60
 def track_pixels(path):
     w, h, rows = rgba_rows(path)
     return w, h, [(x, y) for y in range(h) for x in range(w) if track(rows[y][4 * x:4 * x + 3])]
 w, h, on = track_pixels(sys.argv[2])
-assert len(on) >= 10, len(on)
+assert len(on) >= 6, len(on)
 assert not track_pixels(sys.argv[3])[2], "track colour without tracks"
 xs, ys = [x for x, _ in on], [y for _, y in on]
 assert max(xs) <= w // 2 + 2 and min(xs) < w // 2 - 10, (min(xs), max(xs))
-assert all(abs(y - h // 2) <= 4 for y in ys), (min(ys), max(ys))
+assert all(h // 2 - 6 <= y <= h // 2 for y in ys), (min(ys), max(ys))
 PY
   else
     fail "--tracks on the globe"; cat "$work/globe-tracks.err"
