@@ -25,6 +25,7 @@
 #include "view/simulation_time.h"
 #include "view/sun_direction.h"
 #include "view/terrain_tiles.h"
+#include "view/track_window.h"
 #include "view/view_controller.h"
 #include "view/view_link.h"
 
@@ -280,6 +281,50 @@ TEST_F(GlobePixelsTest, AlphaCountsTrueKilometres) {
   const auto p = image.at(kSize / 2, kSize / 2);
   EXPECT_NEAR(p[1], 0.25 * 255, 10) << "green " << int(p[1]);
   EXPECT_NEAR(p[2], 0.1875 * 255, 10) << "blue " << int(p[2]);
+}
+
+// A flight along the equator from 30 W to 30 E, 11 km up, seen from over 0 E: its line
+// runs through the picture's centre row where the track window places it, and the
+// aircraft's point is at its position at the time shown.
+TEST_F(GlobePixelsTest, FlightTracksLieWhereTheyArePlaced) {
+  Scene none;
+  SubVolume nothing;
+  nothing.id = 1;
+  nothing.name = "none";
+  nothing.limits.push_back(Limit{.var = "clw", .min = 1.0, .max = std::nullopt});
+  none.subvolumes.push_back(nothing);
+  controller_->set_scene(none);
+  const lod::WorldFrame& frame = controller_->frame();
+  geo::FlightTracks tracks;
+  geo::FlightTrack t;
+  t.id = "EQ";
+  t.seconds = {0, 7200};
+  t.lon = {-30, 30};
+  t.lat = {0, 0};
+  t.altitude_m = {11000, 11000};
+  tracks.tracks.push_back(t);
+  // At 5400 s the aircraft is at 15 E; the last 90 minutes from 30 W are drawn.
+  auto lines = std::make_shared<view::TrackLines>(view::window_tracks(tracks, 5400, 5400, frame));
+  ASSERT_EQ(lines->head_count(), 1u);
+  view::OrbitCamera orbit(frame.domain());
+  orbit.set_globe(0.0, 0.0);
+  const lod::Camera cam = orbit.camera(1.0);
+  auto inputs = render::frame_inputs(*controller_, cam);
+  inputs.tracks = lines;
+  const auto image = render::render_complete_frame(*controller_, *renderer_, *target_, inputs).image;
+  save(image, "globe_track.png");
+  const auto is_track = [&](std::pair<int, int> px) {
+    const auto p = image.at(px.first, px.second);
+    return p[0] > 150 && p[1] > 80 && p[1] < 170 && p[2] < 60;
+  };
+  const double up = 11.0 * kExaggeration;
+  EXPECT_TRUE(is_track(project(cam, frame.place_geographic(15.0, 0.0, up)))) << "the aircraft";
+  for (const double lon : {-25.0, -10.0, 0.0, 10.0}) {
+    EXPECT_TRUE(is_track(project(cam, frame.place_geographic(lon, 0.0, up)))) << lon << " E";
+    EXPECT_FALSE(is_track(project(cam, frame.place_geographic(lon, 6.0, up)))) << lon << " E 6 N";
+  }
+  // Not drawn yet: east of the aircraft.
+  EXPECT_FALSE(is_track(project(cam, frame.place_geographic(25.0, 0.0, up))));
 }
 
 }  // namespace
