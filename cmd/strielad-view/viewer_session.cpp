@@ -100,16 +100,6 @@ lod::FrameShape frame_shape(const std::string& name) {
   return lod::FrameShape::kAuto;
 }
 
-// Flight tracks are placed on the tangent plane only, for now.
-void check_plane_for(const char* option, const std::string& file, const lod::WorldFrame& frame) {
-  if (!frame.globe()) return;
-  throw make_error(ErrorCode::kUnsupported,
-                   "{} {}: flight tracks are drawn on the tangent plane only, and "
-                   "this domain is shown on the globe (wider than {:g} degrees): add --shape "
-                   "plane",
-                   option, file, lod::kGlobeMinExtentDeg);
-}
-
 // How the first frame is lit, for the log.
 std::string sun_choice(const ViewerArgs& args, const ViewerSession& session) {
   constexpr double kDeg = std::numbers::pi / 180.0;
@@ -275,13 +265,11 @@ ViewerSession open_session(const ViewerArgs& args) {
                           .sun = sun_choice(args, session)});
   open_advection(args, session);
   if (!args.tracks_file.empty()) {
-    check_plane_for("--tracks", args.tracks_file, frame);
     session.tracks = open_tracks(args, manifest, frame);
   }
   if (!args.terrain_file.empty()) {
     session.terrain = open_terrain(args, frame);
-  } else if (local_store && manifest.geometry && manifest.geometry->surface && frame.on_earth() &&
-             !frame.globe()) {
+  } else if (local_store && manifest.geometry && manifest.geometry->surface && frame.on_earth()) {
     // The model's own surface as the default terrain.
     auto dem = std::make_shared<const view::ModelSurfaceDem>(
         manifest, frame, local_store->horizontal_coordinates(), session.dataset_name);

@@ -429,6 +429,7 @@ std::uint64_t VolumeRenderer::draw_geometry_pass(const FrameInputs& inputs,
   set_mat4(g, "u_view_projection", frame.view_projection);
   set_mat4(g, "u_view", frame.view_matrix);
   set_float(g, "u_vertical_exaggeration", inputs.vertical_exaggeration);
+  set_float(g, "u_globe_exaggeration", inputs.globe_exaggeration);
   set_vec3(g, "u_eye", inputs.camera.eye);
   set_vec3(g, "u_sun", normalize(inputs.sun_direction));
   set_float(g, "u_time", inputs.time_seconds);
@@ -499,6 +500,7 @@ void VolumeRenderer::resolve_fragment_lists(const FrameInputs& inputs, const Fra
   set_float(r, "u_near", inputs.camera.near_km);
   set_float(r, "u_far", inputs.camera.far_km);
   set_float(r, "u_vertical_exaggeration", inputs.vertical_exaggeration);
+  set_float(r, "u_globe_exaggeration", inputs.globe_exaggeration);
   set_float(r, "u_seam_relative", settings_.seam_relative);
   set_float(r, "u_depth_limit", depth_limit);
   set_float(r, "u_time", inputs.time_seconds);

@@ -39,9 +39,31 @@ std::string user_prelude(const std::vector<std::string>& attribute_names) {
   }
   s += R"(
 uniform float u_vertical_exaggeration;
-// Height above the vertical axis' zero in metres of a world position (without the
-// vertical exaggeration; standard-atmosphere height on pressure axes).
-float height_m(vec3 position) { return position.z / u_vertical_exaggeration * 1000.0; }
+// > 0 on the globe: world positions are WGS84 ECEF km whose heights carry this
+// exaggeration (the meshes' own; u_vertical_exaggeration is then 1).
+uniform float u_globe_exaggeration;
+const float WGS84_A = 6378.137;          // km
+const float WGS84_B = 6356.752314245;    // km
+const float WGS84_E2 = 6.69437999014e-3;
+const float WGS84_EP2 = 6.73949674228e-3;  // second eccentricity squared
+// The height above the WGS84 ellipsoid (km, as placed: exaggerated) of an ECEF position:
+// Bowring's closed form for the latitude, then h = r cos(lat) + z sin(lat) - a w, which
+// holds at every latitude (poles included) without dividing by a small number.
+float globe_height_km(vec3 p) {
+  float r = length(p.xy);
+  float t = atan(p.z * WGS84_A, r * WGS84_B);
+  float st = sin(t), ct = cos(t);
+  float lat = atan(p.z + WGS84_EP2 * WGS84_B * st * st * st, r - WGS84_E2 * WGS84_A * ct * ct * ct);
+  float s = sin(lat);
+  return r * cos(lat) + p.z * s - WGS84_A * sqrt(1.0 - WGS84_E2 * s * s);
+}
+// Height in metres of a world position, without the vertical exaggeration: above the
+// vertical axis' zero on the plane (standard-atmosphere height on pressure axes), above
+// the WGS84 ellipsoid on the globe.
+float height_m(vec3 position) {
+  if (u_globe_exaggeration > 0.0) return globe_height_km(position) / u_globe_exaggeration * 1000.0;
+  return position.z / u_vertical_exaggeration * 1000.0;
+}
 // Attribute values are NaN where the data has no value.
 bool missing(float value) { return isnan(value) || isinf(value); }
 // The palette colour of sub-volume `id` (view/subvolume_palette.h): the n-th sub-volume
@@ -232,11 +254,39 @@ out vec4 o_color;
 )";
 
 // The resolve shader's main() begins: the background where the pixel has no list, else
-// the scale from eye depth to true distance along the pixel's ray.
+// the pixel's ray, from which true_km() measures true distances along it.
 constexpr const char* kResolveRayScale = R"(
 float linear_depth(float d) {
   float z = d * 2.0 - 1.0;
   return 2.0 * u_near * u_far / (u_far + u_near - z * (u_far - u_near));
+}
+
+// The pixel's ray (set at the start of main()): its unit direction in the world, world km
+// per unit of eye depth, the eye, and on the plane true km per unit of eye depth.
+vec3 ray_world_;
+float km_per_depth_;
+vec3 eye_world_;
+float to_true_km_;
+
+// True (unexaggerated) kilometres of the ray between eye depths d0 and d1. On the plane
+// the vertical part of the ray is divided by the exaggeration. On the globe, at the
+// middle of each quarter of the segment: the part along the ellipsoid normal divided by
+// the exaggeration, the part across it scaled from the exaggerated height's sphere to
+// the true height's ((R + h) / (R + h E)).
+float true_km(float d0, float d1) {
+  float depth = max(d1 - d0, 0.0);
+  if (u_globe_exaggeration <= 0.0) return depth * to_true_km_;
+  float km = 0.0;
+  for (int q = 0; q < 4; ++q) {
+    vec3 p = eye_world_ + ray_world_ * ((d0 + (float(q) + 0.5) * 0.25 * depth) * km_per_depth_);
+    vec3 up = normalize(vec3(p.xy, p.z / (1.0 - WGS84_E2)));
+    float h = globe_height_km(p);
+    float ground = max(length(p) - h, 1.0);
+    float radial = dot(ray_world_, up);
+    vec3 across = (ray_world_ - radial * up) * ((ground + h / u_globe_exaggeration) / max(ground + h, 1.0));
+    km += length(across + up * (radial / u_globe_exaggeration));
+  }
+  return km * 0.25 * depth * km_per_depth_;
 }
 
 void main() {
@@ -254,8 +304,10 @@ void main() {
   vec4 eye = u_inverse_projection * vec4(ndc, 1.0, 1.0);
   vec3 ray_eye = normalize(eye.xyz / eye.w);
   vec3 ray_world = mat3(u_inverse_view) * ray_eye;
-  float to_true_km = length(vec3(ray_world.xy, ray_world.z / u_vertical_exaggeration)) /
-                     max(-ray_eye.z, 1e-6);
+  ray_world_ = ray_world;
+  km_per_depth_ = 1.0 / max(-ray_eye.z, 1e-6);
+  eye_world_ = (u_inverse_view * vec4(0.0, 0.0, 0.0, 1.0)).xyz;
+  to_true_km_ = length(vec3(ray_world.xy, ray_world.z / u_vertical_exaggeration)) * km_per_depth_;
 )";
 
 // main() goes on: the walk along the sorted list that turns fragments into segments.
@@ -348,7 +400,7 @@ constexpr const char* kResolveCompositing = R"(  // What is still open ends behi
   for (int s = 0; s < 32 && near_slots != 0u; ++s) {  // (uniform unless the eye is inside)
     if ((near_slots & (1u << uint(s))) == 0u) continue;
     vec4 c = unpackUnorm4x8(near_color[s]);
-    float o = alpha(u_slot_ids[s], max(near_end[s] - u_near, 0.0) * to_true_km);
+    float o = alpha(u_slot_ids[s], true_km(u_near, near_end[s]));
     o = isnan(o) ? 1.0 : clamp(o * c.a * MAX_OPACITY_SCALE, 0.0, 1.0);
     float w = (1.0 - a) * o;
     rgb += w * c.rgb;
@@ -357,7 +409,7 @@ constexpr const char* kResolveCompositing = R"(  // What is still open ends behi
   for (int k = 0; k < K; ++k) {
     if (k >= segments) continue;
     vec4 c = unpackUnorm4x8(seg_color[k]);
-    float o = alpha(u_slot_ids[seg_slot[k]], max(seg_end[k] - seg_start[k], 0.0) * to_true_km);
+    float o = alpha(u_slot_ids[seg_slot[k]], true_km(seg_start[k], seg_end[k]));
     o = isnan(o) ? 1.0 : clamp(o * c.a * MAX_OPACITY_SCALE, 0.0, 1.0);
     float w = (1.0 - a) * o;
     rgb += w * c.rgb;

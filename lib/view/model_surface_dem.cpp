@@ -46,8 +46,9 @@ ModelSurfaceDem::ModelSurfaceDem(const format::Manifest& manifest, const lod::Wo
 void ModelSurfaceDem::georeference(std::span<const double> cols, std::span<const double> rows,
                                    std::span<geo::LonLat> out) const {
   for (std::size_t k = 0; k < out.size(); ++k) {
+    // Through the world and back: on the plane or on the globe, for every horizontal map.
     const Vec3 world = frame_.to_world({axis_at(x_, cols[k]), axis_at(y_, rows[k]), z0_});
-    const auto g = frame_.world_to_geographic(world[0], world[1]);
+    const Vec3 g = frame_.geographic_of(world);
     out[k] = geo::LonLat{g[0], g[1]};
   }
 }

@@ -4,7 +4,8 @@
 // digital elevation model, so that the viewer's terrain (view/terrain_tiles.h) shows the
 // model's own orography when no --terrain is given. Sample (col, row) is grid sample
 // (i, j); its longitude/latitude come from the store's axes through the world frame
-// (longitude/latitude axes, or a grid mapping through PROJ).
+// (longitude/latitude axes, or a grid mapping through PROJ), on the plane or the globe
+// (where the terrain tiles place it as the meshes are placed: ECEF at the exaggeration).
 #pragma once
 
 #include <memory>

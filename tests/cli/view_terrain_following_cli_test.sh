@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # strielad-view --offscreen on a terrain-following store: the ICON-like sample converted
 # to store format 5 renders end to end, placed by its geometry field (the log says so),
-# with the model's surface as the default terrain; a scene of cold air and cloud water.
+# with the model's surface as the default terrain, on the plane and on the globe (--shape
+# globe); a scene of cold air and cloud water.
 # Through --connect (strielad-serve) it is refused for now.
 # Usage: view_terrain_following_cli_test.sh STRIELAD_CONVERT WORK_DIR
 set -uo pipefail
@@ -34,6 +35,20 @@ if "$view" "$work/store" --scene "$work/scene.json" --offscreen --size 480x270 -
   echo "ok: offscreen view of a terrain-following store"
 else
   fail "offscreen view of a terrain-following store"; cat "$work/icon.err"
+fi
+
+# On the globe the model's surface is the default terrain too.
+if "$view" "$work/store" --scene "$work/scene.json" --shape globe --offscreen --size 480x270 \
+    --threads 2 --out "$work/icon-globe.png" --json >"$work/icon-globe.json" 2>"$work/icon-globe.err"; then
+  json=$(cat "$work/icon-globe.json")
+  grep -q '"nodes_with_mesh":[1-9]' "$work/icon-globe.json" || fail "globe: no meshes: $json"
+  grep -q '"terrain_triangles":[1-9]' "$work/icon-globe.json" || fail "globe: no terrain: $json"
+  grep -q " info\] world frame: .*on the WGS84 globe" "$work/icon-globe.err" ||
+    fail "globe not logged: $(cat "$work/icon-globe.err")"
+  grep -q "terrain: .*the model's surface" "$work/icon-globe.err" || fail "globe: model surface not logged"
+  echo "ok: the model's surface on the globe"
+else
+  fail "offscreen view of a terrain-following store on the globe"; cat "$work/icon-globe.err"
 fi
 
 # Through --connect the store is refused for now, naming the dataset (exit status 5).

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // A global store seen on the globe (lod/world_frame.h FrameShape, view/globe_view.h): a
 // round Earth on the background, lit by the true sun at the simulation time, the day side
-// bright and the night side dim but readable (the built-in clouds shader's ambient light).
+// bright and the night side dim but readable (the built-in clouds shader's ambient light);
+// a user shader's height_m() gives the height above the ellipsoid, and alpha() gets true
+// (unexaggerated) kilometres; flight tracks drawn over the globe.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -23,6 +25,7 @@
 #include "view/simulation_time.h"
 #include "view/sun_direction.h"
 #include "view/terrain_tiles.h"
+#include "view/track_window.h"
 #include "view/view_controller.h"
 #include "view/view_link.h"
 
@@ -31,6 +34,17 @@ namespace {
 
 constexpr int kSize = 160;
 constexpr double kExaggeration = 20.0;
+
+// A sub-volume "height_km <= 2": a shell round the whole Earth, its top 2 km up.
+Scene ground_scene() {
+  Scene scene;
+  SubVolume shell;
+  shell.id = 1;
+  shell.name = "ground";
+  shell.limits.push_back(Limit{.var = "height_km", .min = std::nullopt, .max = 2.0});
+  scene.subvolumes.push_back(shell);
+  return scene;
+}
 
 class GlobePixelsTest : public ::testing::Test {
  protected:
@@ -56,12 +70,7 @@ class GlobePixelsTest : public ::testing::Test {
     settings.background_top = settings.background_bottom = {0, 0, 0};
     renderer_ = std::make_unique<render::VolumeRenderer>(settings);
     target_ = std::make_unique<render::OffscreenTarget>(kSize, kSize);
-    Scene scene;
-    SubVolume shell;
-    shell.id = 1;
-    shell.name = "ground";
-    shell.limits.push_back(Limit{.var = "height_km", .min = std::nullopt, .max = 2.0});
-    scene.subvolumes.push_back(shell);
+    const Scene scene = ground_scene();
     controller_ = std::make_unique<view::ViewController>(*link_, scene);
     EXPECT_TRUE(renderer_->set_scene_layout({1}, scene.attributes).ok);
     EXPECT_TRUE(renderer_->set_user_shader(render::default_user_shader(), "clouds.glsl").ok);
@@ -202,6 +211,120 @@ TEST_F(GlobePixelsTest, TerrainDrapesTheGlobeLitByTheSun) {
   const int dark = brightness(image, project(cam, frame.place_geographic(lon_s - 135.0, 0.0, top)));
   EXPECT_GT(lit, 2 * dark) << "day " << lit << ", night " << dark;
   EXPECT_GT(dark, 40) << "the night side is black";
+}
+
+// A sub-volume "4 km <= height_km <= 6 km": a shell round the Earth.
+Scene band_scene() {
+  Scene scene;
+  SubVolume band;
+  band.id = 1;
+  band.name = "band";
+  band.limits.push_back(Limit{.var = "height_km", .min = 4.0, .max = 6.0});
+  scene.subvolumes.push_back(band);
+  return scene;
+}
+
+// Colours by height_m(): red between 1.8 and 2.2 km, green between 5.8 and 6.2 km, blue
+// elsewhere; opaque or with an opacity from the true distance.
+std::string height_band_shader(const std::string& alpha_body) {
+  return R"(vec4 color(int id, float attributes[MAX_ATTRIBUTES], vec3 normal, vec3 sun,
+                       vec3 position, vec3 view, float time) {
+  float h = height_m(position);
+  if (h > 1800.0 && h < 2200.0) return vec4(1.0, 0.0, 0.0, 1.0);
+  if (h > 5800.0 && h < 6200.0) return vec4(0.0, 1.0, 0.0, 1.0);
+  return vec4(0.0, 0.0, 1.0, 1.0);
+}
+float alpha(int id, float distance) { )" + alpha_body + " }\n";
+}
+
+TEST_F(GlobePixelsTest, HeightMGivesTheHeightAboveTheEllipsoid) {
+  ASSERT_TRUE(renderer_->set_user_shader(height_band_shader("return 1.0;"), "bands.glsl").ok);
+  const lod::WorldFrame& frame = controller_->frame();
+  const Vec3 sun{1, 0, 0};
+  // Over the equator, mid-latitudes and near the pole, the ground shell (top 2 km) is red
+  // and the band (top 6 km) green where the camera looks straight down on a grid column
+  // of every fourth row and column (a vertex of the coarser levels' meshes too). Between
+  // columns the meshes' flat triangles lie under the sphere (on the 7.5-degree grid up to
+  // 14 km drawn, 0.7 km true; twice and four times that on the coarser levels), and
+  // height_m() says so.
+  for (const auto& [lon, lat] : {std::pair{120.0, 0.0}, std::pair{-60.0, 30.0}, std::pair{0.0, 60.0}}) {
+    view::OrbitCamera orbit(frame.domain());
+    orbit.set_globe(lon, lat);
+    const lod::Camera cam = orbit.camera(1.0);
+    controller_->set_scene(ground_scene());
+    const auto column = project(cam, frame.place_geographic(lon, lat, 2.0 * kExaggeration));
+    auto image = render(cam, sun).image;
+    auto p = image.at(column.first, column.second);
+    EXPECT_GT(p[0], 200) << lon << " E " << lat << " N: the 2 km top is not red";
+    EXPECT_LT(p[1] + p[2], 40) << lon << " E " << lat << " N";
+    controller_->set_scene(band_scene());
+    image = render(cam, sun).image;
+    if (lat == 30.0) save(image, "globe_height_band.png");
+    p = image.at(column.first, column.second);
+    EXPECT_GT(p[1], 200) << lon << " E " << lat << " N: the 6 km top is not green";
+    EXPECT_LT(p[0] + p[2], 40) << lon << " E " << lat << " N";
+  }
+}
+
+TEST_F(GlobePixelsTest, AlphaCountsTrueKilometres) {
+  // Straight down through the band: 2 true km (40 drawn) on the near side, entered at
+  // 6 km (green), and again on the far side of the Earth (nothing opaque between),
+  // entered at 4 km (blue). At distance / 8 each segment is a quarter opaque: green 0.25,
+  // blue 0.75 * 0.25 over black; drawn kilometres would make the near side opaque.
+  ASSERT_TRUE(renderer_->set_user_shader(height_band_shader("return distance / 8.0;"),
+                                         "bands.glsl").ok);
+  controller_->set_scene(band_scene());
+  const lod::WorldFrame& frame = controller_->frame();
+  view::OrbitCamera orbit(frame.domain());
+  orbit.set_globe(-30.0, 30.0);
+  const auto image = render(orbit.camera(1.0), {1, 0, 0}).image;
+  const auto p = image.at(kSize / 2, kSize / 2);
+  EXPECT_NEAR(p[1], 0.25 * 255, 10) << "green " << int(p[1]);
+  EXPECT_NEAR(p[2], 0.1875 * 255, 10) << "blue " << int(p[2]);
+}
+
+// A flight along the equator from 30 W to 30 E, 11 km up, seen from over 0 E: its line
+// runs through the picture's centre row where the track window places it, and the
+// aircraft's point is at its position at the time shown.
+TEST_F(GlobePixelsTest, FlightTracksLieWhereTheyArePlaced) {
+  Scene none;
+  SubVolume nothing;
+  nothing.id = 1;
+  nothing.name = "none";
+  nothing.limits.push_back(Limit{.var = "clw", .min = 1.0, .max = std::nullopt});
+  none.subvolumes.push_back(nothing);
+  controller_->set_scene(none);
+  const lod::WorldFrame& frame = controller_->frame();
+  geo::FlightTracks tracks;
+  geo::FlightTrack t;
+  t.id = "EQ";
+  t.seconds = {0, 7200};
+  t.lon = {-30, 30};
+  t.lat = {0, 0};
+  t.altitude_m = {11000, 11000};
+  tracks.tracks.push_back(t);
+  // At 5400 s the aircraft is at 15 E; the last 90 minutes from 30 W are drawn.
+  auto lines = std::make_shared<view::TrackLines>(view::window_tracks(tracks, 5400, 5400, frame));
+  ASSERT_EQ(lines->head_count(), 1u);
+  view::OrbitCamera orbit(frame.domain());
+  orbit.set_globe(0.0, 0.0);
+  const lod::Camera cam = orbit.camera(1.0);
+  auto inputs = render::frame_inputs(*controller_, cam);
+  inputs.tracks = lines;
+  const auto image = render::render_complete_frame(*controller_, *renderer_, *target_, inputs).image;
+  save(image, "globe_track.png");
+  const auto is_track = [&](std::pair<int, int> px) {
+    const auto p = image.at(px.first, px.second);
+    return p[0] > 150 && p[1] > 80 && p[1] < 170 && p[2] < 60;
+  };
+  const double up = 11.0 * kExaggeration;
+  EXPECT_TRUE(is_track(project(cam, frame.place_geographic(15.0, 0.0, up)))) << "the aircraft";
+  for (const double lon : {-25.0, -10.0, 0.0, 10.0}) {
+    EXPECT_TRUE(is_track(project(cam, frame.place_geographic(lon, 0.0, up)))) << lon << " E";
+    EXPECT_FALSE(is_track(project(cam, frame.place_geographic(lon, 6.0, up)))) << lon << " E 6 N";
+  }
+  // Not drawn yet: east of the aircraft.
+  EXPECT_FALSE(is_track(project(cam, frame.place_geographic(25.0, 0.0, up))));
 }
 
 }  // namespace

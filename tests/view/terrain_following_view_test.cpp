@@ -5,7 +5,8 @@
 // placed vertex of every node's meshes lies in the node's widened box, a cold sub-volume
 // (temp <= T) sits on the ridge's ground where the plain has it at the isotherm, the
 // sigma-pressure store's pressures become standard-atmosphere heights, the model's
-// surface reads as a DEM, and without the store on this machine the viewer refuses.
+// surface reads as a DEM (drawn on the globe too, placed as the meshes are), and without
+// the store on this machine the viewer refuses.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -24,6 +25,8 @@
 #include "view/height_placement.h"
 #include "view/model_surface_dem.h"
 #include "view/node_geometry.h"
+#include "view/terrain_tiles.h"
+#include "lod/wgs84_globe.h"
 
 namespace strielad {
 namespace {
@@ -247,6 +250,46 @@ TEST(TerrainFollowingViewTest, TheModelSurfaceIsADem) {
   ASSERT_EQ(w.size(), 6u);
   const auto& s = *store->horizontal_coordinates()->surface_m;
   EXPECT_EQ(w[4], static_cast<float>(s[(1 + 4) * kDims.x + 2 + 4]));
+}
+
+// On the globe the model's surface is placed as the meshes are: ECEF at the globe's
+// exaggeration, each sample at its own longitude, latitude and surface height.
+TEST(TerrainFollowingViewTest, TheModelSurfaceIsDrawnOnTheGlobe) {
+  const testing::TempDir dir;
+  const auto store = Store::open(convert_model(dir, synthetic::SampleModel::kIcon, 1));
+  const format::Manifest& m = store->manifest();
+  constexpr double kExaggeration = 20.0;
+  const view::GeometryPlacer placer(
+      m, view::choose_height_placement(m, store.get()), nullptr,
+      view::PlacerShape{.shape = lod::FrameShape::kGlobe, .globe_exaggeration = kExaggeration});
+  const lod::WorldFrame& frame = placer.frame();
+  ASSERT_TRUE(frame.globe());
+  auto dem = std::make_shared<const view::ModelSurfaceDem>(m, frame, store->horizontal_coordinates(),
+                                                           "icon");
+  const auto corner = dem->georeference(3.0, 5.0);
+  EXPECT_NEAR(corner.lon, m.x.values[3], 1e-9);
+  EXPECT_NEAR(corner.lat, m.y.values[5], 1e-9);
+  const view::TerrainTiles tiles(dem, frame);
+  const auto tile = tiles.load_tile({0, 0, 0});
+  const auto samples = tiles.samples({0, 0, 0});
+  const auto& surface = *store->horizontal_coordinates()->surface_m;
+  const auto [lo, hi] = std::minmax_element(surface.begin(), surface.end());
+  ASSERT_GT(*hi, 100.0);  // a ridge to see
+  // The tile's vertices, row by row over its samples: each at its sample's place.
+  ASSERT_EQ(tile->vertices.size(),
+            samples.cols.size() * samples.rows.size() * view::kTerrainVertexFloats);
+  std::size_t k = 0;
+  for (const std::size_t row : samples.rows) {
+    for (const std::size_t col : samples.cols) {
+      const float* v = &tile->vertices[k++ * view::kTerrainVertexFloats];
+      const double h = std::max(surface[row * kDims.x + col], 0.0);  // water lies at sea level
+      const Vec3 expected = lod::geodetic_to_ecef_km(m.x.values[col], m.y.values[row],
+                                                     h * 1e-3 * kExaggeration);
+      for (int a = 0; a < 3; ++a) {
+        ASSERT_NEAR(v[a], expected[a], 2e-3) << "column " << col << " row " << row;
+      }
+    }
+  }
 }
 
 TEST(TerrainFollowingViewTest, WithoutTheStoreOnThisMachineTheViewerRefuses) {
