@@ -17,6 +17,9 @@ namespace strielad::build {
 struct EncodedBrick {
   format::IndexEntry entry;          // chunk_offset is filled in by the step writer
   std::vector<std::byte> chunk;      // empty unless entry.kind == kData
+  // A data brick of a lossy variable that zfp did not code within the bound, kept as a
+  // codec-chain chunk (lossless) instead.
+  bool lossy_fallback = false;
 };
 
 // Statistics of a node: min/max over the covered samples, valid count over owned ones.
@@ -34,6 +37,11 @@ struct NodeStats {
 inline constexpr double kFpzipAloneBelowZeroShare = 0.5;
 inline constexpr double kFpzipTriedBelowZeroShare = 0.8;
 
+// For a variable with a lossy codec (format::CodecSpec::zfp), each data brick is a zfp
+// chunk when zfp codes it within the bound (decoded and compared here, store/zfp_chunk.h)
+// into fewer bytes than the raw brick; otherwise the codec chain's chunk, and a brick that
+// missed the bound counts as a fallback.
+//
 // Encodes the brick `box` (inclusive, level-grid indices) held in `planes`. When
 // `owned` is given (level 0) the statistics are computed from the samples: min/max over
 // `box`, valid_count over `owned`; otherwise (coarse levels) `stats`, the merged
