@@ -132,19 +132,23 @@ std::vector<std::byte> encode_fpzip_or_blosc(std::span<const T> samples, const B
   return blosc;
 }
 
-// The chunk of a data brick of a lossy variable: zfp within the bound, else the codec chain.
+// The chunk of a data brick of a lossy variable: the zfp chunk when it keeps the bound and
+// is smaller than the codec chain's, else the codec chain's (lossless). On mostly-zero
+// bricks of sparse fields the chain's runs often beat zfp, and then it is both smaller and
+// exact (BENCHMARKS.md, "lossy").
 template <typename T>
 std::vector<std::byte> encode_zfp_or_blosc(std::span<const T> samples, const BrickDims& dims,
                                            const format::CodecSpec& codec, EncodedBrick& out) {
   const std::span<const std::byte> raw = std::as_bytes(samples);
   const double bound = codec.zfp->tolerance;
   ZfpCodingResult z = compress_brick_zfp(raw, kDTypeOf<T>, dims, bound, bound);
-  if (z.outcome == ZfpOutcome::kCoded) {
+  out.lossy_fallback = z.outcome == ZfpOutcome::kBoundExceeded;
+  std::vector<std::byte> chain = compress_brick(raw, kDTypeOf<T>, dims, codec);
+  if (z.outcome == ZfpOutcome::kCoded && z.chunk.size() < chain.size()) {
     out.entry.coding = format::ChunkCoding::kZfp;
     return std::move(z.chunk);
   }
-  out.lossy_fallback = z.outcome == ZfpOutcome::kBoundExceeded;
-  return compress_brick(raw, kDTypeOf<T>, dims, codec);
+  return chain;
 }
 
 }  // namespace

@@ -38,8 +38,8 @@ inline constexpr double kFpzipAloneBelowZeroShare = 0.5;
 inline constexpr double kFpzipTriedBelowZeroShare = 0.8;
 
 // For a variable with a lossy codec (format::CodecSpec::zfp), each data brick is a zfp
-// chunk when zfp codes it within the bound (decoded and compared here, store/zfp_chunk.h)
-// into fewer bytes than the raw brick; otherwise the codec chain's chunk, and a brick that
+// chunk when zfp codes it within the bound (decoded and compared, store/zfp_chunk.h) into
+// fewer bytes than the codec chain; otherwise the codec chain's chunk, and a brick that
 // missed the bound counts as a fallback.
 //
 // Encodes the brick `box` (inclusive, level-grid indices) held in `planes`. When

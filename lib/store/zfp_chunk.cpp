@@ -186,7 +186,7 @@ std::uint64_t decode_chunk(std::span<const std::byte> chunk, BrickDims dims, std
     throw make_error(ErrorCode::kCorrupt, "{}: zfp stream of {} bytes decodes from {} bytes", what,
                      stream.size(), read);
   }
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; missing_count > 0 && i < n; ++i) {
     if (mask[i]) out[i] = std::numeric_limits<T>::quiet_NaN();
   }
   return samples_sum;
@@ -300,16 +300,18 @@ void decompress_brick_zfp(std::span<const std::byte> chunk, DType dtype, BrickDi
                      "decompress_brick_zfp: {} bytes of output for a {}x{}x{} brick of {}",
                      out.size(), dims[0], dims[1], dims[2], dtype_name(dtype));
   }
-  std::uint64_t samples_sum = 0;
-  if (dtype == DType::kFloat64) {
-    std::vector<double> v(out.size() / 8);
-    samples_sum = decode_chunk<double>(chunk, dims, std::span(v), what);
+  // In place where `out` is aligned for the sample type (a Brick's bytes are), else a copy.
+  const auto decode = [&]<typename T>(T*) {
+    if (reinterpret_cast<std::uintptr_t>(out.data()) % alignof(T) == 0) {
+      return decode_chunk<T>(chunk, dims, std::span(reinterpret_cast<T*>(out.data()), out.size() / sizeof(T)), what);
+    }
+    std::vector<T> v(out.size() / sizeof(T));
+    const std::uint64_t sum = decode_chunk<T>(chunk, dims, std::span(v), what);
     std::memcpy(out.data(), v.data(), out.size());
-  } else {
-    std::vector<float> v(out.size() / 4);
-    samples_sum = decode_chunk<float>(chunk, dims, std::span(v), what);
-    std::memcpy(out.data(), v.data(), out.size());
-  }
+    return sum;
+  };
+  const std::uint64_t samples_sum = dtype == DType::kFloat64 ? decode(static_cast<double*>(nullptr))
+                                                             : decode(static_cast<float*>(nullptr));
   if (checksum64(out) != samples_sum) {
     throw make_error(ErrorCode::kCorrupt,
                      "{}: zfp chunk decodes to other samples than the writer verified", what);

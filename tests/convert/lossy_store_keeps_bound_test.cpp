@@ -221,7 +221,7 @@ TEST_P(LossyNcargFilesTest, BoundHoldsOnEveryBrick) {
   o.scan.variables = {f.variable};
   build::convert(o);
   o.store = dir / "lossy";
-  o.lossy = build::parse_lossy(std::string(f.variable) + "=rel:0.001");
+  o.lossy = build::parse_lossy(std::string(f.variable) + "=rel:0.01");
   const build::ConvertResult r = build::convert(o);
   const auto plain = Store::open(dir / "plain");
   const auto lossy = Store::open(dir / "lossy");
