@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
 
 #include "convert/converter.h"
 #include "store/store.h"
@@ -163,6 +164,38 @@ TEST_F(LossySampleStoreTest, BadRequestsNameTheFlag) {
   o = options(inputs_, dir_ / "plain", 12);
   o.lossy = build::parse_lossy("ta=abs:0.05");
   expect_error([&] { build::convert(o); }, ErrorCode::kAlreadyExists, {"plain"});
+}
+
+TEST_F(LossySampleStoreTest, ADamagedZfpChunkIsNamedAndOtherNodesStayReadable) {
+  NodeId damaged = 0;
+  std::uint64_t offset = 0;
+  std::uint32_t ta = 0;
+  {
+    const auto store = Store::open(dir_ / "lossy");
+    ta = static_cast<std::uint32_t>(store->manifest().variable_index("ta"));
+    const auto entries = store->index(0, ta);
+    while (damaged < entries.size() && entries[damaged].coding != format::ChunkCoding::kZfp) ++damaged;
+    ASSERT_LT(damaged, entries.size());
+    offset = entries[damaged].chunk_offset + entries[damaged].chunk_size / 2;
+  }
+  {
+    std::fstream f(dir_ / "lossy" / format::step_file_name(0), std::ios::in | std::ios::out | std::ios::binary);
+    f.seekg(static_cast<std::streamoff>(offset));
+    char c = 0;
+    f.read(&c, 1);
+    c = static_cast<char>(c ^ 0x5a);
+    f.seekp(static_cast<std::streamoff>(offset));
+    f.write(&c, 1);
+  }
+  const auto store = Store::open(dir_ / "lossy");
+  expect_error([&] { store->read_brick(0, ta, damaged); }, ErrorCode::kCorrupt,
+               {"'ta'", fmt::format("node {}", damaged)});
+  for (NodeId n = 0; n < store->index(0, ta).size(); ++n) {
+    if (n != damaged) {
+      EXPECT_NO_THROW(store->read_brick(0, ta, n)) << n;
+    }
+  }
+  EXPECT_FALSE(verify_store(dir_ / "lossy").ok());
 }
 
 // A float field with fill, subnormals and 1e30 values in some bricks.
