@@ -141,7 +141,11 @@ std::vector<std::byte> encode_zfp_or_blosc(std::span<const T> samples, const Bri
                                            const format::CodecSpec& codec, EncodedBrick& out) {
   const std::span<const std::byte> raw = std::as_bytes(samples);
   const double bound = codec.zfp->tolerance;
-  ZfpCodingResult z = compress_brick_zfp(raw, kDTypeOf<T>, dims, bound, bound);
+  ZfpCodingResult z;
+  for (const double multiple : kZfpAccuracyLadder) {
+    z = compress_brick_zfp(raw, kDTypeOf<T>, dims, bound, multiple * bound);
+    if (z.outcome != ZfpOutcome::kBoundExceeded) break;
+  }
   out.lossy_fallback = z.outcome == ZfpOutcome::kBoundExceeded;
   std::vector<std::byte> chain = compress_brick(raw, kDTypeOf<T>, dims, codec);
   if (z.outcome == ZfpOutcome::kCoded && z.chunk.size() < chain.size()) {
