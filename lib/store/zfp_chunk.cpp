@@ -168,9 +168,6 @@ std::uint64_t decode_chunk(std::span<const std::byte> chunk, BrickDims dims, std
     throw make_error(ErrorCode::kCorrupt, "{}: zfp chunk's mode {:#x} is not a fixed-accuracy mode",
                      what, mode);
   }
-  // zfp reads its stream without bounds: it gets a zero-padded copy of the largest size
-  // this mode can write for the brick, which each block's bit budget keeps it inside, and
-  // must have read exactly the stream's bytes (formats/store.md, "What zfp sees").
   const std::size_t max_size = zfp_stream_maximum_size(z.stream.get(), z.field.get());
   if (stream.size() > max_size || stream.size() % (stream_word_bits / 8) != 0) {
     throw make_error(ErrorCode::kCorrupt,
@@ -178,9 +175,22 @@ std::uint64_t decode_chunk(std::span<const std::byte> chunk, BrickDims dims, std
                      "{}-bit words)",
                      what, stream.size(), max_size, stream_word_bits);
   }
-  std::vector<std::uint64_t> padded((max_size + 7) / 8 + 1, 0);
+  // zfp reads its stream without bounds, but counts every bit of a block against the
+  // block's budget, ZFP_MAX_BITS in fixed-accuracy mode: it gets a copy of the stream in a
+  // zero-filled buffer of that many bits per block plus a word of read-ahead, and must have
+  // read exactly the stream's bytes (formats/store.md, "What zfp sees"). The buffer is the
+  // thread's, kept zero beyond the stream copied in.
+  const std::size_t blocks = ((dims[0] + 3) / 4) * ((dims[1] + 3) / 4) * ((dims[2] + 3) / 4);
+  const std::size_t words = (blocks * ZFP_MAX_BITS + 63) / 64 + 1;
+  static thread_local std::vector<std::uint64_t> padded;
+  if (padded.size() < words) padded.assign(words, 0);
+  struct Rezero {
+    std::uint64_t* p;
+    std::size_t n;
+    ~Rezero() { std::memset(p, 0, n); }
+  } rezero{padded.data(), stream.size()};
   std::memcpy(padded.data(), stream.data(), stream.size());
-  z.attach(padded.data(), padded.size() * 8);
+  z.attach(padded.data(), words * 8);
   const std::size_t read = zfp_decompress(z.stream.get(), z.field.get());
   if (read != stream.size()) {
     throw make_error(ErrorCode::kCorrupt, "{}: zfp stream of {} bytes decodes from {} bytes", what,
