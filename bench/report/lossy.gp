@@ -16,7 +16,7 @@ plot 'lossy.dat' index 0 using 1:2 with linespoints lw 2 pt 7 lc rgb '#1b9e77' t
 set title 'cold level-0 brick read + decode'
 set ylabel 'microseconds'
 set yrange [0:*]
-plot 'lossy.dat' index 3 using 1:2 with linespoints lw 2 pt 7 title 'lossy p50', 'lossy.dat' index 3 using 1:3 with linespoints lw 1 pt 6 title 'lossy p99', 166.618 with lines dt 2 lw 2 title 'lossless p50', 275.29 with lines dt 3 title 'lossless p99'
+plot 'lossy.dat' index 3 using 1:2 with linespoints lw 2 pt 7 title 'lossy p50', 'lossy.dat' index 3 using 1:3 with linespoints lw 1 pt 6 title 'lossy p99', 115.667 with lines dt 2 lw 2 title 'lossless p50', 209.193 with lines dt 3 title 'lossless p99'
 set autoscale y
 set title 'level-0 extraction against lossless'
 set logscale y

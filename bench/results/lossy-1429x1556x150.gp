@@ -16,7 +16,7 @@ plot 'lossy-1429x1556x150.dat' index 0 using 1:2 with linespoints lw 2 pt 7 lc r
 set title 'cold level-0 brick read + decode'
 set ylabel 'microseconds'
 set yrange [0:*]
-plot 'lossy-1429x1556x150.dat' index 3 using 1:2 with linespoints lw 2 pt 7 title 'lossy p50', 'lossy-1429x1556x150.dat' index 3 using 1:3 with linespoints lw 1 pt 6 title 'lossy p99', 107.48 with lines dt 2 lw 2 title 'lossless p50', 209.486 with lines dt 3 title 'lossless p99'
+plot 'lossy-1429x1556x150.dat' index 3 using 1:2 with linespoints lw 2 pt 7 title 'lossy p50', 'lossy-1429x1556x150.dat' index 3 using 1:3 with linespoints lw 1 pt 6 title 'lossy p99', 133.459 with lines dt 2 lw 2 title 'lossless p50', 237.334 with lines dt 3 title 'lossless p99'
 set autoscale y
 set title 'level-0 extraction against lossless'
 set logscale y

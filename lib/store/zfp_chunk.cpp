@@ -175,13 +175,17 @@ std::uint64_t decode_chunk(std::span<const std::byte> chunk, BrickDims dims, std
                      "{}-bit words)",
                      what, stream.size(), max_size, stream_word_bits);
   }
-  // zfp reads its stream without bounds, but counts every bit of a block against the
-  // block's budget, ZFP_MAX_BITS in fixed-accuracy mode: it gets a copy of the stream in a
-  // zero-filled buffer of that many bits per block plus a word of read-ahead, and must have
-  // read exactly the stream's bytes (formats/store.md, "What zfp sees"). The buffer is the
-  // thread's, kept zero beyond the stream copied in.
+  // zfp reads its stream without bounds, but no block makes it read more than its
+  // exponent and, per bit plane of the block's integers, two bits per value and one more
+  // (nor more than ZFP_MAX_BITS, every read counted against the block's budget): it gets a
+  // copy of the stream in a zero-filled buffer of that many bits per block plus a word of
+  // read-ahead, and must have read exactly the stream's bytes (formats/store.md, "What zfp
+  // sees"). The buffer is the thread's, kept zero beyond the stream copied in.
+  constexpr std::size_t kExponentBits = 1 + (sizeof(T) == 8 ? 11 : 8);
+  constexpr std::size_t kBlockBits =
+      std::min<std::size_t>(ZFP_MAX_BITS, kExponentBits + 8 * sizeof(T) * (2 * 64 + 1));
   const std::size_t blocks = ((dims[0] + 3) / 4) * ((dims[1] + 3) / 4) * ((dims[2] + 3) / 4);
-  const std::size_t words = (blocks * ZFP_MAX_BITS + 63) / 64 + 1;
+  const std::size_t words = (blocks * kBlockBits + 63) / 64 + 1;
   static thread_local std::vector<std::uint64_t> padded;
   if (padded.size() < words) padded.assign(words, 0);
   struct Rezero {
