@@ -222,5 +222,48 @@ TEST(ZfpChunk, CraftedChunksWithValidStreamChecksumAreRejected) {
   }
 }
 
+// What zfp reads of a hostile stream stays within the buffer the reader gives it
+// (formats/store.md, "What zfp sees"): streams of all ones, alternating bits and random
+// words, checksums recomputed, make zfp read at most its per-block bound; the reader
+// reports how far it read when that is not exactly the stream.
+TEST(ZfpChunk, HostileStreamsAreReadWithinTheBlockBound) {
+  const std::vector<std::byte> valid = small_chunk();  // 6x5x4 float32: 2x2x1 blocks
+  const std::uint32_t runs_size = [&] {
+    std::uint32_t r = 0;
+    std::memcpy(&r, valid.data() + 28, 4);
+    return r;
+  }();
+  const std::size_t bound_bytes = 4 * (9 + 32 * 129) / 8 + 8;
+  const std::uint64_t seed = 6 | std::uint64_t{5} << 20 | std::uint64_t{4} << 40 | std::uint64_t{1} << 61;
+  std::vector<std::byte> out(6 * 5 * 4 * 4);
+  std::mt19937_64 rng(11);
+  std::size_t largest = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const std::size_t words = 1 + rng() % 40;
+    std::vector<std::byte> bad(valid.begin(), valid.begin() + 32 + runs_size);
+    for (std::size_t w = 0; w < words; ++w) {
+      const std::uint64_t word = trial % 3 == 0 ? ~std::uint64_t{0}
+                                 : trial % 3 == 1 ? 0xAAAAAAAAAAAAAAAAull ^ (rng() & 0xff)
+                                                  : rng();
+      const auto* b = reinterpret_cast<const std::byte*>(&word);
+      bad.insert(bad.end(), b, b + 8);
+    }
+    const std::uint64_t sum = XXH3_64bits_withSeed(bad.data() + 16, bad.size() - 16, seed);
+    std::memcpy(bad.data() + 8, &sum, 8);
+    try {
+      decompress_brick_zfp(bad, DType::kFloat32, BrickDims{6, 5, 4}, out, "node 7");
+    } catch (const Error& e) {
+      ASSERT_EQ(e.code(), ErrorCode::kCorrupt) << e.what();
+      const std::string m = e.what();
+      const auto at = m.find("decodes from ");
+      if (at == std::string::npos) continue;
+      const std::size_t read = std::stoul(m.substr(at + 13));
+      largest = std::max(largest, read);
+      ASSERT_LE(read, bound_bytes) << m;
+    }
+  }
+  EXPECT_GT(largest, 0u);
+}
+
 }  // namespace
 }  // namespace strielad
