@@ -30,6 +30,9 @@ if(NOT TARGET strielad_deps::eccodes)
 endif()
 # fpzip: the lossless floating-point coder of store version 3 (formats/store.md).
 find_package(fpzip REQUIRED CONFIG)
+# zfp 1.0 (libzfp-dev): the error-bounded lossy coder of store version 6 (formats/store.md,
+# "zfp chunks"), through Debian's CMake config (target zfp::zfp).
+find_package(zfp 1.0 REQUIRED CONFIG)
 find_package(spdlog REQUIRED CONFIG)
 find_package(fmt REQUIRED CONFIG)
 find_package(CLI11 REQUIRED CONFIG)

@@ -8,6 +8,7 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build pkg-config
   libhdf5-dev libnetcdf-dev netcdf-bin libgdal-dev libblosc-dev libzstd-dev libxxhash-dev libfpzip-dev
+  libzfp-dev
   libproj-dev libeccodes-dev libopenvdb-dev libopenvdb-tools libboost-iostreams-dev libtbb-dev
   libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev libvtk9-dev
   libgtest-dev libgmock-dev

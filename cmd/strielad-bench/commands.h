@@ -11,6 +11,7 @@ namespace strielad::bench_cmd {
 // `command_line`: how the tool was invoked, quoted into reports.
 void register_io(CLI::App& app, cli::Action& action, std::string command_line);
 void register_extract(CLI::App& app, cli::Action& action, std::string command_line);
+void register_lossy(CLI::App& app, cli::Action& action, std::string command_line);
 void register_latency(CLI::App& app, cli::Action& action, std::string command_line);
 void register_view(CLI::App& app, cli::Action& action, std::string command_line);
 void register_view_fade(CLI::App& app, cli::Action& action, std::string command_line);

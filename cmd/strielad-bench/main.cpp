@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
         bench_cmd::register_io(app, action, command_line);
         bench_cmd::register_extract(app, action, command_line);
         bench_cmd::register_latency(app, action, command_line);
+        bench_cmd::register_lossy(app, action, command_line);
         bench_cmd::register_view(app, action, command_line);
         bench_cmd::register_view_fade(app, action, command_line);
         bench_cmd::register_advect(app, action, command_line);

@@ -28,7 +28,7 @@ namespace {
 struct ReportFlags {
   std::string out = "bench/report";
   std::string dims = "715x778x150";
-  std::string suites = "io,extract,latency,view,scene,scaling,advect,robustness";
+  std::string suites = "io,extract,latency,lossy,view,scene,scaling,advect,robustness";
   std::string work = "/tmp/strielad-bench-report";
   std::string rerun;
   bool quick = false;
@@ -39,17 +39,19 @@ struct ReportFlags {
 constexpr const char* kRunsFile = "runs.json";
 
 const std::set<std::string>& known_suites() {
-  static const std::set<std::string> s{"io",      "extract", "latency", "view",
-                                       "scene",   "scaling", "advect",  "robustness"};
+  static const std::set<std::string> s{"io",    "extract", "latency", "lossy",     "view",
+                                       "scene", "scaling", "advect",  "robustness"};
   return s;
 }
 
 bool takes_dims(const std::string& suite) {
-  return suite == "io" || suite == "extract" || suite == "latency" || suite == "view" ||
-         suite == "scene";
+  return suite == "io" || suite == "extract" || suite == "latency" || suite == "lossy" ||
+         suite == "view" || suite == "scene";
 }
 
-bool takes_plot(const std::string& suite) { return suite == "extract" || suite == "advect"; }
+bool takes_plot(const std::string& suite) {
+  return suite == "extract" || suite == "advect" || suite == "lossy";
+}
 
 std::vector<std::string> split(const std::string& list) {
   std::vector<std::string> out;
@@ -172,7 +174,7 @@ void register_report(CLI::App& app, cli::Action& action, std::string command_lin
       "machine, each suite's command, tables and charts, plus the suites' CSV and JSON");
   sub->add_option("--out", f->out, "Folder of the report")->capture_default_str();
   sub->add_option("--dims", f->dims,
-                  "Grid XxYxZ of the generated data for io, extract, latency, view and scene "
+                  "Grid XxYxZ of the generated data for io, extract, latency, lossy, view and scene "
                   "(default: a quarter of the paper's time step)")
       ->capture_default_str();
   sub->add_option("--suites", f->suites, "Comma-separated suites to run")->capture_default_str();

@@ -25,6 +25,7 @@ struct ConvertFlags {
   format::CodecSpec codec{.predictor = std::string(build::kPredictorAuto)};
   std::vector<std::string> codec_for;  // VARIABLE=CODEC:LEVEL:SHUFFLE[:PREDICTOR]
   std::vector<std::string> fpzip;      // variables, or "all"
+  std::vector<std::string> lossy;      // VAR=abs:TOL[,VAR=rel:FRACTION...]
   std::string height_var;
   std::vector<std::string> formula_terms;  // NAME=VALUE
   bool nan_as_fill = false, no_finalize = false, json = false, buffered_input = false;
@@ -38,11 +39,18 @@ void log_summary(const build::ConvertResult& r) {
                r.written_bytes / 1e6);
   spdlog::info("bricks: {} with data, {} constant, {} empty (no voxel data stored)", r.data,
                r.constant, r.empty);
+  if (r.lossy + r.lossy_fallback > 0) {
+    spdlog::info("lossy: {} zfp bricks, {} fallback bricks (zfp missed the bound: kept lossless)",
+                 r.lossy, r.lossy_fallback);
+  }
   std::string predictors;
   for (const auto& [name, codec] : r.codecs.items()) {
     if (!predictors.empty()) predictors += ", ";
     predictors += fmt::format("{} {}{}", name, codec.value("predictor", "?"),
-                              codec.value("fpzip", false) ? " +fpzip" : "");
+                              codec.value("fpzip", false) ? " +fpzip"
+                              : codec.contains("zfp")
+                                  ? fmt::format(" +zfp within {}", codec["zfp"].value("tolerance", 0.0))
+                                  : std::string());
   }
   if (!predictors.empty()) spdlog::info("predictors: {}", predictors);
   if (!r.finalized) return;
@@ -112,6 +120,9 @@ int run(const ConvertFlags& f) {
     }
   }
   o.fpzip = f.fpzip;
+  for (const auto& text : f.lossy) {
+    for (auto& r : build::parse_lossy(text)) o.lossy.push_back(std::move(r));
+  }
   o.threads = f.threads;
   o.memory_limit = static_cast<std::uint64_t>(f.memory_limit_gib * 1073741824.0);
   o.finalize = !f.no_finalize;
@@ -173,6 +184,12 @@ void register_convert(CLI::App& app, cli::Action& action) {
                  "smaller: on the paper's grid clw about 12% smaller, but a cold read of an fpzip "
                  "brick takes about three times as long; for archives (store format version 3)")
       ->delimiter(',');
+  app.add_option("--lossy", f->lossy,
+                 "Error-bounded lossy bricks: VAR=abs:TOL (every valid sample within TOL) or "
+                 "VAR=rel:FRACTION (TOL = FRACTION x the variable's max - min over all steps), "
+                 "comma-separated or repeated. zfp fixed-accuracy, verified per brick (a brick "
+                 "that misses the bound stays lossless); missing samples stay missing; not "
+                 "together with --fpzip on a variable (store format version 6)");
   app.add_option("--height-var", f->height_var,
                  "Terrain-following levels: the variable holding every sample's height or "
                  "geopotential (on the levels or half levels; default: z_mc, z_ifc, HHL or "

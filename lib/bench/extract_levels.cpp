@@ -165,4 +165,31 @@ LevelGroup run_level_group(const Store& store, const ExtractCase& c,
   return g;
 }
 
+SurfaceComparison compare_level0_surfaces(const Store& reference, const Store& other,
+                                          const ExtractCase& c) {
+  SurfaceComparison out;
+  out.case_name = c.name;
+  LevelExtractionOptions lo;
+  lo.level = 0;
+  LevelRow ref_row, row;
+  LevelSurface ref = measure(reference, extract_level(reference, scene_of(reference, c), lo), ref_row);
+  LevelSurface mine = measure(other, extract_level(other, scene_of(other, c), lo), row);
+  out.reference_volume = ref_row.volume;
+  out.volume = row.volume;
+  out.volume_error = ref_row.volume != 0 ? (row.volume - ref_row.volume) / ref_row.volume
+                                         : std::numeric_limits<double>::quiet_NaN();
+  out.reference_triangles = ref_row.triangles;
+  out.triangles = row.triangles;
+  const std::vector<Point3> ref_queries = thinned(std::move(ref.distinct));
+  const std::vector<Point3> my_queries = thinned(std::move(mine.distinct));
+  const SurfaceDistance ref_surface(std::move(ref.points), std::move(ref.triangles));
+  const SurfaceDistance my_surface(std::move(mine.points), std::move(mine.triangles));
+  const DistanceSummary to = surface_distances(my_queries, ref_surface);
+  const DistanceSummary from = surface_distances(ref_queries, my_surface);
+  out.distance_mean = 0.5 * (to.mean + from.mean);
+  out.distance_p90 = std::max(to.p90, from.p90);
+  out.distance_max = std::max(to.max, from.max);
+  return out;
+}
+
 }  // namespace strielad::bench

@@ -65,6 +65,21 @@ struct LevelGroupOptions {
 LevelGroup run_level_group(const Store& store, const ExtractCase& extract_case,
                            const LevelGroupOptions& options);
 
+// One case extracted whole at level 0 from two stores of the same grid (a reference and,
+// e.g., a lossy copy): the enclosed volumes and the distance between their limit
+// surfaces (level-0 cells, mean over both directions, and the larger p90 and max).
+struct SurfaceComparison {
+  std::string case_name;
+  double reference_volume = 0, volume = 0;
+  double volume_error = 0;  // (volume - reference_volume) / reference_volume
+  double distance_mean = 0, distance_p90 = 0, distance_max = 0;
+  std::uint64_t reference_triangles = 0, triangles = 0;
+};
+
+// \error kNotFound for a case variable the stores lack.
+SurfaceComparison compare_level0_surfaces(const Store& reference, const Store& other,
+                                          const ExtractCase& extract_case);
+
 struct WholeLevelVdb {
   std::string case_name;
   std::uint32_t level = 0;

@@ -12,6 +12,7 @@
 #include "core/checksum.h"
 #include "store/brick_codec.h"
 #include "store/fpzip_chunk.h"
+#include "store/zfp_chunk.h"
 
 namespace strielad::build {
 
@@ -131,6 +132,29 @@ std::vector<std::byte> encode_fpzip_or_blosc(std::span<const T> samples, const B
   return blosc;
 }
 
+// The chunk of a data brick of a lossy variable: the zfp chunk when it keeps the bound and
+// is smaller than the codec chain's, else the codec chain's (lossless). On mostly-zero
+// bricks of sparse fields the chain's runs often beat zfp, and then it is both smaller and
+// exact (BENCHMARKS.md, "lossy").
+template <typename T>
+std::vector<std::byte> encode_zfp_or_blosc(std::span<const T> samples, const BrickDims& dims,
+                                           const format::CodecSpec& codec, EncodedBrick& out) {
+  const std::span<const std::byte> raw = std::as_bytes(samples);
+  const double bound = codec.zfp->tolerance;
+  ZfpCodingResult z;
+  for (const double multiple : kZfpAccuracyLadder) {
+    z = compress_brick_zfp(raw, kDTypeOf<T>, dims, bound, multiple * bound);
+    if (z.outcome != ZfpOutcome::kBoundExceeded) break;
+  }
+  out.lossy_fallback = z.outcome == ZfpOutcome::kBoundExceeded;
+  std::vector<std::byte> chain = compress_brick(raw, kDTypeOf<T>, dims, codec);
+  if (z.outcome == ZfpOutcome::kCoded && z.chunk.size() < chain.size()) {
+    out.entry.coding = format::ChunkCoding::kZfp;
+    return std::move(z.chunk);
+  }
+  return chain;
+}
+
 }  // namespace
 
 template <typename T>
@@ -199,9 +223,13 @@ EncodedBrick encode_brick(const PlaneBlock<T>& planes, const IndexBox& box, cons
   } else {
     out.entry.kind = format::BrickKind::kData;
     const BrickDims dims{box.extent(0), box.extent(1), box.extent(2)};
-    out.chunk = codec.fpzip  // store version 3
-                    ? encode_fpzip_or_blosc<T>(samples, dims, codec, out.entry.coding)
-                    : compress_brick(std::as_bytes(samples), kDTypeOf<T>, dims, codec);
+    if (codec.zfp) {  // store version 6
+      out.chunk = encode_zfp_or_blosc<T>(samples, dims, codec, out);
+    } else if (codec.fpzip) {  // store version 3
+      out.chunk = encode_fpzip_or_blosc<T>(samples, dims, codec, out.entry.coding);
+    } else {
+      out.chunk = compress_brick(std::as_bytes(samples), kDTypeOf<T>, dims, codec);
+    }
     out.entry.chunk_size = static_cast<std::uint32_t>(out.chunk.size());
     out.entry.chunk_checksum = checksum64(out.chunk);
   }

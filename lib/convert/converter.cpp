@@ -82,6 +82,7 @@ json ConvertResult::to_json() const {
               {"direct_input_bytes", direct_input_bytes},
               {"written_bytes", written_bytes},
               {"bricks", {{"empty", empty}, {"constant", constant}, {"data", data}}},
+              {"lossy", {{"zfp_bricks", lossy}, {"fallback_bricks", lossy_fallback}}},
               {"seconds", seconds},
               {"input_mb_per_s", seconds > 0 ? double(input_bytes) / 1e6 / seconds : 0.0},
               {"finalized", finalized},
@@ -212,6 +213,19 @@ std::vector<format::CodecSpec> requested_codecs(const ingest::InputCatalog& cata
                        "--fpzip names variable '{}', which is not converted", name);
     }
   }
+  const std::vector<format::LossySpec> lossy = resolve_lossy(catalog, options.scan, options.lossy);
+  for (std::size_t i = 0; i < lossy.size(); ++i) {
+    const std::size_t v = catalog.variable_index(options.lossy[i].variable);
+    if (codecs[v].fpzip) {
+      throw make_error(ErrorCode::kInvalidArgument,
+                       "--lossy and --fpzip both name variable '{}' (a variable is either lossy "
+                       "or fpzip-coded)",
+                       options.lossy[i].variable);
+    }
+    codecs[v].zfp = lossy[i];
+    spdlog::info("lossy '{}': zfp within {} ({}:{})", options.lossy[i].variable,
+                 lossy[i].tolerance, format::lossy_mode_name(lossy[i].mode), lossy[i].value);
+  }
   return codecs;
 }
 
@@ -298,6 +312,10 @@ void report_codecs(const format::Manifest& plan, const std::vector<PredictorTria
     const format::CodecSpec& c = plan.codec_of(v);
     json entry{{"name", c.name}, {"level", c.level}, {"shuffle", c.shuffle},
                {"predictor", c.predictor}, {"fpzip", c.fpzip}};
+    if (c.zfp) {
+      entry["zfp"] = json{{"mode", std::string(format::lossy_mode_name(c.zfp->mode))}, {"value", c.zfp->value},
+                          {"tolerance", c.zfp->tolerance}};
+    }
     for (const auto& t : trials) {
       if (t.variable == plan.variables[v].name) entry["auto"] = t.to_json();
     }
@@ -403,6 +421,8 @@ void convert_steps(const ingest::InputCatalog& catalog, const format::Manifest& 
     result.empty += c.empty;
     result.constant += c.constant;
     result.data += c.data;
+    result.lossy += c.lossy;
+    result.lossy_fallback += c.lossy_fallback;
   }
   result.direct_input_bytes = reader.direct_bytes();
 }
@@ -444,6 +464,13 @@ ConvertResult convert(const ConvertOptions& options) {
   const auto store = Store::open(options.store, StoreOpenOptions{.allow_incomplete = true});
   const std::vector<std::uint32_t> todo = steps_to_convert(*store, first, last, result);
   convert_steps(catalog, plan, layout, options, todo, result);
+  if (format::has_lossy_codec(plan)) {
+    const auto log = result.lossy_fallback > 0 ? spdlog::level::warn : spdlog::level::info;
+    spdlog::log(log,
+                "lossy: {} data bricks coded by zfp within the bound, {} kept lossless because "
+                "zfp missed it",
+                result.lossy, result.lossy_fallback);
+  }
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "convert/lossy_option.h"
 #include "convert/predictor_choice.h"
 #include "format/manifest.h"
 #include "ingest/input_catalog.h"
@@ -43,6 +44,9 @@ struct ConvertOptions {
   // format version 3; "all" for every variable), e.g. from --fpzip clw,qr: smaller cloud
   // fields at about three times the cold read time per fpzip brick (BENCHMARKS.md).
   std::vector<std::string> fpzip;
+  // Variables whose data bricks are zfp chunks within an error bound (store format version
+  // 6), e.g. from --lossy ta=abs:0.05: never a variable also named by fpzip.
+  std::vector<LossyRequest> lossy;
   int threads = 0;  // 0 = all cores
   // Refuse (kUnsupported, before reading any data) a grid whose conversion would need
   // more memory than this (build/conversion_limits.h); 0 = the machine's memory.
@@ -61,6 +65,9 @@ struct ConvertResult {
   std::uint64_t direct_input_bytes = 0;  // of which read with O_DIRECT (ScanOptions)
   std::uint64_t written_bytes = 0;  // step-file bytes written by this run
   std::uint64_t empty = 0, constant = 0, data = 0;
+  // Data bricks of lossy variables coded by zfp, and kept lossless because zfp did not
+  // reach the bound (counted, logged as a warning).
+  std::uint64_t lossy = 0, lossy_fallback = 0;
   double seconds = 0;
   bool finalized = false;
   nlohmann::json summary;  // the manifest summary when finalized
@@ -73,8 +80,8 @@ struct ConvertResult {
 // predictor "auto" per variable by choose_predictor (logged; the trials are appended to
 // `trials` when given). The store-wide codec takes the predictor most variables with the
 // store-wide Blosc settings use (ties: none); other variables carry their own codec.
-// Throws kInvalidArgument for a bad codec, a codec_for naming a variable not converted, or
-// a brick larger than one chunk; kUnsupported when a variable's conversion would need more
+// Throws kInvalidArgument for a bad codec, a codec_for or lossy request naming a variable
+// not converted, a variable both lossy and fpzip, or a brick larger than one chunk; kUnsupported when a variable's conversion would need more
 // memory than options.memory_limit (build/conversion_limits.h). Both are decided from the
 // grid's size before any data is read.
 format::Manifest plan_store(const ingest::InputCatalog& catalog, const ConvertOptions& options,

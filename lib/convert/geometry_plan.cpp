@@ -86,6 +86,7 @@ std::optional<format::GridGeometry> plan_geometry(const ingest::InputCatalog& ca
     v.codec = codec;
     v.codec.predictor = format::kPredictorLorenzo3;
     v.codec.fpzip = false;
+    v.codec.zfp = std::nullopt;
     up = up_per_level(catalog, scan, *source);
   } else if (catalog.curvilinear) {
     up = up_along_axis(catalog.z);

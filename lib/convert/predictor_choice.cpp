@@ -89,6 +89,7 @@ void sample_bricks(BoxReader& reader, const OctreeLayout& layout,
   // The trial compares the codec chain alone; fpzip, where asked for, competes with the
   // chosen chain per brick afterwards (build/brick_encoder.cpp).
   none.fpzip = lorenzo3.fpzip = false;
+  none.zfp = lorenzo3.zfp = std::nullopt;  // likewise zfp, for a lossy variable
   for (std::size_t first = 0; first < nodes.size();) {
     std::size_t end = first;
     while (end < nodes.size() && nodes[end].index[2] == nodes[first].index[2]) ++end;

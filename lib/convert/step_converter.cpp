@@ -93,7 +93,10 @@ struct Context {
   const ProgressFn& progress;
 };
 
-void count_kind(StepCounts& c, const format::IndexEntry& e) {
+void count_kind(StepCounts& c, const EncodedBrick& b) {
+  const format::IndexEntry& e = b.entry;
+  c.lossy += e.coding == format::ChunkCoding::kZfp ? 1 : 0;
+  c.lossy_fallback += b.lossy_fallback ? 1 : 0;
   switch (e.kind) {
     case format::BrickKind::kEmpty: ++c.empty; break;
     case format::BrickKind::kConstant: ++c.constant; break;
@@ -266,7 +269,7 @@ class VariableConversion {
       const NodeId id = static_cast<NodeId>(l0_.first_node + s.layer * per_layer + i);
       const format::IndexEntry& e = s.bricks[i].entry;
       stats_[id - l0_.first_node] = NodeStats{e.min, e.max, e.valid_count};
-      count_kind(ctx_.counts, e);
+      count_kind(ctx_.counts, s.bricks[i]);
       ctx_.counts.chunk_bytes += s.bricks[i].chunk.size();
       ctx_.writer.add_brick(v_, id, std::move(s.bricks[i]));
     }
@@ -289,7 +292,7 @@ class VariableConversion {
       bricks[i] = encode_brick(block, layout_.level_box(key), nullptr, level_stats[i], codec_);
     });
     for (std::size_t i = 0; i < bricks.size(); ++i) {
-      count_kind(ctx_.counts, bricks[i].entry);
+      count_kind(ctx_.counts, bricks[i]);
       ctx_.counts.chunk_bytes += bricks[i].chunk.size();
       ctx_.writer.add_brick(v_, static_cast<NodeId>(shape.first_node + i), std::move(bricks[i]));
     }

@@ -21,6 +21,9 @@ struct StepCounts {
   std::uint64_t chunk_bytes = 0;
   std::uint64_t file_bytes = 0;
   std::uint64_t empty = 0, constant = 0, data = 0;  // bricks by kind, all variables
+  // Data bricks of lossy variables: coded by zfp, and kept lossless because zfp missed
+  // the bound (build/brick_encoder.h).
+  std::uint64_t lossy = 0, lossy_fallback = 0;
 };
 
 // Called with the number of source bytes just read.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "format/codec_spec.h"
 
+#include <cmath>
+
 #include "core/error.h"
 #include "format/json_fields.h"
 
@@ -10,7 +12,30 @@ namespace {
 using nlohmann::json;
 using json_fields::get;
 
+void validate_lossy(const LossySpec& z, bool fpzip) {
+  if (!(z.value > 0) || !std::isfinite(z.value)) {
+    throw make_error(ErrorCode::kInvalidArgument, "zfp {} tolerance {} is not positive and finite",
+                     lossy_mode_name(z.mode), z.value);
+  }
+  if (!(z.tolerance > 0) || !std::isfinite(z.tolerance)) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "zfp resolved tolerance {} is not positive and finite", z.tolerance);
+  }
+  if (z.mode == LossyMode::kAbsolute && z.tolerance != z.value) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "zfp abs tolerance {} differs from its resolved tolerance {}", z.value,
+                     z.tolerance);
+  }
+  if (fpzip) {
+    throw make_error(ErrorCode::kInvalidArgument, "a codec cannot have both zfp and fpzip");
+  }
+}
+
 }  // namespace
+
+std::string_view lossy_mode_name(LossyMode mode) {
+  return mode == LossyMode::kRelative ? "rel" : "abs";
+}
 
 void validate_codec(const CodecSpec& codec) {
   static const char* kNames[] = {"blosclz", "lz4", "lz4hc", "zlib", "zstd"};
@@ -31,12 +56,16 @@ void validate_codec(const CodecSpec& codec) {
     throw make_error(ErrorCode::kInvalidArgument, "predictor '{}' is not one of none, lorenzo3",
                      codec.predictor);
   }
+  if (codec.zfp) validate_lossy(*codec.zfp, codec.fpzip);
 }
 
 json codec_json(const CodecSpec& c, std::uint32_t version) {
   json j{{"name", c.name}, {"level", c.level}, {"shuffle", c.shuffle}};
   if (version >= kManifestVersionPredictors) j["predictor"] = c.predictor;
   if (c.fpzip) j["fpzip"] = true;
+  if (c.zfp) {
+    j["zfp"] = json{{"mode", std::string(lossy_mode_name(c.zfp->mode))}, {"value", c.zfp->value}, {"tolerance", c.zfp->tolerance}};
+  }
   return j;
 }
 
@@ -59,6 +88,25 @@ CodecSpec codec_from_json(const json& j, std::uint32_t version, std::string_view
     }
     if (!it->is_boolean()) throw make_error(ErrorCode::kCorrupt, "{}: key 'fpzip' is not a bool", what);
     c.fpzip = it->get<bool>();
+  }
+  if (const auto it = j.find("zfp"); it != j.end()) {
+    if (version < kManifestVersionLossy) {
+      throw make_error(ErrorCode::kCorrupt, "{}: key 'zfp' needs format version {} (this is {})",
+                       what, kManifestVersionLossy, version);
+    }
+    if (!it->is_object()) throw make_error(ErrorCode::kCorrupt, "{}: key 'zfp' is not an object", what);
+    const std::string where = fmt::format("{}: zfp", what);
+    for (const auto& [key, value] : it->items()) {
+      if (key != "mode" && key != "value" && key != "tolerance") {
+        throw make_error(ErrorCode::kCorrupt, "{}: unknown key '{}'", where, key);
+      }
+    }
+    const auto mode = get<std::string>(*it, "mode", where);
+    if (mode != "abs" && mode != "rel") {
+      throw make_error(ErrorCode::kCorrupt, "{}: mode '{}' is not one of abs, rel", where, mode);
+    }
+    c.zfp = LossySpec{mode == "rel" ? LossyMode::kRelative : LossyMode::kAbsolute,
+                      get<double>(*it, "value", where), get<double>(*it, "tolerance", where)};
   }
   try {
     validate_codec(c);

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -16,10 +17,27 @@ namespace strielad::format {
 inline constexpr std::uint32_t kManifestVersionPredictors = 2;
 // The first version with fpzip chunks (CodecSpec::fpzip, IndexEntry::coding).
 inline constexpr std::uint32_t kManifestVersionFpzip = 3;
+// The first version with error-bounded lossy zfp chunks (CodecSpec::zfp, coding 2).
+inline constexpr std::uint32_t kManifestVersionLossy = 6;
 
 // Predictors (formats/store.md, "Predictors").
 inline constexpr std::string_view kPredictorNone = "none";
 inline constexpr std::string_view kPredictorLorenzo3 = "lorenzo3";
+
+// How a lossy variable's bound was asked for (formats/store.md, "zfp chunks (version 6)"):
+// `abs`: the tolerance itself; `rel`: a fraction of the variable's range (max - min of its
+// valid samples over every converted step).
+enum class LossyMode : std::uint8_t { kAbsolute, kRelative };
+std::string_view lossy_mode_name(LossyMode mode);  // "abs", "rel"
+
+// Data bricks coded by zfp's fixed-accuracy mode, each valid sample within `tolerance` of
+// the original (verified at conversion; a brick that misses it keeps the codec chain).
+struct LossySpec {
+  LossyMode mode = LossyMode::kAbsolute;
+  double value = 0;      // as asked for: the tolerance (abs) or the fraction of the range (rel)
+  double tolerance = 0;  // the absolute bound every valid sample keeps
+  friend bool operator==(const LossySpec&, const LossySpec&) = default;
+};
 
 // Defaults from the strielad-bench io codec sweep (BENCHMARKS.md): Blosc level 1 (zstd
 // level 1) converts 2.4x faster than level 5 (zstd 9) for 9% more bytes; byte shuffle
@@ -32,10 +50,13 @@ struct CodecSpec {
   std::string predictor = "none";  // none, lorenzo3 (format version 2)
   // Data bricks may be fpzip chunks where those are smaller (format version 3).
   bool fpzip = false;
+  // Data bricks may be zfp chunks within this bound (format version 6); never with fpzip.
+  std::optional<LossySpec> zfp = std::nullopt;
   friend bool operator==(const CodecSpec&, const CodecSpec&) = default;
 };
 
-// Throws kInvalidArgument naming the bad field (an unknown predictor included).
+// Throws kInvalidArgument naming the bad field (an unknown predictor included; a lossy
+// spec whose tolerance is not positive and finite, or with fpzip).
 void validate_codec(const CodecSpec& codec);
 
 // A codec object as manifest `version` writes it: version 1 had no predictor.

@@ -111,6 +111,12 @@ std::uint32_t version_for_codecs(const Manifest& m) {
   return fpzip ? kManifestVersionFpzip : kManifestVersionPredictors;
 }
 
+bool has_lossy_codec(const Manifest& m) {
+  bool lossy = m.codec.zfp.has_value();
+  for (const StoreVariable& v : m.variables) lossy = lossy || (v.codec && v.codec->zfp);
+  return lossy;
+}
+
 bool needs_georeference_version(const Manifest& m) {
   return m.grid_mapping.has_value() || m.x.periodic || is_projection_kind(m.x.kind) ||
          is_projection_kind(m.y.kind);
@@ -119,6 +125,7 @@ bool needs_georeference_version(const Manifest& m) {
 bool needs_geometry_version(const Manifest& m) { return m.geometry.has_value(); }
 
 std::uint32_t version_for_plan(const Manifest& m) {
+  if (has_lossy_codec(m)) return kManifestVersionLossy;
   if (needs_geometry_version(m)) return kManifestVersionGeometry;
   return needs_georeference_version(m) ? kManifestVersionGeoreference : version_for_codecs(m);
 }
@@ -166,6 +173,12 @@ void check_plan_version(const Manifest& m) {
                        version);
     }
   }
+  if ((version >= kManifestVersionLossy) != has_lossy_codec(m)) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "a version {} manifest {} a lossy (zfp) codec (version {} is for one)", version,
+                     version < kManifestVersionLossy ? "cannot hold" : "needs", kManifestVersionLossy);
+  }
+  if (version >= kManifestVersionLossy) return;  // holds every earlier feature, or none
   if (version < kManifestVersionGeoreference &&
       (version >= kManifestVersionFpzip) != (version_for_codecs(m) >= kManifestVersionFpzip)) {
     throw make_error(ErrorCode::kInvalidArgument,
@@ -401,6 +414,7 @@ void read_geometry(const json& j, std::uint32_t version, std::string_view what, 
     return;
   }
   if (it == j.end()) {
+    if (version >= kManifestVersionLossy) return;  // optional from version 6 on
     throw make_error(ErrorCode::kCorrupt,
                      "{}: format version {} but no key 'geometry' (a writer uses version {} or "
                      "below then)",
@@ -412,6 +426,12 @@ void read_geometry(const json& j, std::uint32_t version, std::string_view what, 
 
 // A writer picks the lowest version that holds the content: a higher one is corrupt.
 void check_version_needed(const Manifest& m, std::uint32_t version, std::string_view what) {
+  if (version == kManifestVersionLossy && !has_lossy_codec(m)) {
+    throw make_error(ErrorCode::kCorrupt,
+                     "{}: format version {} but no codec has 'zfp' (a writer uses version {} or "
+                     "below then)",
+                     what, version, kManifestVersionGeometry);
+  }
   if (version == kManifestVersionGeoreference && !needs_georeference_version(m)) {
     throw make_error(ErrorCode::kCorrupt,
                      "{}: format version {} but the grid has no grid mapping, projection axis or "

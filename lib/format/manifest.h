@@ -19,10 +19,10 @@
 
 namespace strielad::format {
 
-// Manifest versions this code reads (1 to 5) and writes (2; 3 when a codec has fpzip; 4
+// Manifest versions this code reads (1 to 6) and writes (2; 3 when a codec has fpzip; 4
 // when the grid is placed by a grid mapping or goes round the Earth; 5 when it records a
-// grid geometry): formats/store.md.
-inline constexpr std::uint32_t kManifestFormatVersion = 5;
+// grid geometry; 6 when a codec is lossy, whatever else it holds): formats/store.md.
+inline constexpr std::uint32_t kManifestFormatVersion = 6;
 // The first version with georeferencing: a grid mapping (Manifest::grid_mapping),
 // projection axis kinds and periodic longitude axes (Axis::periodic).
 inline constexpr std::uint32_t kManifestVersionGeoreference = 4;
@@ -95,11 +95,14 @@ struct Manifest {
 
 // The version a new plan with these codecs is written as: 3 when any has fpzip, else 2.
 std::uint32_t version_for_codecs(const Manifest& manifest);
+// Whether some variable's codec (or the store-wide one) is lossy: zfp chunks, version 6.
+bool has_lossy_codec(const Manifest& manifest);
 // Whether the plan needs version 4: a grid mapping, a projection axis or a periodic axis.
 bool needs_georeference_version(const Manifest& manifest);
 // Whether the plan needs version 5: a grid geometry.
 bool needs_geometry_version(const Manifest& manifest);
-// The version a new plan is written as: 5 or 4 when it needs it, else version_for_codecs.
+// The version a new plan is written as: 6 with a lossy codec, else 5 or 4 when it needs
+// it, else version_for_codecs.
 std::uint32_t version_for_plan(const Manifest& manifest);
 
 // Path of a step file relative to the store directory: "steps/step-000042.bricks".
@@ -130,9 +133,9 @@ nlohmann::json manifest_to_json(const Manifest& manifest);
 // the key, kVersionTooNew for a format_version above kManifestFormatVersion.
 Manifest manifest_from_json(const nlohmann::json& json, std::string_view what);
 
-// Writes the frame and JSON with manifest.format_version (1 to 5).
+// Writes the frame and JSON with manifest.format_version (1 to 6).
 std::vector<std::byte> encode_manifest(const Manifest& manifest);
-// Reads versions 1 to 5; the frame's and the JSON's format_version must agree.
+// Reads versions 1 to 6; the frame's and the JSON's format_version must agree.
 Manifest decode_manifest(std::span<const std::byte> bytes, std::string_view what);
 
 }  // namespace strielad::format

@@ -269,7 +269,7 @@ std::vector<IndexEntry> decode_index_section(std::span<const std::byte> stored,
     };
     if (r1 | r2) throw bad("reserved bytes are not zero");
     if (kind > 2) throw bad(fmt::format("unknown brick kind {}", kind));
-    if (coding > 1) throw bad(fmt::format("unknown chunk coding {}", coding));
+    if (coding > 2) throw bad(fmt::format("unknown chunk coding {}", coding));
     e.kind = static_cast<BrickKind>(kind);
     e.coding = static_cast<ChunkCoding>(coding);
     if (e.coding != ChunkCoding::kCodec && e.kind != BrickKind::kData) {

@@ -61,8 +61,9 @@ struct SectionEntry {
 enum class BrickKind : std::uint8_t { kEmpty = 0, kConstant = 1, kData = 2 };
 
 // How a data brick's chunk is coded (formats/store.md, "Brick kinds"): the variable's codec
-// chain (predictor + Blosc), or an fpzip chunk (store version 3, a codec with fpzip).
-enum class ChunkCoding : std::uint8_t { kCodec = 0, kFpzip = 1 };
+// chain (predictor + Blosc), an fpzip chunk (store version 3, a codec with fpzip), or a
+// lossy zfp chunk (store version 6, a codec with zfp).
+enum class ChunkCoding : std::uint8_t { kCodec = 0, kFpzip = 1, kZfp = 2 };
 
 struct IndexEntry {
   std::uint64_t chunk_offset = 0;

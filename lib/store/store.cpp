@@ -14,6 +14,7 @@
 #include "store/brick_cache.h"
 #include "store/brick_codec.h"
 #include "store/fpzip_chunk.h"
+#include "store/zfp_chunk.h"
 
 namespace strielad {
 
@@ -269,6 +270,12 @@ Brick Store::decode_brick(StepState& s, const IndexEntry& e, NodeId node, DType 
                        "{}: chunk is coded with fpzip, but the codec does not allow it", what());
     }
     decompress_brick_fpzip(chunk, b.dtype, b.dims, b.bytes, what());
+  } else if (e.coding == format::ChunkCoding::kZfp) {
+    if (!codec.zfp) {
+      throw make_error(ErrorCode::kCorrupt,
+                       "{}: chunk is coded with zfp, but the codec is not lossy", what());
+    }
+    decompress_brick_zfp(chunk, b.dtype, b.dims, b.bytes, what());
   } else {
     decompress_brick(chunk, b.dtype, b.dims, codec, b.bytes, what());
   }

@@ -192,6 +192,12 @@ void describe_store(const Store& store, std::ostream& out) {
   }
   levels.print(out, "  ");
   const auto fpzip_text = [](const format::CodecSpec& c) {
+    if (c.zfp) {
+      const auto& z = *c.zfp;
+      return z.mode == format::LossyMode::kRelative
+                 ? fmt::format(", LOSSY zfp within {:g} (rel {:g} of the range)", z.tolerance, z.value)
+                 : fmt::format(", LOSSY zfp within {:g} (abs)", z.tolerance);
+    }
     return c.fpzip ? std::string(", fpzip where it pays") : std::string();
   };
   fmt::print(out, "codec      blosc {} level {} shuffle {}, predictor {}{} (format version {})\n",

@@ -9,8 +9,10 @@
 namespace strielad {
 namespace {
 
-// Level-0 bricks cover exactly the samples their statistics describe: recompute them.
-std::string check_level0_stats(const Brick& b, const format::IndexEntry& e) {
+// Level-0 bricks cover exactly the samples their statistics describe: recompute them. A
+// zfp chunk's samples are within `tolerance` of those the statistics were taken from
+// (formats/store.md, "zfp chunks (version 6)"), so its range may be that much wider.
+std::string check_level0_stats(const Brick& b, const format::IndexEntry& e, double tolerance) {
   double mn = NAN, mx = NAN;
   for (std::size_t i = 0; i < b.sample_count(); ++i) {
     const double v = b.sample(i);
@@ -19,6 +21,14 @@ std::string check_level0_stats(const Brick& b, const format::IndexEntry& e) {
     if (std::isnan(mx) || v > mx) mx = v;
   }
   const bool same = (std::isnan(mn) && std::isnan(e.min)) || (mn == e.min && mx == e.max);
+  if (e.coding == format::ChunkCoding::kZfp && !std::isnan(mn) && !std::isnan(e.min)) {
+    if (std::abs(mn - e.min) > tolerance || std::abs(mx - e.max) > tolerance) {
+      return fmt::format("recorded range [{}, {}] and the data's [{}, {}] differ by more than the "
+                         "lossy tolerance {}",
+                         e.min, e.max, mn, mx, tolerance);
+    }
+    return {};
+  }
   if (!same) {
     return fmt::format("recorded range [{}, {}] differs from the data's [{}, {}]", e.min, e.max, mn,
                        mx);
@@ -27,17 +37,19 @@ std::string check_level0_stats(const Brick& b, const format::IndexEntry& e) {
 }
 
 // Every brick of one index (a variable's or the geometry field's) decodes, and level-0
-// statistics match the data. `read` reads node n; `describe` names its file and node.
+// statistics match the data (within `tolerance` for zfp chunks). `read` reads node n;
+// `describe` names its file and node.
 template <typename ReadBrick, typename Describe>
 void check_bricks(std::span<const format::IndexEntry> entries, NodeId level0_end,
-                  const ReadBrick& read, const Describe& describe, VerifyReport& report) {
+                  const ReadBrick& read, const Describe& describe, VerifyReport& report,
+                  double tolerance = 0) {
   for (NodeId n = 0; n < entries.size(); ++n) {
     try {
       const Brick b = read(n);
       ++report.bricks_checked;
       report.chunk_bytes_checked += entries[n].chunk_size;
       if (n < level0_end) {
-        const std::string why = check_level0_stats(b, entries[n]);
+        const std::string why = check_level0_stats(b, entries[n], tolerance);
         if (!why.empty()) report.problems.push_back(fmt::format("{}: {}", describe(n), why));
       }
     } catch (const Error& e) {
@@ -126,9 +138,10 @@ VerifyReport verify_store(const std::filesystem::path& dir,
         damaged = true;  // the step's structure is damaged; its other sections would repeat it
         break;
       }
+      const auto& zfp = store->manifest().codec_of(v).zfp;
       check_bricks(
           entries, level0_end, [&](NodeId n) { return store->read_brick(s, v, n); }, describe(v),
-          report);
+          report, zfp ? zfp->tolerance : 0.0);
     }
     if (!field_per_step || damaged) continue;
     std::span<const format::IndexEntry> entries;

@@ -204,13 +204,13 @@ TEST(ManifestGeometryTest, ReadersRejectVersionFiveWithoutGeometry) {
                ErrorCode::kCorrupt, {"MANIFEST", "format version 5 but no key 'geometry'"});
 }
 
-TEST(ManifestGeometryTest, ReadersRejectVersionSixAsTooNew) {
+TEST(ManifestGeometryTest, ReadersRejectVersionSevenAsTooNew) {
   std::vector<std::byte> bytes = encode_manifest(hybrid_height());
-  bytes[8] = std::byte{6};
+  bytes[8] = std::byte{7};
   expect_error([&] { decode_manifest(bytes, "MANIFEST"); }, ErrorCode::kVersionTooNew,
-               {"MANIFEST", "version 6 is newer than this reader (max 5)"});
-  expect_error([] { decode_edited(hybrid_height(), [](Json& j) { j["format_version"] = 6; }); },
-               ErrorCode::kVersionTooNew, {"max 5"});
+               {"MANIFEST", "version 7 is newer than this reader (max 6)"});
+  expect_error([] { decode_edited(hybrid_height(), [](Json& j) { j["format_version"] = 7; }); },
+               ErrorCode::kVersionTooNew, {"max 6"});
 }
 
 TEST(ManifestGeometryTest, ReadersRejectUnknownKindsAndQuantities) {

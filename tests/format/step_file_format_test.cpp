@@ -124,9 +124,12 @@ TEST(StepFileFormatTest, IndexEntryChunkCodingRoundTripsAndIsChecked) {
   const auto out = decode_index_section(stored, section_for(stored, SectionCodec::kRaw), 3, 64, 200, "s");
   EXPECT_EQ(out[2].coding, ChunkCoding::kFpzip);
   EXPECT_EQ(out[1].coding, ChunkCoding::kCodec);
-  stored[2 * kIndexEntrySize + 13] = std::byte{2};
+  stored[2 * kIndexEntrySize + 13] = std::byte{2};  // a zfp chunk (store version 6)
+  EXPECT_EQ(decode_index_section(stored, section_for(stored, SectionCodec::kRaw), 3, 64, 200, "s")[2].coding,
+            ChunkCoding::kZfp);
+  stored[2 * kIndexEntrySize + 13] = std::byte{3};
   expect_error([&] { decode_index_section(stored, section_for(stored, SectionCodec::kRaw), 3, 64, 200, "s"); },
-               ErrorCode::kCorrupt, {"node 2", "unknown chunk coding 2"});
+               ErrorCode::kCorrupt, {"node 2", "unknown chunk coding 3"});
   stored[2 * kIndexEntrySize + 13] = std::byte{1};
   stored[1 * kIndexEntrySize + 13] = std::byte{1};  // a constant brick has no chunk
   expect_error([&] { decode_index_section(stored, section_for(stored, SectionCodec::kRaw), 3, 64, 200, "s"); },

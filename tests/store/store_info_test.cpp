@@ -25,7 +25,8 @@ using namespace strielad::testing;
 
 // A store of one file with `grid` and the named float variables (a ramp each).
 std::shared_ptr<const Store> make_store(const TempDir& dir, const SimpleGrid& grid,
-                                  const std::vector<std::pair<std::string, std::string>>& vars) {
+                                  const std::vector<std::pair<std::string, std::string>>& vars,
+                                  const std::string& lossy = {}) {
   NetcdfFixture file;
   file.grid(grid);
   for (const auto& [name, units] : vars) {
@@ -38,6 +39,7 @@ std::shared_ptr<const Store> make_store(const TempDir& dir, const SimpleGrid& gr
   o.store = dir / "store";
   o.brick = 2;
   o.threads = 1;
+  if (!lossy.empty()) o.lossy = build::parse_lossy(lossy);
   build::convert(o);
   return Store::open(o.store);
 }
@@ -209,6 +211,25 @@ TEST(StoreInfoTest, StoreWithoutGeometryHasNoGeometryLine) {
   describe_store(*store, out);
   EXPECT_EQ(out.str().find("geometry"), std::string::npos) << out.str();
   EXPECT_FALSE(store_info_json(*store).contains("geometry_info"));
+}
+
+TEST(StoreInfoTest, LossyVariablesShowTheirBoundInTextAndJson) {
+  TempDir dir;
+  SimpleGrid g;
+  const auto store = make_store(dir, g, {{"t", "K"}, {"u", "m s-1"}}, "t=abs:0.25,u=rel:0.01");
+  std::ostringstream out;
+  describe_store(*store, out);
+  const std::string text = out.str();
+  EXPECT_NE(text.find("(format version 6)"), std::string::npos) << text;
+  const auto codecs = section(text, "codec");
+  ASSERT_EQ(codecs.size(), 2u) << text;
+  EXPECT_NE(codecs[0].find("t "), std::string::npos) << codecs[0];
+  EXPECT_NE(codecs[0].find("LOSSY zfp within 0.25 (abs)"), std::string::npos) << codecs[0];
+  EXPECT_NE(codecs[1].find("LOSSY zfp within 0.23 (rel 0.01 of the range)"), std::string::npos)
+      << codecs[1];  // u is a ramp 0 .. 23 here
+  const auto j = store_info_json(*store);
+  EXPECT_EQ(j["variables"][0]["codec"]["zfp"]["tolerance"], 0.25);
+  EXPECT_EQ(j["variables"][1]["codec"]["zfp"]["mode"], "rel");
 }
 
 }  // namespace
