@@ -11,7 +11,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
-from store_rewrite import fix_manifest, read_manifest, rewrite, sections_of, xxh3  # noqa: E402
+from store_rewrite import data_bricks, fix_manifest, read_manifest, rewrite, xxh3  # noqa: E402
 
 
 def stream_seed(nx, ny, nz, t):
@@ -35,29 +35,22 @@ def main():
     store, crafted = Path(sys.argv[1]), Path(sys.argv[2]).read_bytes()[16:]
     raw, n, manifest = read_manifest(store)
     brick = manifest["octree"]["brick"]
-    node_count = manifest["octree"]["node_count"]
-    for entry in manifest["steps"]:
-        path = store / entry["file"]
-        data = bytearray(path.read_bytes())
-        table, sections = sections_of(data)
-        for v, section in enumerate(sections):
-            for node in range(node_count):
-                at = 56 * node
-                c_off, c_size, kind, coding = struct.unpack_from("<QIBB", section, at)
-                if kind != 2 or coding != 1:
-                    continue
-                chunk = bytes(data[c_off:c_off + c_size])
-                nx, ny, nz, t = brick_of(chunk, brick)
-                if (nx, ny, nz, t) != (5, 5, 5, 0) and len(sys.argv) < 4:
-                    continue  # the crafted streams fit float32 bricks of 5x5x5
-                stream = (crafted + bytes(c_size))[:c_size - 16]
-                forged = chunk[:8] + struct.pack("<Q", xxh3(stream, stream_seed(nx, ny, nz, t))) + stream
-                data[c_off:c_off + c_size] = forged
-                struct.pack_into("<Q", section, at + 16, xxh3(forged))
-                rewrite(path, data, table, v, bytes(section))
-                fix_manifest(store, raw, n, entry)
-                print(entry["file"], manifest["variables"][v]["name"], node, nx, ny, nz)
-                return
+    for entry, path, data, table, sections, v, node, at, c_off, c_size, coding in data_bricks(store, manifest):
+        if coding != 1:
+            continue
+        chunk = bytes(data[c_off:c_off + c_size])
+        nx, ny, nz, t = brick_of(chunk, brick)
+        if (nx, ny, nz, t) != (5, 5, 5, 0) and len(sys.argv) < 4:
+            continue  # the crafted streams fit float32 bricks of 5x5x5
+        stream = (crafted + bytes(c_size))[:c_size - 16]
+        forged = chunk[:8] + struct.pack("<Q", xxh3(stream, stream_seed(nx, ny, nz, t))) + stream
+        data[c_off:c_off + c_size] = forged
+        section = sections[v]
+        struct.pack_into("<Q", section, at + 16, xxh3(forged))
+        rewrite(path, data, table, v, bytes(section))
+        fix_manifest(store, raw, n, entry)
+        print(entry["file"], manifest["variables"][v]["name"], node, nx, ny, nz)
+        return
     raise SystemExit("no fpzip chunk of a 5x5x5 float32 brick in the store")
 
 

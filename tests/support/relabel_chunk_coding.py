@@ -5,33 +5,23 @@
 # chunk claims a coding its variable's codec does not allow. Prints the relabelled node
 # as "STEP_FILE VARIABLE NODE".
 # Usage: relabel_chunk_coding.py STORE CODING
-import struct
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
-from store_rewrite import fix_manifest, read_manifest, rewrite, sections_of  # noqa: E402
+from store_rewrite import data_bricks, fix_manifest, read_manifest, rewrite  # noqa: E402
 
 
 def main():
     store, coding = Path(sys.argv[1]), int(sys.argv[2])
     raw, n, manifest = read_manifest(store)
-    node_count = manifest["octree"]["node_count"]
-    for entry in manifest["steps"]:
-        path = store / entry["file"]
-        data = bytearray(path.read_bytes())
-        table, sections = sections_of(data)
-        for v, section in enumerate(sections):
-            for node in range(node_count):
-                at = 56 * node
-                kind = section[at + 12]
-                if kind != 2:
-                    continue
-                section[at + 13] = coding
-                rewrite(path, data, table, v, bytes(section))
-                fix_manifest(store, raw, n, entry)
-                print(entry["file"], manifest["variables"][v]["name"], node)
-                return
+    for entry, path, data, table, sections, v, node, at, *_ in data_bricks(store, manifest):
+        section = sections[v]
+        section[at + 13] = coding
+        rewrite(path, data, table, v, bytes(section))
+        fix_manifest(store, raw, n, entry)
+        print(entry["file"], manifest["variables"][v]["name"], node)
+        return
     raise SystemExit("no data brick in the store")
 
 

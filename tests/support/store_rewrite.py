@@ -5,8 +5,6 @@
 import ctypes
 import json
 import struct
-import sys
-from pathlib import Path
 
 xxh = ctypes.CDLL("libxxhash.so.0")
 xxh.XXH3_64bits.restype = ctypes.c_uint64
@@ -45,6 +43,22 @@ def sections_of(data):
             section = out.raw
         sections.append(bytearray(section))
     return table, sections
+
+
+def data_bricks(store, manifest):
+    """Every data brick's index entry in every step file: (step entry of the manifest, step
+    file path, its bytes, section table, sections, variable, node, entry offset in the
+    section, chunk offset, chunk size, coding)."""
+    for entry in manifest["steps"]:
+        path = store / entry["file"]
+        data = bytearray(path.read_bytes())
+        table, sections = sections_of(data)
+        for v, section in enumerate(sections):
+            for node in range(manifest["octree"]["node_count"]):
+                at = 56 * node
+                c_off, c_size, kind, coding = struct.unpack_from("<QIBB", section, at)
+                if kind == 2:
+                    yield entry, path, data, table, sections, v, node, at, c_off, c_size, coding
 
 
 def rewrite(path, data, table, v, section):
