@@ -29,7 +29,7 @@ double lattice_coordinate(double p, double lo, double hi, std::size_t n) {
 constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 // The smallest cos(latitude) a globe displacement's east part is divided by (as
-// lib/advect's rate, 0.2 m from a pole).
+// lib/advect's rate).
 constexpr double kMinCosLatitude = 1e-6;
 
 // Trajectories of a globe map start at most this far from the equator: at a pole a
@@ -38,7 +38,8 @@ constexpr double kMinCosLatitude = 1e-6;
 // neighbourhood.
 constexpr double kMaxStartLatitude = 89.9;
 
-// The lattice of a globe map and the heights (km) of the domain's vertical range.
+// A globe map's lattice box: the domain's geographic box (a whole turn of longitudes
+// when periodic) by its height range in km.
 lod::WorldBox globe_box(const lod::WorldFrame& frame, bool periodic) {
   const auto g = frame.geographic_bounds();
   const double z0 = frame.sample_world_z(0);
@@ -156,7 +157,6 @@ DisplacementMap compute_displacement_map(const WindStep& wind, const lod::WorldF
                                                   static_cast<double>(lattice[a] - 1),
                               map.box.lo[a] + 1e-9 * extent, map.box.hi[a] - 1e-9 * extent);
       }
-      // On the globe the lattice point is a geodetic position (km heights).
       // On the globe the lattice point is a geodetic position (km heights), its
       // trajectory starting at most kMaxStartLatitude from the equator.
       if (map.globe) start[1] = std::clamp(start[1], -kMaxStartLatitude, kMaxStartLatitude);
