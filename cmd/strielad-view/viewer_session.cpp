@@ -45,16 +45,11 @@ void open_advection(const ViewerArgs& args, ViewerSession& session) {
                                       "needs --wind-store DIR to read the wind from");
     return;
   }
-  if (session.link->placer().frame().globe()) {
-    // The displacement maps move meshes on the tangent plane (view/displacement_map.h).
-    session.advection_status = "advection moves meshes on the tangent plane only: this domain "
-                               "is on the globe (--shape plane to advect)";
-    if (args.advect) {
-      throw make_error(ErrorCode::kUnsupported, "--advect: {}", session.advection_status);
-    }
-    return;
-  }
   view::AdvectionSettings settings;
+  // On the globe the maps move meshes in longitude, latitude and height
+  // (view/displacement_map.h).
+  settings.shape = session.link->placer().frame().globe() ? lod::FrameShape::kGlobe
+                                                          : lod::FrameShape::kPlane;
   settings.names = view::parse_wind_names(args.wind);
   settings.level = args.wind_level;
   settings.displacement.integrator.method = advect::parse_method(args.integrator);

@@ -3,7 +3,9 @@
 // view::DisplacementMap as 3D textures (RGB32F, linear filtering), and per draw the two
 // keyframes around the mesh's time with the weight between them. The geometry vertex
 // shader adds the displacement (trilinear in space, linear between the keyframes) to
-// each vertex; view::DisplacementMap::displacement_at is the same on the CPU.
+// each vertex; view::DisplacementMap::displacement_at is the same on the CPU. On the
+// globe it moves the vertex in longitude, latitude and height and places it back on the
+// ellipsoid (view::DisplacementMap::moved_on_globe on the CPU).
 #pragma once
 
 #include <cstddef>

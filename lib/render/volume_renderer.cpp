@@ -285,6 +285,7 @@ void bind_motion(GLuint g, const MotionBinding* motion) {
   set_vec3(g, "u_motion_size", size);
   set_vec3(g, "u_motion_lattice",
            Vec3{double(map.lattice[0]), double(map.lattice[1]), double(map.lattice[2])});
+  glProgramUniform1i(g, location(g, "u_motion_periodic"), map.periodic ? 1 : 0);
   glBindTextureUnit(2, motion->from);
   glBindTextureUnit(3, motion->to);
 }

@@ -23,6 +23,35 @@ struct Fragment {
 };
 )";
 
+// WGS84 in GLSL: the constants, the geodetic position of an ECEF one and back.
+constexpr const char* kWgs84Glsl = R"(
+const float WGS84_A = 6378.137;          // km
+const float WGS84_B = 6356.752314245;    // km
+const float WGS84_E2 = 6.69437999014e-3;
+const float WGS84_EP2 = 6.73949674228e-3;  // second eccentricity squared
+// The geodetic latitude (radians) of an ECEF position: Bowring's closed form.
+float globe_latitude(vec3 p) {
+  float r = length(p.xy);
+  float t = atan(p.z * WGS84_A, r * WGS84_B);
+  float st = sin(t), ct = cos(t);
+  return atan(p.z + WGS84_EP2 * WGS84_B * st * st * st, r - WGS84_E2 * WGS84_A * ct * ct * ct);
+}
+// The height above the WGS84 ellipsoid (km, as placed: exaggerated) of an ECEF position:
+// h = r cos(lat) + z sin(lat) - a w, which holds at every latitude (poles included)
+// without dividing by a small number.
+float globe_height_km(vec3 p) {
+  float lat = globe_latitude(p);
+  float s = sin(lat);
+  return length(p.xy) * cos(lat) + p.z * s - WGS84_A * sqrt(1.0 - WGS84_E2 * s * s);
+}
+// ECEF km of geodetic longitude and latitude (radians) and height (km).
+vec3 globe_place(float lon, float lat, float h) {
+  float s = sin(lat), c = cos(lat);
+  float n = WGS84_A / sqrt(1.0 - WGS84_E2 * s * s);
+  return vec3((n + h) * c * cos(lon), (n + h) * c * sin(lon), (n * (1.0 - WGS84_E2) + h) * s);
+}
+)";
+
 std::string glsl_identifier(const std::string& name) {
   std::string out;
   for (const char c : name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
@@ -42,21 +71,7 @@ uniform float u_vertical_exaggeration;
 // > 0 on the globe: world positions are WGS84 ECEF km whose heights carry this
 // exaggeration (the meshes' own; u_vertical_exaggeration is then 1).
 uniform float u_globe_exaggeration;
-const float WGS84_A = 6378.137;          // km
-const float WGS84_B = 6356.752314245;    // km
-const float WGS84_E2 = 6.69437999014e-3;
-const float WGS84_EP2 = 6.73949674228e-3;  // second eccentricity squared
-// The height above the WGS84 ellipsoid (km, as placed: exaggerated) of an ECEF position:
-// Bowring's closed form for the latitude, then h = r cos(lat) + z sin(lat) - a w, which
-// holds at every latitude (poles included) without dividing by a small number.
-float globe_height_km(vec3 p) {
-  float r = length(p.xy);
-  float t = atan(p.z * WGS84_A, r * WGS84_B);
-  float st = sin(t), ct = cos(t);
-  float lat = atan(p.z + WGS84_EP2 * WGS84_B * st * st * st, r - WGS84_E2 * WGS84_A * ct * ct * ct);
-  float s = sin(lat);
-  return r * cos(lat) + p.z * s - WGS84_A * sqrt(1.0 - WGS84_E2 * s * s);
-}
+)" + std::string(kWgs84Glsl) + R"(
 // Height in metres of a world position, without the vertical exaggeration: above the
 // vertical axis' zero on the plane (standard-atmosphere height on pressure axes), above
 // the WGS84 ellipsoid on the globe.
@@ -99,6 +114,10 @@ uniform float u_motion_weight;
 uniform vec3 u_motion_lo;
 uniform vec3 u_motion_size;
 uniform vec3 u_motion_lattice;
+// The globe (u_globe_exaggeration > 0): the map is in (longitude deg, latitude deg,
+// height km) and holds (dlon cos(lat0), dlat, dh) (view/displacement_map.h).
+uniform float u_globe_exaggeration;
+uniform bool u_motion_periodic;
 layout(binding = 2) uniform sampler3D u_motion_from;
 layout(binding = 3) uniform sampler3D u_motion_to;
 out vec3 v_world;
@@ -107,18 +126,47 @@ out float v_eye_depth;
 flat out int v_slot;
 out vec4 v_attributes0;
 out vec4 v_attributes1;
+)" + std::string(kWgs84Glsl) + R"(
+// The displacement recorded at lattice-space position q (trilinear in space, linear
+// between the two keyframes); texel centres sit at lattice points: (u (n - 1) + 0.5) / n.
+vec3 motion_at(vec3 q) {
+  vec3 u = clamp((q - u_motion_lo) / u_motion_size, 0.0, 1.0);
+  if (u_motion_periodic) u.x = fract((q.x - u_motion_lo.x) / 360.0);
+  vec3 tc = (u * (u_motion_lattice - 1.0) + 0.5) / u_motion_lattice;
+  return mix(texture(u_motion_from, tc).xyz, texture(u_motion_to, tc).xyz, u_motion_weight);
+}
+const float DEGREES = 57.29577951308232;
 void main() {
   vec3 position = a_position;
-  if (u_moving) {
-    // Texel centres sit at lattice points: (u (n - 1) + 0.5) / n.
-    vec3 u = clamp((a_position - u_motion_lo) / u_motion_size, 0.0, 1.0);
-    vec3 tc = (u * (u_motion_lattice - 1.0) + 0.5) / u_motion_lattice;
-    position += mix(texture(u_motion_from, tc).xyz, texture(u_motion_to, tc).xyz,
-                    u_motion_weight);
+  vec3 normal = a_normal;
+  if (u_moving && u_globe_exaggeration > 0.0) {
+    // Moved in longitude, latitude and height, placed back on the globe at the
+    // exaggerated height; the normal keeps its east/north/up parts.
+    float lon = atan(a_position.y, a_position.x), lat = globe_latitude(a_position);
+    float h = globe_height_km(a_position);
+    float lon_deg = lon * DEGREES;
+    if (!u_motion_periodic) {
+      float centre = u_motion_lo.x + 0.5 * u_motion_size.x;
+      lon_deg = centre + (lon_deg - centre) - 360.0 * floor((lon_deg - centre) / 360.0 + 0.5);
+    }
+    vec3 d = motion_at(vec3(lon_deg, lat * DEGREES, h / u_globe_exaggeration));
+    float lon1 = lon + d.x / max(cos(lat), 1e-6) / DEGREES;
+    float lat1 = lat + d.y / DEGREES;
+    float h1 = h + d.z * u_globe_exaggeration;
+    position = a_position + (globe_place(lon1, lat1, h1) - globe_place(lon, lat, h));
+    vec3 e0 = vec3(-sin(lon), cos(lon), 0.0);
+    vec3 up0 = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
+    vec3 n0 = cross(up0, e0);
+    vec3 e1 = vec3(-sin(lon1), cos(lon1), 0.0);
+    vec3 up1 = vec3(cos(lat1) * cos(lon1), cos(lat1) * sin(lon1), sin(lat1));
+    vec3 n1 = cross(up1, e1);
+    normal = dot(a_normal, e0) * e1 + dot(a_normal, n0) * n1 + dot(a_normal, up0) * up1;
+  } else if (u_moving) {
+    position += motion_at(a_position);
   }
   vec3 world = vec3(position.xy, position.z * u_vertical_exaggeration);
   v_world = world;
-  v_normal = vec3(a_normal.xy, a_normal.z / u_vertical_exaggeration);
+  v_normal = vec3(normal.xy, normal.z / u_vertical_exaggeration);
   v_eye_depth = -(u_view * vec4(world, 1.0)).z;
   v_slot = int(a_slot + 0.5);
   v_attributes0 = a_attributes0;

@@ -15,7 +15,7 @@ AdvectionWorker::AdvectionWorker(std::shared_ptr<const Store> store, AdvectionSe
       settings_(std::move(settings)),
       level_(settings_.level.value_or(choose_wind_level(store_->octree()))),
       frame_(store_->manifest(),
-             lod::WorldFrameOptions{.vertical_exaggeration = 1.0},
+             lod::WorldFrameOptions{.vertical_exaggeration = 1.0, .shape = settings_.shape},
              representative_level_heights_m(*store_), store_->horizontal_coordinates()) {
   wind_variables(*store_, settings_.names, level_);  // refuse a store without wind up front
   thread_ = std::thread([this] { run(); });

@@ -25,6 +25,8 @@ struct AdvectionSettings {
   WindNames names;
   std::optional<std::uint32_t> level;  // default: choose_wind_level
   DisplacementOptions displacement;
+  // The shape the meshes are drawn on (the viewer's frame decides; kAuto is not taken).
+  lod::FrameShape shape = lod::FrameShape::kPlane;
 };
 
 class AdvectionWorker {

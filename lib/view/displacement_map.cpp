@@ -7,8 +7,10 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 
 #include "core/error.h"
+#include "lod/wgs84_globe.h"
 
 namespace strielad::view {
 namespace {
@@ -24,9 +26,38 @@ double lattice_coordinate(double p, double lo, double hi, std::size_t n) {
   return std::clamp(u, 0.0, static_cast<double>(n - 1));
 }
 
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+// The smallest cos(latitude) a globe displacement's east part is divided by (as
+// lib/advect's rate).
+constexpr double kMinCosLatitude = 1e-6;
+
+// Trajectories of a globe map start at most this far from the equator: at a pole a
+// longitude has no meaning (lib/advect turns it at u / (R 1e-6)), while 0.1 degree away
+// the zonal displacement times cos(latitude), what the map stores, is that of the pole's
+// neighbourhood.
+constexpr double kMaxStartLatitude = 89.9;
+
+// A globe map's lattice box: the domain's geographic box (a whole turn of longitudes
+// when periodic) by its height range in km.
+lod::WorldBox globe_box(const lod::WorldFrame& frame, bool periodic) {
+  const auto g = frame.geographic_bounds();
+  const double z0 = frame.sample_world_z(0);
+  const double z1 = frame.sample_world_z(frame.dims().z - 1);
+  lod::WorldBox box;
+  box.lo = {g.lon_lo, g.lat_lo, std::min(z0, z1)};
+  box.hi = {periodic ? g.lon_lo + 360.0 : g.lon_hi, g.lat_hi, std::max(z0, z1)};
+  return box;
+}
+
 }  // namespace
 
-Vec3 DisplacementMap::displacement_at(const Vec3& p, double s) const {
+Vec3 DisplacementMap::displacement_at(const Vec3& p_in, double s) const {
+  Vec3 p = p_in;
+  if (periodic) {
+    const double x = p[0] - box.lo[0];
+    p[0] = box.lo[0] + (x - 360.0 * std::floor(x / 360.0));
+  }
   std::array<std::size_t, 3> i0{};
   std::array<double, 3> f{};
   for (int a = 0; a < 3; ++a) {
@@ -56,6 +87,25 @@ Vec3 DisplacementMap::displacement_at(const Vec3& p, double s) const {
   return out;
 }
 
+Vec3 DisplacementMap::moved_on_globe(const Vec3& ecef_km, double s, double exaggeration) const {
+  const auto g = lod::ecef_km_to_geodetic(ecef_km);
+  double lon = g.lon_deg;
+  if (!periodic) {  // about the lattice's centre, then clamped by displacement_at
+    const double centre = 0.5 * (box.lo[0] + box.hi[0]);
+    lon = centre + std::remainder(lon - centre, 360.0);
+  }
+  const double height = g.height_km / exaggeration;
+  const Vec3 d = displacement_at({lon, g.lat_deg, height}, s);
+  const double c = std::max(std::cos(g.lat_deg / kDegrees), kMinCosLatitude);
+  const Vec3 from = lod::geodetic_to_ecef_km(g.lon_deg, g.lat_deg, g.height_km);
+  const Vec3 to = lod::geodetic_to_ecef_km(g.lon_deg + d[0] / c, g.lat_deg + d[1],
+                                           (height + d[2]) * exaggeration);
+  // The shader adds the difference of the two placements to the vertex (so that a zero
+  // displacement leaves it exactly where it was); so does this.
+  return {ecef_km[0] + to[0] - from[0], ecef_km[1] + to[1] - from[1],
+          ecef_km[2] + to[2] - from[2]};
+}
+
 DisplacementMap compute_displacement_map(const WindStep& wind, const lod::WorldFrame& frame,
                                          const DisplacementOptions& options) {
   const auto started = std::chrono::steady_clock::now();
@@ -79,7 +129,9 @@ DisplacementMap compute_displacement_map(const WindStep& wind, const lod::WorldF
   DisplacementMap map;
   map.step = wind.step;
   map.seconds = wind.seconds;
-  map.box = frame.domain();
+  map.globe = frame.globe();
+  map.periodic = map.globe && wind.field.grid().periodic_x;
+  map.box = map.globe ? globe_box(frame, map.periodic) : frame.domain();
   map.lattice = lattice;
   map.keyframes = options.keyframes;
   const std::size_t points = map.points();
@@ -105,7 +157,14 @@ DisplacementMap compute_displacement_map(const WindStep& wind, const lod::WorldF
                                                   static_cast<double>(lattice[a] - 1),
                               map.box.lo[a] + 1e-9 * extent, map.box.hi[a] - 1e-9 * extent);
       }
-      Vec3 position = wind.units.to_wind(frame.to_axis(start));
+      // On the globe the lattice point is a geodetic position (km heights), its
+      // trajectory starting at most kMaxStartLatitude from the equator.
+      if (map.globe) start[1] = std::clamp(start[1], -kMaxStartLatitude, kMaxStartLatitude);
+      const Vec3 start_world =
+          map.globe ? frame.place_geographic(start[0], start[1], start[2]) : start;
+      const double start_cos = std::cos(start[1] / kDegrees);
+      const Vec3 start_axis = frame.to_axis(start_world);
+      Vec3 position = wind.units.to_wind(start_axis);
       bool moving = true;
       const std::size_t point = (z * lattice[1] + y) * lattice[0] + x;
       Vec3 last{0, 0, 0};
@@ -122,7 +181,16 @@ DisplacementMap compute_displacement_map(const WindStep& wind, const lod::WorldF
           const Vec3 world = frame.to_world(wind.units.to_axis(position));
           bool finite = true;
           for (int a = 0; a < 3; ++a) finite = finite && std::isfinite(world[a]);
-          if (finite) {
+          if (finite && map.globe) {
+            const Vec3 g = frame.geographic_of(world);
+            // A longitude axis gives the trajectory's longitude unwrapped (it may go
+            // round more than half a turn near a pole); other axes through the globe,
+            // the short way round.
+            const double dlon = frame.horizontal() == lod::HorizontalMap::kGeographic
+                                    ? wind.units.to_axis(position)[0] - start_axis[0]
+                                    : std::remainder(g[0] - start[0], 360.0);
+            last = {dlon * start_cos, g[1] - start[1], g[2] - start[2]};
+          } else if (finite) {
             for (int a = 0; a < 3; ++a) last[a] = world[a] - start[a];
           } else {
             moving = false;  // e.g. a pressure the standard atmosphere cannot place

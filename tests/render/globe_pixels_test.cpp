@@ -3,12 +3,17 @@
 // round Earth on the background, lit by the true sun at the simulation time, the day side
 // bright and the night side dim but readable (the built-in clouds shader's ambient light);
 // a user shader's height_m() gives the height above the ellipsoid, and alpha() gets true
-// (unexaggerated) kilometres; flight tracks drawn over the globe.
+// (unexaggerated) kilometres; flight tracks drawn over the globe; clouds moved with the
+// wind turn round the Earth at their height (a map of D degrees east everywhere draws
+// them as the unmoved clouds seen from D degrees further west).
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
+#include <numbers>
+#include <vector>
 #include <thread>
 
 #include "render/complete_frame.h"
@@ -20,6 +25,7 @@
 #include "support/function_dem.h"
 #include "support/globe_store.h"
 #include "support/temp_dir.h"
+#include "view/displacement_map.h"
 #include "view/globe_view.h"
 #include "view/local_server.h"
 #include "view/simulation_time.h"
@@ -81,9 +87,11 @@ class GlobePixelsTest : public ::testing::Test {
     connection_.server.reset();
   }
 
-  render::CompleteFrame render(const lod::Camera& camera, const Vec3& sun) {
+  render::CompleteFrame render(const lod::Camera& camera, const Vec3& sun,
+                               std::vector<view::MeshMotion> motions = {}) {
     auto inputs = render::frame_inputs(*controller_, camera);
     inputs.sun_direction = sun;
+    inputs.motions = std::move(motions);
     return render::render_complete_frame(*controller_, *renderer_, *target_, inputs);
   }
 
@@ -325,6 +333,138 @@ TEST_F(GlobePixelsTest, FlightTracksLieWhereTheyArePlaced) {
   }
   // Not drawn yet: east of the aircraft.
   EXPECT_FALSE(is_track(project(cam, frame.place_geographic(25.0, 0.0, up))));
+}
+
+}  // namespace
+}  // namespace strielad::testing
+
+namespace strielad::testing {
+namespace {
+
+// A globe displacement map (view/displacement_map.h) that turns everything `east_deg`
+// degrees east about the polar axis by the end of its 600 s: east part D cos(lat) at
+// every latitude (the map stores dlon cos(lat0)), nothing north or up.
+std::shared_ptr<const view::DisplacementMap> turning_map(double east_deg) {
+  auto map = std::make_shared<view::DisplacementMap>();
+  map->step = 0;
+  map->seconds = 600;
+  map->globe = true;
+  map->periodic = true;
+  map->box.lo = {-180.0, -90.0, 0.0};
+  map->box.hi = {180.0, 90.0, 15.0};
+  map->lattice = {2, 181, 2};
+  map->keyframes = 2;
+  map->displacement.assign(map->points() * 3 * map->keyframes, 0.0f);
+  for (std::size_t z = 0; z < 2; ++z) {
+    for (std::size_t y = 0; y < 181; ++y) {
+      for (std::size_t x = 0; x < 2; ++x) {
+        const std::size_t point = (z * 181 + y) * 2 + x;
+        const double lat = -90.0 + static_cast<double>(y);
+        map->displacement[(map->points() + point) * 3] =
+            static_cast<float>(east_deg * std::cos(lat * std::numbers::pi / 180.0));
+      }
+    }
+  }
+  return map;
+}
+
+Vec3 turned_east(const Vec3& v, double deg) {
+  const double a = deg * std::numbers::pi / 180.0;
+  return {v[0] * std::cos(a) - v[1] * std::sin(a), v[0] * std::sin(a) + v[1] * std::cos(a), v[2]};
+}
+
+// Pixels whose colour differs by more than a little.
+int differing_pixels(const render::RgbaImage& a, const render::RgbaImage& b) {
+  int n = 0;
+  for (int y = 0; y < a.height; ++y) {
+    for (int x = 0; x < a.width; ++x) {
+      const auto p = a.at(x, y), q = b.at(x, y);
+      n += std::abs(int(p[0]) - int(q[0])) + std::abs(int(p[1]) - int(q[1])) +
+                       std::abs(int(p[2]) - int(q[2])) > 24 ? 1 : 0;
+    }
+  }
+  return n;
+}
+
+// The mean column of the pixels where `clouds` differs from `bare` (the same view without
+// clouds).
+double cloud_column(const render::RgbaImage& clouds, const render::RgbaImage& bare, int* count) {
+  double sum = 0;
+  *count = 0;
+  for (int y = 0; y < clouds.height; ++y) {
+    for (int x = 0; x < clouds.width; ++x) {
+      const auto p = clouds.at(x, y), q = bare.at(x, y);
+      if (std::abs(int(p[0]) - int(q[0])) + std::abs(int(p[1]) - int(q[1])) +
+              std::abs(int(p[2]) - int(q[2])) > 24) {
+        sum += x;
+        ++*count;
+      }
+    }
+  }
+  return *count > 0 ? sum / *count : 0;
+}
+
+TEST_F(GlobePixelsTest, CloudsMovedEastTurnRoundTheEarthAtTheirHeight) {
+  // The ground shell (turning it changes nothing) hides the clouds on the far side.
+  Scene clouds = ground_scene();
+  SubVolume clw;
+  clw.id = 2;
+  clw.name = "cloud water";
+  clw.limits.push_back(Limit{.var = "clw", .min = 2e-5, .max = std::nullopt});
+  clouds.subvolumes.push_back(clw);
+  ASSERT_TRUE(renderer_->set_scene_layout({1, 2}, clouds.attributes).ok);
+  controller_->set_scene(clouds);
+  const lod::WorldFrame& frame = controller_->frame();
+  const auto sun = view::sun_at_step(frame, link_->manifest(), 0);
+  ASSERT_TRUE(sun);
+  constexpr double kEastDeg = 12.0;
+  constexpr double kLon = -40.0;
+  const auto map = turning_map(kEastDeg);
+  const auto camera_over = [&](double lon) {
+    view::OrbitCamera orbit(frame.domain());
+    orbit.set_globe(lon, 10.0);
+    return orbit.camera(1.0);
+  };
+  const lod::Camera cam = camera_over(kLon);
+  const auto still = render(cam, sun->direction);
+  const auto at_zero = render(cam, sun->direction, {{map, 0.0}});
+  const auto moved = render(cam, sun->direction, {{map, 600.0}});
+  EXPECT_EQ(moved.stats.nodes_moved, moved.stats.nodes_drawn);
+  EXPECT_GT(moved.stats.nodes_moved, 0u);
+  // The unmoved clouds seen from kEastDeg further west, the sun turned with the view.
+  const auto reference =
+      render(camera_over(kLon - kEastDeg), turned_east(sun->direction, -kEastDeg));
+  save(still.image, "globe_advect_still.png");
+  save(moved.image, "globe_advect_moved.png");
+  save(reference.image, "globe_advect_reference.png");
+  // Clouds alone: the same views with a scene of no clouds.
+  Scene none = clouds;
+  none.subvolumes[1].limits[0].min = 1.0;
+  controller_->set_scene(none);
+  const auto bare = render(cam, sun->direction);
+  const auto bare_reference =
+      render(camera_over(kLon - kEastDeg), turned_east(sun->direction, -kEastDeg));
+  int still_count = 0, moved_count = 0, reference_count = 0;
+  const double still_column = cloud_column(still.image, bare.image, &still_count);
+  const double moved_column = cloud_column(moved.image, bare.image, &moved_count);
+  const double reference_column =
+      cloud_column(reference.image, bare_reference.image, &reference_count);
+  ASSERT_GT(still_count, 300);
+  // Not moved at time 0.
+  EXPECT_LT(differing_pixels(still.image, at_zero.image), 0.002 * kSize * kSize);
+  // Moved east (the right of a north-up view; less than the centre's shift as clouds
+  // near the limb foreshorten) by what turning the view shows.
+  const double centre_shift = project(cam, frame.place_geographic(kLon + kEastDeg, 10.0, 100.0)).first -
+                              project(cam, frame.place_geographic(kLon, 10.0, 100.0)).first;
+  EXPECT_GT(centre_shift, 5);
+  EXPECT_GT(moved_column - still_column, 1.0);
+  EXPECT_NEAR(moved_column, reference_column, 0.75);
+  EXPECT_NEAR(moved_count, reference_count, 0.03 * reference_count);
+  const int moved_vs_reference = differing_pixels(moved.image, reference.image);
+  const int moved_vs_still = differing_pixels(moved.image, still.image);
+  EXPECT_LT(moved_vs_reference, 0.1 * moved_vs_still)
+      << moved_vs_reference << " pixels differ from the turned view, " << moved_vs_still
+      << " from the unmoved one";
 }
 
 }  // namespace
