@@ -176,7 +176,8 @@ std::shared_ptr<const geo::FlightTracks> open_tracks(const ViewerArgs& args,
 // --terrain: the DEM's tiles (loaded on their own thread), with the drape image of
 // --terrain-image.
 std::unique_ptr<view::TerrainTiles> open_terrain(const ViewerArgs& args,
-                                                 const lod::WorldFrame& frame) {
+                                                 const lod::WorldFrame& frame,
+                                                 bool round_the_earth) {
   if (!frame.on_earth()) {
     throw make_error(ErrorCode::kUnsupported, "--terrain {}: terrain cannot be placed: {}",
                      args.terrain_file, frame.no_earth_reason());
@@ -190,6 +191,7 @@ std::unique_ptr<view::TerrainTiles> open_terrain(const ViewerArgs& args,
   view::TerrainOptions options;
   options.error_pixels = args.terrain_error;
   options.cache_bytes = static_cast<std::size_t>(args.terrain_cache_mib * 1048576.0);
+  options.round_the_earth = round_the_earth;
   return std::make_unique<view::TerrainTiles>(std::move(dem), frame, options, std::move(drape));
 }
 
@@ -263,7 +265,7 @@ ViewerSession open_session(const ViewerArgs& args) {
     session.tracks = open_tracks(args, manifest, frame);
   }
   if (!args.terrain_file.empty()) {
-    session.terrain = open_terrain(args, frame);
+    session.terrain = open_terrain(args, frame, manifest.x.periodic);
   } else if (local_store && manifest.geometry && manifest.geometry->surface && frame.on_earth()) {
     // The model's own surface as the default terrain.
     auto dem = std::make_shared<const view::ModelSurfaceDem>(
@@ -271,6 +273,7 @@ ViewerSession open_session(const ViewerArgs& args) {
     view::TerrainOptions options;
     options.error_pixels = args.terrain_error;
     options.cache_bytes = static_cast<std::size_t>(args.terrain_cache_mib * 1048576.0);
+    options.round_the_earth = manifest.x.periodic;
     spdlog::info("terrain: {}", dem->describe());
     session.terrain = std::make_unique<view::TerrainTiles>(std::move(dem), frame, options);
   }

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <numbers>
 #include <limits>
+#include <numbers>
 #include <tuple>
 #include <utility>
 
@@ -187,18 +187,25 @@ DemOverlap dem_overlap(const geo::DemSource& dem, const lod::WorldFrame& frame,
 // continuously from the store's western edge to its eastern one (widened by `margin`
 // degrees), wherever the DEM's own columns start, and never comes within 1.5 columns of
 // the turn around the frame's central longitude `o`, where placed longitudes jump by 360
-// degrees. Returns the first and last column.
+// degrees (on the plane; `whole_turn`: on the globe under a store round the Earth, where
+// nothing jumps, one whole turn, its last column the first one again). Returns the first
+// and last column.
 std::pair<std::size_t, std::size_t> round_the_globe_columns(const GlobalColumns& global,
                                                             const lod::GeographicBounds& bounds,
-                                                            double o, double margin) {
+                                                            double o, double margin,
+                                                            bool whole_turn) {
   const double a = std::fabs(global.step);
-  const double west = std::max(bounds.lon_lo - margin, o - 180 + 1.5 * a);
+  const double west = whole_turn ? o - 180 : std::max(bounds.lon_lo - margin, o - 180 + 1.5 * a);
   const double east = std::min(bounds.lon_hi + margin, o + 180 - 1.5 * a);
   const double lon0 = near_longitude(global.lon0, o);
   const double ca = (west - lon0) / global.step, cb = (east - lon0) / global.step;
+  const auto turn = static_cast<long long>(global.per_turn);
   auto first = static_cast<long long>(std::floor(std::min(ca, cb)));
   auto last = static_cast<long long>(std::ceil(std::max(ca, cb)));
-  const auto turn = static_cast<long long>(global.per_turn);
+  if (whole_turn) {
+    first = static_cast<long long>(std::floor(global.step > 0 ? ca : ca - double(turn)));
+    last = first + turn;
+  }
   if (first < 0) {
     const long long shift = (-first + turn - 1) / turn * turn;
     first += shift;
@@ -336,6 +343,11 @@ TerrainTiles::TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod:
   // world).
   clip_ = d;
   if (mapped_) clip_ = {{axes[0], axes[2], 0}, {axes[1], axes[3], 0}};
+  const bool whole_turn = globe_ && options_.round_the_earth;
+  if (whole_turn) {  // every longitude lies in the store
+    clip_.lo[0] = -std::numeric_limits<float>::max();
+    clip_.hi[0] = std::numeric_limits<float>::max();
+  }
   const auto bounds = frame.geographic_bounds();
   const std::size_t w = dem_->width(), h = dem_->height();
   const auto overlap = dem_overlap(*dem_, frame, bounds);
@@ -347,7 +359,8 @@ TerrainTiles::TerrainTiles(std::shared_ptr<const geo::DemSource> dem, const lod:
   if (const auto global = global_columns(*dem_); global.per_turn > 0) {
     const double margin = double(step) * std::fabs(global.step);
     wrap_columns_ = global.per_turn;
-    std::tie(col0_, col1_) = round_the_globe_columns(global, bounds, frame.lon0(), margin);
+    std::tie(col0_, col1_) =
+        round_the_globe_columns(global, bounds, frame.lon0(), margin, whole_turn);
   }
   const std::size_t cells = std::max(col1_ - col0_, row1_ - row0_);
   while ((std::size_t{kTerrainTileCells} << finest_level_) < cells) ++finest_level_;

@@ -125,6 +125,10 @@ struct TerrainOptions {
   double error_pixels = kDefaultTerrainErrorPixels;  // > 0
   std::size_t cache_bytes = kDefaultTerrainCacheBytes;
   bool cull = true;  // frustum culling (tests turn it off to see the whole cover)
+  // The store's longitude axis goes round the Earth (Axis::periodic). On the globe a DEM
+  // that goes round is then drawn all the way round, its longitudes unclipped; else the
+  // extent keeps 1.5 columns off the turn opposite the frame's centre, as on the plane.
+  bool round_the_earth = false;
 };
 
 struct TerrainStatus {

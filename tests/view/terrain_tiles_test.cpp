@@ -6,9 +6,11 @@
 // edges hang no skirts, and a global DEM goes round under a global store without a seam.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <span>
 #include <thread>
 
@@ -305,6 +307,59 @@ TEST(TerrainTilesTest, GlobalDemGoesRoundWithoutASeam) {
   EXPECT_GE(x_hi, domain.hi[0]);
   EXPECT_LE(y_lo, domain.lo[1] + 1e-3);
   EXPECT_GE(y_hi, domain.hi[1] - 1e-3);
+}
+
+// On the globe, under a store whose longitudes go round the Earth, the terrain goes all
+// the way round too: no strip is left out at the turn opposite the centre (on the plane
+// placed longitudes jump there; on the globe nothing does), and no longitude is clipped.
+TEST(TerrainTilesTest, GlobeUnderAStoreRoundTheEarthHasTerrainAtEveryLongitude) {
+  format::Manifest m;
+  m.x = Axis{"lon", AxisKind::kLongitude, "degrees_east", "longitude", "", "",
+             lod::testing::linspace(0, 360, 73)};
+  m.x.periodic = true;  // its last column is its first turned once round
+  m.y = Axis{"lat", AxisKind::kLatitude, "degrees_north", "latitude", "", "",
+             lod::testing::linspace(-90, 90, 37)};
+  m.z = Axis{"height", AxisKind::kHeight, "m", "height", "", "up", lod::testing::linspace(0, 15000, 8)};
+  m.time = TimeAxis{"time", "hours since 2024-06-21 00:00:00", "standard", {12}};
+  m.brick = 16;
+  const lod::WorldFrame frame(m, {.vertical_exaggeration = 20.0, .shape = lod::FrameShape::kGlobe});
+  ASSERT_TRUE(frame.globe());
+  auto dem = std::make_shared<FunctionDem>(361, 181, -180.0, 180.0, -90.0, 90.0, [](double lon, double lat) {
+    return float(2000 + 1500 * std::sin(lon * 0.1) * std::cos(lat * 0.07));
+  });
+  view::TerrainOptions options;
+  options.round_the_earth = true;
+  options.cull = false;
+  view::TerrainTiles tiles(dem, frame, options);
+  ASSERT_EQ(tiles.wrap_columns(), 360u);
+  const auto extent = tiles.extent();
+  EXPECT_EQ(extent[2] - extent[0], 360u) << "a whole turn of columns";
+  const auto shown = tiles.update(camera_at(frame, {0, 0, 40000}, {0, 0, 0}), 20.0, 720);
+  ASSERT_TRUE(shown);
+  // Every vertex's longitude, at the finest level (one DEM column apart).
+  const int level = tiles.finest_level();
+  std::vector<double> lons;
+  for (int x = 0; x < (1 << level); ++x) {
+    for (int y = 0; y < (1 << level); ++y) {
+      const view::TerrainTileKey key{level, x, y};
+      if (!tiles.exists(key)) continue;
+      const auto tile = tiles.load_tile(key);
+      const auto s = tiles.samples(key);
+      for (std::size_t i = 0; i < s.cols.size() * s.rows.size(); ++i) {
+        const float* v = &tile->vertices[i * view::kTerrainVertexFloats];
+        if (std::hypot(v[0], v[1]) < 1.0) continue;  // a pole: any longitude
+        lons.push_back(std::round(std::atan2(v[1], v[0]) * 180.0 / std::numbers::pi * 1e4) / 1e4);
+        EXPECT_GE(v[8], shown->clip.lo[0]);
+        EXPECT_LE(v[8], shown->clip.hi[0]);
+      }
+    }
+  }
+  std::sort(lons.begin(), lons.end());
+  lons.erase(std::unique(lons.begin(), lons.end()), lons.end());
+  ASSERT_GE(lons.size(), 360u);
+  double widest = lons.front() + 360.0 - lons.back();  // across the turn
+  for (std::size_t i = 1; i < lons.size(); ++i) widest = std::max(widest, lons[i] - lons[i - 1]);
+  EXPECT_LE(widest, 1.0 + 1e-3) << "a gap between the terrain's columns";
 }
 
 TEST(TerrainTilesTest, DemOutsideTheStoreIsRefused) {
