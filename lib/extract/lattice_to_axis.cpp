@@ -28,8 +28,12 @@ Trilinear trilinear(const Sample* field, const std::array<std::size_t, 3>& dims,
   const double fx = cp.f[0], fy = cp.f[1], fz = cp.f[2];
   // (1 - f) a + f b is a at f = 0 and b at f = 1 exactly (a + f (b - a) need not be b):
   // a vertex on a node face gets the same value from the cell on either side, so the
-  // nodes sharing it carry the same attribute bits (and a height placed by one).
-  auto lerp = [](double a, double b, double f) { return (1.0 - f) * a + f * b; };
+  // nodes sharing it carry the same attribute bits (and a height placed by one). A
+  // corner of weight 0 is left out: a missing (NaN) sample there must not make the
+  // value of a vertex on a valid sample or edge missing (0 * NaN is NaN).
+  auto lerp = [](double a, double b, double f) {
+    return f == 0.0 ? a : f == 1.0 ? b : (1.0 - f) * a + f * b;
+  };
   const double x00 = lerp(c0, c1, fx), x10 = lerp(c2, c3, fx);
   const double x01 = lerp(c4, c5, fx), x11 = lerp(c6, c7, fx);
   const double y0 = lerp(x00, x10, fy), y1 = lerp(x01, x11, fy);
