@@ -312,10 +312,7 @@ void report_codecs(const format::Manifest& plan, const std::vector<PredictorTria
     const format::CodecSpec& c = plan.codec_of(v);
     json entry{{"name", c.name}, {"level", c.level}, {"shuffle", c.shuffle},
                {"predictor", c.predictor}, {"fpzip", c.fpzip}};
-    if (c.zfp) {
-      entry["zfp"] = json{{"mode", std::string(format::lossy_mode_name(c.zfp->mode))}, {"value", c.zfp->value},
-                          {"tolerance", c.zfp->tolerance}};
-    }
+    if (c.zfp) entry["zfp"] = format::lossy_json(*c.zfp);
     for (const auto& t : trials) {
       if (t.variable == plan.variables[v].name) entry["auto"] = t.to_json();
     }

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core/error.h"
 #include "ingest/box_reader.h"
@@ -25,11 +26,10 @@ LossyRequest parse_item(std::string_view item) {
   if (colon == std::string_view::npos) throw bad("no mode: write abs: or rel: before the tolerance");
   LossyRequest r;
   r.variable = std::string(item.substr(0, eq));
-  const std::string_view mode = spec.substr(0, colon);
-  if (mode != "abs" && mode != "rel") {
-    throw bad(fmt::format("mode '{}' is not one of abs, rel", mode));
-  }
-  r.mode = mode == "rel" ? format::LossyMode::kRelative : format::LossyMode::kAbsolute;
+  const std::string_view name = spec.substr(0, colon);
+  const std::optional<format::LossyMode> mode = format::lossy_mode_from_name(name);
+  if (!mode) throw bad(fmt::format("mode '{}' is not one of abs, rel", name));
+  r.mode = *mode;
   const std::string_view number = spec.substr(colon + 1);
   const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), r.value);
   if (ec != std::errc() || end != number.data() + number.size()) {

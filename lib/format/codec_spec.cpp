@@ -37,6 +37,17 @@ std::string_view lossy_mode_name(LossyMode mode) {
   return mode == LossyMode::kRelative ? "rel" : "abs";
 }
 
+std::optional<LossyMode> lossy_mode_from_name(std::string_view name) {
+  if (name == "abs") return LossyMode::kAbsolute;
+  if (name == "rel") return LossyMode::kRelative;
+  return std::nullopt;
+}
+
+json lossy_json(const LossySpec& spec) {
+  return json{{"mode", std::string(lossy_mode_name(spec.mode))}, {"value", spec.value},
+              {"tolerance", spec.tolerance}};
+}
+
 void validate_codec(const CodecSpec& codec) {
   static const char* kNames[] = {"blosclz", "lz4", "lz4hc", "zlib", "zstd"};
   bool known = false;
@@ -63,9 +74,7 @@ json codec_json(const CodecSpec& c, std::uint32_t version) {
   json j{{"name", c.name}, {"level", c.level}, {"shuffle", c.shuffle}};
   if (version >= kManifestVersionPredictors) j["predictor"] = c.predictor;
   if (c.fpzip) j["fpzip"] = true;
-  if (c.zfp) {
-    j["zfp"] = json{{"mode", std::string(lossy_mode_name(c.zfp->mode))}, {"value", c.zfp->value}, {"tolerance", c.zfp->tolerance}};
-  }
+  if (c.zfp) j["zfp"] = lossy_json(*c.zfp);
   return j;
 }
 
@@ -101,12 +110,12 @@ CodecSpec codec_from_json(const json& j, std::uint32_t version, std::string_view
         throw make_error(ErrorCode::kCorrupt, "{}: unknown key '{}'", where, key);
       }
     }
-    const auto mode = get<std::string>(*it, "mode", where);
-    if (mode != "abs" && mode != "rel") {
-      throw make_error(ErrorCode::kCorrupt, "{}: mode '{}' is not one of abs, rel", where, mode);
+    const auto name = get<std::string>(*it, "mode", where);
+    const std::optional<LossyMode> mode = lossy_mode_from_name(name);
+    if (!mode) {
+      throw make_error(ErrorCode::kCorrupt, "{}: mode '{}' is not one of abs, rel", where, name);
     }
-    c.zfp = LossySpec{mode == "rel" ? LossyMode::kRelative : LossyMode::kAbsolute,
-                      get<double>(*it, "value", where), get<double>(*it, "tolerance", where)};
+    c.zfp = LossySpec{*mode, get<double>(*it, "value", where), get<double>(*it, "tolerance", where)};
   }
   try {
     validate_codec(c);

@@ -29,6 +29,8 @@ inline constexpr std::string_view kPredictorLorenzo3 = "lorenzo3";
 // valid samples over every converted step).
 enum class LossyMode : std::uint8_t { kAbsolute, kRelative };
 std::string_view lossy_mode_name(LossyMode mode);  // "abs", "rel"
+// The mode a name gives ("abs", "rel"); nullopt for any other.
+std::optional<LossyMode> lossy_mode_from_name(std::string_view name);
 
 // Data bricks coded by zfp's fixed-accuracy mode, each valid sample within `tolerance` of
 // the original (verified at conversion; a brick that misses it keeps the codec chain).
@@ -38,6 +40,9 @@ struct LossySpec {
   double tolerance = 0;  // the absolute bound every valid sample keeps
   friend bool operator==(const LossySpec&, const LossySpec&) = default;
 };
+
+// A lossy spec as the manifest's codec object holds it: {mode, value, tolerance}.
+nlohmann::json lossy_json(const LossySpec& spec);
 
 // Defaults from the strielad-bench io codec sweep (BENCHMARKS.md): Blosc level 1 (zstd
 // level 1) converts 2.4x faster than level 5 (zstd 9) for 9% more bytes; byte shuffle

@@ -2,7 +2,6 @@
 #include "store/fpzip_chunk.h"
 
 #include <fpzip.h>
-#include <xxhash.h>
 
 #include <cstring>
 #include <memory>
@@ -10,6 +9,7 @@
 #include "core/byte_io.h"
 #include "core/checksum.h"
 #include "core/error.h"
+#include "store/brick_stream.h"
 #include "store/fpzip_stream_check.h"
 
 namespace strielad {
@@ -37,18 +37,10 @@ void describe_brick(FPZ* f, DType dtype, BrickDims dims) {
 // fpzip reads and writes samples as float or double: they must be 8-byte aligned.
 bool is_aligned(const void* p) { return reinterpret_cast<std::uintptr_t>(p) % 8 == 0; }
 
-std::size_t brick_bytes(DType dtype, BrickDims dims) {
-  return dims[0] * dims[1] * dims[2] * dtype_size(dtype);
-}
-
-// The stream checksum is seeded with the brick's shape and type (formats/store.md): damage
-// and a chunk filed under another brick show as a mismatch. It is no defence against a
-// crafted chunk (anyone can recompute it); check_fpzip_stream is.
+// The stream checksum (store/brick_stream.h) is no defence against a crafted chunk;
+// check_fpzip_stream is.
 std::uint64_t stream_checksum(std::span<const std::byte> stream, DType dtype, BrickDims dims) {
-  const std::uint64_t seed = std::uint64_t{dims[0]} | std::uint64_t{dims[1]} << 20 |
-                             std::uint64_t{dims[2]} << 40 |
-                             std::uint64_t{dtype == DType::kFloat64 ? 1u : 0u} << 60;
-  return XXH3_64bits_withSeed(stream.data(), stream.size(), seed);
+  return brick_stream_checksum(stream, dtype, dims, kFpzipStreamSeed);
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "store/zfp_chunk.h"
 
-#include <xxhash.h>
 #include <zfp.h>
 
 #include <algorithm>
@@ -13,6 +12,7 @@
 #include "core/byte_io.h"
 #include "core/checksum.h"
 #include "core/error.h"
+#include "store/brick_stream.h"
 
 namespace strielad {
 namespace {
@@ -27,22 +27,12 @@ struct FieldFree {
   void operator()(zfp_field* f) const { zfp_field_free(f); }
 };
 
-std::size_t brick_bytes(DType dtype, BrickDims dims) {
-  return dims[0] * dims[1] * dims[2] * dtype_size(dtype);
-}
-
 zfp_type zfp_type_of(DType dtype) {
   return dtype == DType::kFloat64 ? zfp_type_double : zfp_type_float;
 }
 
-// Seeded with the brick's shape and type like an fpzip chunk's stream checksum, plus 2^61
-// (formats/store.md): damage and a chunk filed under another brick show as a mismatch.
 std::uint64_t stream_checksum(std::span<const std::byte> bytes, DType dtype, BrickDims dims) {
-  const std::uint64_t seed = std::uint64_t{dims[0]} | std::uint64_t{dims[1]} << 20 |
-                             std::uint64_t{dims[2]} << 40 |
-                             std::uint64_t{dtype == DType::kFloat64 ? 1u : 0u} << 60 |
-                             std::uint64_t{1} << 61;
-  return XXH3_64bits_withSeed(bytes.data(), bytes.size(), seed);
+  return brick_stream_checksum(bytes, dtype, dims, kZfpStreamSeed);
 }
 
 void put_varint(std::vector<std::byte>& out, std::uint64_t v) {

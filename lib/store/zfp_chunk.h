@@ -38,8 +38,8 @@ struct ZfpCodingResult {
 // Codes a brick of dims[0] x dims[1] x dims[2] samples (x fastest) of `dtype`; `samples`
 // must hold exactly the brick's bytes, missing samples as NaN. `bound` is the guaranteed
 // absolute error of every valid sample (> 0, finite); `accuracy` the tolerance handed to
-// zfp's fixed-accuracy mode: equal to `bound` in the converter, larger in tests that want
-// the bound exceeded.
+// zfp's fixed-accuracy mode: the converter tries multiples of `bound` in turn
+// (build::kZfpAccuracyLadder), tests larger ones that want the bound exceeded.
 ZfpCodingResult compress_brick_zfp(std::span<const std::byte> samples, DType dtype, BrickDims dims,
                                    double bound, double accuracy);
 
