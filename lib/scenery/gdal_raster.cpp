@@ -7,6 +7,7 @@
 #include <ogr_srs_api.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -17,6 +18,9 @@
 
 namespace strielad::geo {
 namespace {
+
+// The most source pixels one read of the strided fallback takes (4 MB of floats).
+constexpr std::size_t kFallbackPiecePixels = std::size_t(1) << 20;
 
 void register_gdal() {
   static std::once_flag once;
@@ -247,14 +251,21 @@ std::vector<float> GdalRaster::read_band(int band, std::size_t col0, std::size_t
     err = GDALRasterIOEx(b, GF_Read, x0, y0, xs, ys, out.data(), int(cols), int(rows),
                          GDT_Float32, 0, 0, &extra);
     if (err != CE_None) {
-      // Row by row at full resolution, every stride-th sample.
+      // Row by row at full resolution, every stride-th sample, in pieces of at most
+      // kFallbackPiecePixels source pixels: a raster that declares a row of 2^30 pixels
+      // must not make this read allocate the whole row.
       CPLErrorReset();
-      std::vector<float> line(static_cast<std::size_t>(xs));
+      const std::size_t per_piece = (kFallbackPiecePixels - 1) / stride + 1;
+      std::vector<float> piece(std::min<std::size_t>(std::size_t(xs), kFallbackPiecePixels));
       err = CE_None;
       for (std::size_t j = 0; j < rows && err == CE_None; ++j) {
-        err = GDALRasterIO(b, GF_Read, x0, int(row0 + j * stride), xs, 1, line.data(), xs, 1,
-                           GDT_Float32, 0, 0);
-        for (std::size_t i = 0; i < cols; ++i) out[j * cols + i] = line[i * stride];
+        for (std::size_t i0 = 0; i0 < cols && err == CE_None; i0 += per_piece) {
+          const std::size_t n = std::min(per_piece, cols - i0);
+          const int len = int((n - 1) * stride + 1);
+          err = GDALRasterIO(b, GF_Read, int(col0 + i0 * stride), int(row0 + j * stride), len, 1,
+                             piece.data(), len, 1, GDT_Float32, 0, 0);
+          for (std::size_t i = 0; i < n; ++i) out[j * cols + i0 + i] = piece[i * stride];
+        }
       }
     }
   }
