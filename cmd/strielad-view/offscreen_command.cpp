@@ -238,7 +238,7 @@ int run_offscreen(const ViewerArgs& args) {
     if (!sun) spdlog::info("the store's time axis or grid gives no real date or place: fixed sun");
   }
   const auto tracks_start = std::chrono::steady_clock::now();
-  const auto tracks = tracks_at(session, args, controller.time_step(), advect_s);
+  const auto tracks = tracks_at(session, args, controller, advect_s);
   const double track_window_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tracks_start).count();
   const RunFacts run{session, controller, renderer, advect_s, sun, tracks, track_window_ms,

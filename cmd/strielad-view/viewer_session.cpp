@@ -315,14 +315,18 @@ ViewerArgs with_scene_settings(ViewerArgs args) {
 }
 
 std::shared_ptr<const view::TrackLines> tracks_at(const ViewerSession& session,
-                                                  const ViewerArgs& args, std::uint32_t step,
+                                                  const ViewerArgs& args,
+                                                  const view::ViewController& controller,
                                                   double seconds_after) {
   if (!session.tracks) return nullptr;
-  const auto jd = view::step_julian_day(session.link->manifest(), step, seconds_after);
+  const auto jd =
+      view::step_julian_day(session.link->manifest(), controller.time_step(), seconds_after);
   if (!jd) return nullptr;
   const double now = (*jd - session.tracks->reference_julian_day) * 86400.0;
-  return std::make_shared<const view::TrackLines>(view::window_tracks(
-      *session.tracks, now, args.track_minutes * 60.0, session.link->placer().frame()));
+  const lod::WorldFrame& frame =
+      controller.frame().globe() ? controller.frame() : session.link->placer().frame();
+  return std::make_shared<const view::TrackLines>(
+      view::window_tracks(*session.tracks, now, args.track_minutes * 60.0, frame));
 }
 
 }  // namespace strielad::view_cmd

@@ -13,6 +13,7 @@
 #include "view/advection_worker.h"
 #include "view/terrain_tiles.h"
 #include "view/track_window.h"
+#include "view/view_controller.h"
 #include "view/view_link.h"
 #include "viewer_args.h"
 
@@ -39,9 +40,12 @@ struct ViewerSession {
   std::string vertical_placement;
 };
 
-// The tracks to draw at time step `step` plus `seconds_after` (null without --tracks).
+// The tracks to draw at the controller's time step plus `seconds_after` (null without
+// --tracks), placed as the renderer draws them: on the plane at exaggeration 1 (the
+// renderer scales z), on the globe at the controller's exaggeration.
 std::shared_ptr<const view::TrackLines> tracks_at(const ViewerSession& session,
-                                                  const ViewerArgs& args, std::uint32_t step,
+                                                  const ViewerArgs& args,
+                                                  const view::ViewController& controller,
                                                   double seconds_after);
 
 // \error kNotFound / kInvalidInput naming the store, scene or shader file at fault;

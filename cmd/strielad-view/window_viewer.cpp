@@ -211,6 +211,7 @@ void WindowViewer::apply_panel_edits(clock_type::time_point now) {
       const double ratio = state_.exaggeration / controller_.options().vertical_exaggeration;
       controller_.set_vertical_exaggeration(state_.exaggeration);
       camera_.rescale_vertical(ratio, controller_.frame().domain());
+      state_.tracks_changed = true;  // on the globe they are placed at the exaggeration
     }
   } catch (const Error& e) {
     info_.error = e.what();
@@ -309,7 +310,7 @@ render::FrameInputs WindowViewer::frame_inputs(const lod::Camera& cam, int heigh
       state_.tracks_changed = false;
       ViewerArgs args = args_;
       args.track_minutes = state_.track_minutes;
-      tracks_ = tracks_at(session_, args, controller_.time_step(), seconds_after);
+      tracks_ = tracks_at(session_, args, controller_, seconds_after);
       tracks_step_ = controller_.time_step();
       tracks_seconds_ = seconds_after;
     }

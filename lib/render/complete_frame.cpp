@@ -13,6 +13,8 @@ FrameInputs frame_inputs(const view::ViewController& controller, const lod::Came
   inputs.vertical_exaggeration = controller.renderer_vertical_scale();
   inputs.globe_exaggeration =
       controller.frame().globe() ? controller.frame().vertical_exaggeration() : 0.0;
+  inputs.globe_placed_exaggeration =
+      controller.frame().globe() ? controller.link().placer().placed_exaggeration() : 0.0;
   inputs.mirrored = controller.link().placer().mirrored();
   const Scene& scene = controller.scene();
   if (!scene.slices.empty()) {

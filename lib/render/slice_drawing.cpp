@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "render/shader_program.h"
+#include "render/wgs84_glsl.h"
 #include "view/node_geometry.h"
 
 namespace strielad::render {
@@ -64,25 +66,31 @@ int map_index(std::string_view name) {
 
 constexpr int kTextureWidth = 256;
 
-const char* const kVertexSource = R"(#version 450 core
+std::string vertex_source() {
+  return std::string(R"(#version 450 core
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in float a_value;
 layout(location = 3) in float a_slot;
 uniform mat4 u_view_projection;
 uniform float u_vertical_exaggeration;
+uniform float u_globe_ratio;  // != 1 only on the globe (globe_redrawn)
 out vec3 v_normal;
 out float v_value;
 flat out int v_slot;
+)") + kWgs84Glsl + R"(
 void main() {
+  vec3 normal = a_normal;
   vec3 p = vec3(a_position.xy, a_position.z * u_vertical_exaggeration);
+  p = globe_redrawn(p, normal, u_globe_ratio);
   gl_Position = u_view_projection * vec4(p, 1.0);
   // Normals as covectors: the inverse transpose of the z scale.
-  v_normal = vec3(a_normal.xy, a_normal.z / u_vertical_exaggeration);
+  v_normal = vec3(normal.xy, normal.z / u_vertical_exaggeration);
   v_value = a_value;
   v_slot = int(a_slot + 0.5);
 }
 )";
+}
 
 const char* const kFragmentSource = R"(#version 450 core
 in vec3 v_normal;
@@ -129,7 +137,7 @@ std::array<float, 3> colormap_color(std::string_view name, double t) {
 }
 
 SliceDrawing::SliceDrawing() {
-  program_ = compile_builtin_program(kVertexSource, kFragmentSource, "slice");
+  program_ = compile_builtin_program(vertex_source(), kFragmentSource, "slice");
   const auto rows = static_cast<GLsizei>(maps().size());
   std::vector<std::uint8_t> texels;
   texels.reserve(static_cast<std::size_t>(kTextureWidth * rows * 4));
@@ -151,8 +159,8 @@ SliceDrawing::SliceDrawing() {
 }
 
 void SliceDrawing::draw(const GpuMeshes& meshes, const lod::Mat4& view_projection,
-                        double vertical_exaggeration, const std::vector<SliceStyle>& styles,
-                        const Vec3& sun) {
+                        double vertical_exaggeration, double globe_ratio,
+                        const std::vector<SliceStyle>& styles, const Vec3& sun) {
   bool any = false;
   for (const auto& [node, mesh] : meshes.meshes()) any = any || mesh.slice_index_count > 0;
   if (!any) return;
@@ -162,6 +170,7 @@ void SliceDrawing::draw(const GpuMeshes& meshes, const lod::Mat4& view_projectio
                             view_projection.data());
   glProgramUniform1f(p, glGetUniformLocation(p, "u_vertical_exaggeration"),
                      static_cast<float>(vertical_exaggeration));
+  glProgramUniform1f(p, glGetUniformLocation(p, "u_globe_ratio"), static_cast<float>(globe_ratio));
   std::array<float, 2 * view::kMaxViewSlices> ranges{};
   std::array<GLint, view::kMaxViewSlices> map{};
   for (std::size_t s = 0; s < view::kMaxViewSlices; ++s) {

@@ -49,9 +49,12 @@ class SliceDrawing {
   // the slice of that slot (view::kSliceVertexSlot); slots without a style are drawn
   // with viridis over [0, 1]. `sun` points towards the sun (world frame, need not be
   // unit; zero: lit from straight above). Binds texture unit kTextureUnit.
+  // On the globe `globe_ratio` is the exaggeration drawn over the one the slices were
+  // placed at (render/wgs84_glsl.h globe_redrawn), and `vertical_exaggeration` 1; on the
+  // plane `globe_ratio` is 1.
   void draw(const GpuMeshes& meshes, const lod::Mat4& view_projection,
-            double vertical_exaggeration, const std::vector<SliceStyle>& styles,
-            const Vec3& sun);
+            double vertical_exaggeration, double globe_ratio,
+            const std::vector<SliceStyle>& styles, const Vec3& sun);
 
   static constexpr GLuint kTextureUnit = 15;
 

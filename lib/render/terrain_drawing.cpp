@@ -5,11 +5,13 @@
 #include <vector>
 
 #include "render/shader_program.h"
+#include "render/wgs84_glsl.h"
 
 namespace strielad::render {
 namespace {
 
-constexpr const char* kVertex = R"(#version 450 core
+std::string vertex_source() {
+  return std::string(R"(#version 450 core
 layout(location = 0) in vec3 a_position;  // x, y km; height km
 layout(location = 1) in vec2 a_gradient;  // dh/dx, dh/dy
 layout(location = 2) in vec2 a_uv;
@@ -18,23 +20,26 @@ layout(location = 4) in vec2 a_clip;    // clip coordinates (view/terrain_tiles.
 uniform mat4 u_view_projection;
 uniform float u_vertical_exaggeration;
 uniform bool u_globe;             // positions ECEF km, placed at u_gradient_scale
-uniform float u_gradient_scale;   // the globe's exaggeration
+uniform float u_gradient_scale;   // the exaggeration the globe's tiles were placed at
+uniform float u_globe_ratio;      // the exaggeration drawn over u_gradient_scale
 out vec3 v_world;
 out vec3 v_normal;
 out float v_height_m;
 out vec2 v_uv;
 out float v_water;
 out vec2 v_clip;
+)") + kWgs84Glsl + R"(
 void main() {
   if (u_globe) {
     // The local east/north/up frame (up along the radius: within 0.2 degrees of the
     // ellipsoid normal), the height above the WGS84 ellipsoid along the radius.
-    v_world = a_position;
+    vec3 unused = vec3(0.0);
+    v_world = globe_redrawn(a_position, unused, u_globe_ratio);
     vec3 up = normalize(a_position);
     vec3 east = cross(vec3(0.0, 0.0, 1.0), up);
     east = length(east) > 1e-6 ? normalize(east) : vec3(1.0, 0.0, 0.0);
     vec3 north = cross(up, east);
-    vec2 g = a_gradient * u_gradient_scale;
+    vec2 g = a_gradient * (u_gradient_scale * u_globe_ratio);
     v_normal = normalize(up - g.x * east - g.y * north);
     const float a = 6378.137, b = 6356.752314;
     float r = inversesqrt(dot(up.xy, up.xy) / (a * a) + up.z * up.z / (b * b));
@@ -50,6 +55,7 @@ void main() {
   gl_Position = u_view_projection * vec4(v_world, 1.0);
 }
 )";
+}
 
 constexpr const char* kFragment = R"(#version 450 core
 in vec3 v_world;
@@ -98,7 +104,7 @@ void main() {
 }  // namespace
 
 TerrainDrawing::TerrainDrawing() {
-  program_ = compile_builtin_program(kVertex, kFragment, "terrain");
+  program_ = compile_builtin_program(vertex_source(), kFragment, "terrain");
 }
 
 TerrainDrawStats TerrainDrawing::draw(const view::TerrainFrame& frame,
@@ -116,6 +122,8 @@ TerrainDrawStats TerrainDrawing::draw(const view::TerrainFrame& frame,
   glProgramUniform1i(p, glGetUniformLocation(p, "u_globe"), frame.globe ? 1 : 0);
   glProgramUniform1f(p, glGetUniformLocation(p, "u_gradient_scale"),
                      static_cast<float>(frame.gradient_scale));
+  glProgramUniform1f(p, glGetUniformLocation(p, "u_globe_ratio"),
+                     static_cast<float>(frame.globe ? frame.globe_ratio : 1.0));
   const Vec3 s = normalize(sun);
   glProgramUniform3f(p, glGetUniformLocation(p, "u_sun"), float(s[0]), float(s[1]), float(s[2]));
   glProgramUniform4f(p, glGetUniformLocation(p, "u_clip"), float(frame.clip.lo[0]),

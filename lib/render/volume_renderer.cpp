@@ -30,6 +30,18 @@ void set_float(GLuint program, const char* name, double v) {
   glProgramUniform1f(program, location(program, name), static_cast<float>(v));
 }
 
+// The exaggeration the meshes' and slices' vertex arrays carry on the globe (0 given:
+// the one drawn).
+double globe_placed_exaggeration(const FrameInputs& inputs) {
+  return inputs.globe_placed_exaggeration > 0 ? inputs.globe_placed_exaggeration
+                                              : inputs.globe_exaggeration;
+}
+// Heights drawn over heights placed on the globe; 1 on the plane.
+double globe_ratio(const FrameInputs& inputs) {
+  return inputs.globe_exaggeration > 0 ? inputs.globe_exaggeration / globe_placed_exaggeration(inputs)
+                                       : 1.0;
+}
+
 // Inverse of a general 4x4 matrix (column-major), by cofactors in double.
 lod::Mat4 inverse(const lod::Mat4& m) {
   std::array<double, 16> a{}, inv{};
@@ -371,7 +383,7 @@ void VolumeRenderer::draw_opaque_pass(const FrameInputs& inputs, const FrameSetu
   }
   if (!inputs.slice_styles.empty()) {
     slice_drawing_.draw(meshes_, frame.view_projection, inputs.vertical_exaggeration,
-                        inputs.slice_styles, inputs.sun_direction);
+                        globe_ratio(inputs), inputs.slice_styles, inputs.sun_direction);
   }
   if (inputs.tracks) {
     track_drawing_.draw(*inputs.tracks, frame.view_projection, inputs.vertical_exaggeration,
@@ -431,6 +443,7 @@ std::uint64_t VolumeRenderer::draw_geometry_pass(const FrameInputs& inputs,
   set_mat4(g, "u_view", frame.view_matrix);
   set_float(g, "u_vertical_exaggeration", inputs.vertical_exaggeration);
   set_float(g, "u_globe_exaggeration", inputs.globe_exaggeration);
+  set_float(g, "u_globe_placed_exaggeration", globe_placed_exaggeration(inputs));
   set_vec3(g, "u_eye", inputs.camera.eye);
   set_vec3(g, "u_sun", normalize(inputs.sun_direction));
   set_float(g, "u_time", inputs.time_seconds);

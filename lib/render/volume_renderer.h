@@ -56,10 +56,14 @@ struct RenderSettings {
 struct FrameInputs {
   lod::Camera camera;                  // world frame at the current exaggeration
   double vertical_exaggeration = 10.0;
-  // > 0 on the globe (lod::WorldFrame::globe()): the exaggeration the meshes carry, which
-  // the shaders' height_m() and the distances alpha() takes remove (vertical_exaggeration
-  // is then 1); 0 on the plane.
+  // > 0 on the globe (lod::WorldFrame::globe()): the exaggeration heights are drawn at,
+  // which the shaders' height_m() and the distances alpha() takes remove
+  // (vertical_exaggeration is then 1); 0 on the plane.
   double globe_exaggeration = 0;
+  // On the globe: the exaggeration the meshes' and slices' vertex arrays were placed at
+  // (view::GeometryPlacer::placed_exaggeration()); the vertex shaders move them to
+  // globe_exaggeration (render/wgs84_glsl.h globe_redrawn). 0: globe_exaggeration.
+  double globe_placed_exaggeration = 0;
   Vec3 sun_direction{0.3, -0.5, 0.8};  // towards the sun, world frame
   double time_seconds = 0;             // passed to color()
   bool mirrored = false;               // view::GeometryPlacer::mirrored()

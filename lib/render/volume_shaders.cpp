@@ -6,6 +6,7 @@
 #include <cctype>
 
 #include "render/default_user_shader.h"  // generated from examples/shaders/clouds.glsl
+#include "render/wgs84_glsl.h"
 #include "view/node_geometry.h"
 
 namespace strielad::render {
@@ -21,35 +22,6 @@ struct Fragment {
   uint meta;    // bits 0-4: sub-volume slot; bit 5: entering (front face)
   uint next;    // next fragment of the pixel, 0xFFFFFFFF ends the list
 };
-)";
-
-// WGS84 in GLSL: the constants, the geodetic position of an ECEF one and back.
-constexpr const char* kWgs84Glsl = R"(
-const float WGS84_A = 6378.137;          // km
-const float WGS84_B = 6356.752314245;    // km
-const float WGS84_E2 = 6.69437999014e-3;
-const float WGS84_EP2 = 6.73949674228e-3;  // second eccentricity squared
-// The geodetic latitude (radians) of an ECEF position: Bowring's closed form.
-float globe_latitude(vec3 p) {
-  float r = length(p.xy);
-  float t = atan(p.z * WGS84_A, r * WGS84_B);
-  float st = sin(t), ct = cos(t);
-  return atan(p.z + WGS84_EP2 * WGS84_B * st * st * st, r - WGS84_E2 * WGS84_A * ct * ct * ct);
-}
-// The height above the WGS84 ellipsoid (km, as placed: exaggerated) of an ECEF position:
-// h = r cos(lat) + z sin(lat) - a w, which holds at every latitude (poles included)
-// without dividing by a small number.
-float globe_height_km(vec3 p) {
-  float lat = globe_latitude(p);
-  float s = sin(lat);
-  return length(p.xy) * cos(lat) + p.z * s - WGS84_A * sqrt(1.0 - WGS84_E2 * s * s);
-}
-// ECEF km of geodetic longitude and latitude (radians) and height (km).
-vec3 globe_place(float lon, float lat, float h) {
-  float s = sin(lat), c = cos(lat);
-  float n = WGS84_A / sqrt(1.0 - WGS84_E2 * s * s);
-  return vec3((n + h) * c * cos(lon), (n + h) * c * sin(lon), (n * (1.0 - WGS84_E2) + h) * s);
-}
 )";
 
 std::string glsl_identifier(const std::string& name) {
@@ -68,8 +40,8 @@ std::string user_prelude(const std::vector<std::string>& attribute_names) {
   }
   s += R"(
 uniform float u_vertical_exaggeration;
-// > 0 on the globe: world positions are WGS84 ECEF km whose heights carry this
-// exaggeration (the meshes' own; u_vertical_exaggeration is then 1).
+// > 0 on the globe: world positions are WGS84 ECEF km whose heights are drawn at this
+// exaggeration (u_vertical_exaggeration is then 1).
 uniform float u_globe_exaggeration;
 )" + std::string(kWgs84Glsl) + R"(
 // Height in metres of a world position, without the vertical exaggeration: above the
@@ -114,9 +86,12 @@ uniform float u_motion_weight;
 uniform vec3 u_motion_lo;
 uniform vec3 u_motion_size;
 uniform vec3 u_motion_lattice;
-// The globe (u_globe_exaggeration > 0): the map is in (longitude deg, latitude deg,
-// height km) and holds (dlon cos(lat0), dlat, dh) (view/displacement_map.h).
+// The globe (u_globe_exaggeration > 0): positions are placed with their heights at
+// u_globe_placed_exaggeration and drawn at u_globe_exaggeration (globe_redrawn). The
+// map is in (longitude deg, latitude deg, height km) and holds (dlon cos(lat0), dlat, dh)
+// (view/displacement_map.h).
 uniform float u_globe_exaggeration;
+uniform float u_globe_placed_exaggeration;
 uniform bool u_motion_periodic;
 layout(binding = 2) uniform sampler3D u_motion_from;
 layout(binding = 3) uniform sampler3D u_motion_to;
@@ -149,10 +124,10 @@ void main() {
       float centre = u_motion_lo.x + 0.5 * u_motion_size.x;
       lon_deg = centre + (lon_deg - centre) - 360.0 * floor((lon_deg - centre) / 360.0 + 0.5);
     }
-    vec3 d = motion_at(vec3(lon_deg, lat * DEGREES, h / u_globe_exaggeration));
+    vec3 d = motion_at(vec3(lon_deg, lat * DEGREES, h / u_globe_placed_exaggeration));
     float lon1 = lon + d.x / max(cos(lat), 1e-6) / DEGREES;
     float lat1 = lat + d.y / DEGREES;
-    float h1 = h + d.z * u_globe_exaggeration;
+    float h1 = h + d.z * u_globe_placed_exaggeration;
     position = a_position + (globe_place(lon1, lat1, h1) - globe_place(lon, lat, h));
     vec3 e0 = vec3(-sin(lon), cos(lon), 0.0);
     vec3 up0 = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
@@ -163,6 +138,9 @@ void main() {
     normal = dot(a_normal, e0) * e1 + dot(a_normal, n0) * n1 + dot(a_normal, up0) * up1;
   } else if (u_moving) {
     position += motion_at(a_position);
+  }
+  if (u_globe_exaggeration > 0.0) {
+    position = globe_redrawn(position, normal, u_globe_exaggeration / u_globe_placed_exaggeration);
   }
   vec3 world = vec3(position.xy, position.z * u_vertical_exaggeration);
   v_world = world;

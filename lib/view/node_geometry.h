@@ -15,8 +15,10 @@
 // vertex. Vertices where the value is missing, and slices, keep the frame's height.
 //
 // On the globe (lod::FrameShape; WGS84 ECEF km) "up" is not z, so the exaggeration cannot
-// be a scale of z: positions are placed at the globe's exaggeration (PlacerShape), and
-// the renderer scales nothing (placed_exaggeration() is what they carry).
+// be a scale of z: positions are placed at the globe's exaggeration (PlacerShape;
+// placed_exaggeration() is what they carry), and the renderer's vertex shaders move each
+// along its ellipsoid normal to the exaggeration drawn (render/wgs84_glsl.h
+// globe_redrawn), so changing it needs no new geometry either.
 #pragma once
 
 #include <array>

@@ -132,7 +132,7 @@ void OrbitCamera::look_from(const Vec3& eye, const Vec3& target) {
 void OrbitCamera::rescale_vertical(double ratio, const lod::WorldBox& new_domain) {
   const Vec3 e = eye();
   domain_ = new_domain;
-  if (!(ratio > 0) || !std::isfinite(ratio)) return;
+  if (globe_ || !(ratio > 0) || !std::isfinite(ratio)) return;
   look_from({e[0], e[1], e[2] * ratio}, {target_[0], target_[1], target_[2] * ratio});
 }
 

@@ -44,7 +44,8 @@ class OrbitCamera {
   // sideways and vertically, in km.
   void fly(double forward_km, double right_km, double up_km);
   void look_from(const Vec3& eye, const Vec3& target);
-  // The vertical exaggeration changed by `ratio` (new / old): world z scales with it.
+  // The vertical exaggeration changed by `ratio` (new / old): on the plane world z
+  // scales with it; on the globe (ECEF, the Earth unchanged) the camera stays.
   void rescale_vertical(double ratio, const lod::WorldBox& new_domain);
 
   lod::Camera camera(double aspect, double fov_y_deg = 45.0) const;

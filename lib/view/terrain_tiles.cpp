@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -128,6 +129,17 @@ GlobalColumns global_columns(const geo::DemSource& dem) {
 lod::WorldBox exaggerated(lod::WorldBox box, double e) {
   box.lo[2] *= e;
   box.hi[2] *= e;
+  return box;
+}
+
+// A globe tile's ECEF box, its heights (at most top_km as placed) drawn `ratio` times
+// as high: each vertex moves by at most top_km |ratio - 1| along its ellipsoid normal.
+lod::WorldBox redrawn_on_globe(lod::WorldBox box, double top_km, double ratio) {
+  const double reach = top_km * std::fabs(ratio - 1.0);
+  for (int a = 0; a < 3; ++a) {
+    box.lo[a] -= reach;
+    box.hi[a] += reach;
+  }
   return box;
 }
 
@@ -459,10 +471,12 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
   std::vector<geo::LonLat> ll(wc * wr);
   dem_->georeference(cd, rd, ll);
   std::vector<Vec3> p(wc * wr);
+  double top_km = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     // Water (no value, or below sea level) lies flat at sea level.
     const double km = is_water(heights[i]) ? 0.0 : heights[i] * 1e-3;
     if (globe_) {
+      top_km = std::max(top_km, km * frame_.vertical_exaggeration());
       p[i] = frame_.place_geographic(ll[i].lon, ll[i].lat, km * frame_.vertical_exaggeration());
     } else {
       p[i] = place(ll[i]);
@@ -471,7 +485,10 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
   }
   auto mesh = std::make_shared<TerrainTileMesh>();
   mesh->key = key;
-  mesh->serial = ++serial_;
+  // Unique across every TerrainTiles: a renderer that draws the tiles of one after
+  // another's must not take a new tile for a cached one.
+  static std::atomic<std::uint64_t> serials{0};
+  mesh->serial = ++serials;
   // Drape: texture coordinates for the tile's own vertices.
   std::vector<geo::LonLat> inner;
   inner.reserve(nc * nr);
@@ -499,6 +516,7 @@ std::shared_ptr<const TerrainTileMesh> TerrainTiles::load_tile(const TerrainTile
     }
   }
   mesh->box = box;
+  mesh->top_km = top_km;
   add_surface_triangles(*mesh, nc, nr);
   mesh->surface_triangles = mesh->indices.size() / 3;
   const auto [bottom, top, left, right] = tile_edges(nc, nr);
@@ -563,8 +581,16 @@ std::shared_ptr<const TerrainFrame> TerrainTiles::update(const lod::Camera& came
   auto frame = std::make_shared<TerrainFrame>();
   frame->clip = clip_;
   frame->globe = globe_;
-  frame->gradient_scale = globe_ ? frame_.vertical_exaggeration() : 1.0;
-  if (globe_) exaggeration = 1.0;  // the tiles carry the globe's
+  if (!std::isfinite(exaggeration) || !(exaggeration > 0)) {
+    throw make_error(ErrorCode::kInvalidArgument,
+                     "terrain: vertical exaggeration {} must be finite and > 0", exaggeration);
+  }
+  double redraw = 1.0;  // on the globe: how much higher than placed the tiles are drawn
+  if (globe_) {
+    frame->gradient_scale = frame_.vertical_exaggeration();
+    frame->globe_ratio = redraw = exaggeration / frame_.vertical_exaggeration();
+    exaggeration = 1.0;  // the tiles carry the globe's
+  }
   const lod::Frustum frustum = lod::view_frustum(camera);
   const double pixels_per_radian =
       double(std::max(viewport_height, 1)) / (2.0 * std::tan(camera.fov_y_deg * std::numbers::pi / 360.0));
@@ -589,7 +615,8 @@ std::shared_ptr<const TerrainFrame> TerrainTiles::update(const lod::Camera& came
       continue;
     }
     entry->last_used = now;
-    const lod::WorldBox box = exaggerated(entry->mesh->box, exaggeration);
+    const lod::WorldBox box = globe_ ? redrawn_on_globe(entry->mesh->box, entry->mesh->top_km, redraw)
+                                     : exaggerated(entry->mesh->box, exaggeration);
     if (options_.cull && !frustum.may_intersect(box)) continue;
     const double distance = std::max(box_distance(box, camera.eye), camera.near_km);
     const auto s = samples(key);

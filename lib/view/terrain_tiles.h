@@ -89,11 +89,12 @@ struct TerrainTileSamples {
 
 struct TerrainTileMesh {
   TerrainTileKey key;
-  std::uint64_t serial = 0;           // unique per load (GPU caches key on it)
+  std::uint64_t serial = 0;           // unique per load in the process (GPU caches key on it)
   std::vector<float> vertices;        // kTerrainVertexFloats per vertex
   std::vector<std::uint32_t> indices; // triangles, skirts included
   std::size_t surface_triangles = 0;  // without the skirts
   lod::WorldBox box;                  // world km, z = height km (exaggeration 1)
+  double top_km = 0;                  // on the globe: the highest vertex's height as placed
   geo::DrapePatch drape;              // empty without a drape image
   double load_ms = 0;
   std::size_t bytes() const {
@@ -110,10 +111,12 @@ struct TerrainFrame {
   // the store's domain. World km on a geographic frame; on a mapped frame the store's
   // axis box (rlon/rlat, projected x/y), whose image in the world is a curved shape.
   lod::WorldBox clip;
-  // On the globe: positions are ECEF (exaggerated), and the gradients' exaggeration is
-  // gradient_scale (the frame's).
+  // On the globe: positions are ECEF with their heights placed at the frame's
+  // exaggeration, which is gradient_scale, and drawn at globe_ratio times it
+  // (render/wgs84_glsl.h globe_redrawn).
   bool globe = false;
   double gradient_scale = 1.0;
+  double globe_ratio = 1.0;
   std::size_t triangles() const {
     std::size_t n = 0;
     for (const auto& t : tiles) n += t->triangles();
@@ -155,7 +158,10 @@ class TerrainTiles {
   TerrainTiles& operator=(const TerrainTiles&) = delete;
 
   // Selects the tiles for `camera` (world frame at `exaggeration`) on a viewport
-  // `viewport_height` pixels high, requests the missing ones, never waits.
+  // `viewport_height` pixels high, requests the missing ones, never waits. On the globe
+  // the tiles keep the exaggeration they were placed at (the frame's), and the frame
+  // says how much higher `exaggeration` draws them.
+  // \error kInvalidArgument when `exaggeration` is not finite and > 0.
   std::shared_ptr<const TerrainFrame> update(const lod::Camera& camera, double exaggeration,
                                              int viewport_height);
   // Whether the last update's selection is final (every tile it wants is loaded).
@@ -216,7 +222,6 @@ class TerrainTiles {
   std::string error_;
   std::set<TerrainTileKey> failed_;
   mutable std::map<TerrainTileKey, lod::WorldBox> box_memo_;
-  mutable std::atomic<std::uint64_t> serial_{0};
   std::jthread worker_;
 };
 

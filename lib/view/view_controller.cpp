@@ -43,13 +43,6 @@ void ViewController::set_vertical_exaggeration(double exaggeration) {
     throw make_error(ErrorCode::kInvalidArgument,
                      "vertical exaggeration {} must be finite and > 0", exaggeration);
   }
-  const lod::WorldFrame& placed = link_.placer().frame();
-  if (placed.globe() && exaggeration != placed.vertical_exaggeration()) {
-    throw make_error(ErrorCode::kUnsupported,
-                     "vertical exaggeration {}: on the globe the meshes carry the exaggeration "
-                     "they were placed at ({}), chosen when the store is opened",
-                     exaggeration, placed.vertical_exaggeration());
-  }
   // The link's frame, at the new exaggeration (its horizontal placement is shared).
   frame_ = std::make_unique<lod::WorldFrame>(
       link_.placer().frame().with_exaggeration(exaggeration));

@@ -45,11 +45,12 @@ class ViewController {
   // A new time step, as set_scene. \error kNotFound for a step the store lacks.
   void set_time(std::uint32_t step);
   // \error kInvalidArgument for a value that is not finite and > 0. On the globe the
-  // exaggeration is placed into the meshes when the link opens (view/node_geometry.h):
-  // the controller takes the link's, and \error kUnsupported for another value.
+  // meshes keep the exaggeration placed into them when the link opens (view/node_geometry.h,
+  // which the controller starts with), and the renderer's vertex shaders move them to
+  // this one (render/wgs84_glsl.h globe_redrawn): no mesh is extracted or placed again.
   void set_vertical_exaggeration(double exaggeration);
   // The z scale the renderer applies: the exaggeration on the plane, 1 on the globe
-  // (whose meshes carry theirs).
+  // (whose heights are drawn at frame().vertical_exaggeration()).
   double renderer_vertical_scale() const {
     return frame_->globe() ? 1.0 : options_.vertical_exaggeration;
   }

@@ -131,7 +131,16 @@ TEST_F(GlobePixelsTest, AGlobalStoreOpensAsAGlobeWithItsExaggerationPlaced) {
   // The domain is the Earth and its 15 km x 20 atmosphere.
   EXPECT_NEAR(frame.domain().hi[0], 6378.137 + 300.0, 1.0);
   EXPECT_NEAR(frame.domain().lo[2], -(6356.752 + 300.0), 25.0);
-  EXPECT_THROW(controller_->set_vertical_exaggeration(10.0), Error);
+  // Another exaggeration is drawn (the meshes keep theirs): the frame and its boxes go
+  // with it, the renderer still scales nothing.
+  controller_->set_vertical_exaggeration(50.0);
+  EXPECT_DOUBLE_EQ(controller_->frame().vertical_exaggeration(), 50.0);
+  EXPECT_NEAR(controller_->frame().domain().hi[0], 6378.137 + 750.0, 1.0);
+  EXPECT_DOUBLE_EQ(controller_->renderer_vertical_scale(), 1.0);
+  EXPECT_DOUBLE_EQ(link_->placer().placed_exaggeration(), kExaggeration);
+  const auto inputs = render::frame_inputs(*controller_, lod::Camera{});
+  EXPECT_DOUBLE_EQ(inputs.globe_exaggeration, 50.0);
+  EXPECT_DOUBLE_EQ(inputs.globe_placed_exaggeration, kExaggeration);
 }
 
 TEST_F(GlobePixelsTest, TheSunLightsTheDaySideAndTheNightSideStaysReadable) {
@@ -204,7 +213,7 @@ TEST_F(GlobePixelsTest, TerrainDrapesTheGlobeLitByTheSun) {
   inputs.sun_direction = sun->direction;
   std::shared_ptr<const view::TerrainFrame> terrain;
   for (int i = 0; i < 20000; ++i) {
-    terrain = tiles.update(cam, inputs.vertical_exaggeration, kSize);
+    terrain = tiles.update(cam, controller_->options().vertical_exaggeration, kSize);
     if (tiles.complete()) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
@@ -465,6 +474,85 @@ TEST_F(GlobePixelsTest, CloudsMovedEastTurnRoundTheEarthAtTheirHeight) {
   EXPECT_LT(moved_vs_reference, 0.1 * moved_vs_still)
       << moved_vs_reference << " pixels differ from the turned view, " << moved_vs_still
       << " from the unmoved one";
+}
+
+// The panel's exaggeration on the globe: a store opened at 20 and drawn at 100 gives
+// the picture of the store opened at 100: the ground shell (top 2 km), a slice along
+// 12 E and terrain, seen obliquely from 2000 km over the equator towards the limb, where
+// heights show. Drawn at 20 the picture differs.
+TEST_F(GlobePixelsTest, ExaggerationChangedOnTheGlobeDrawsWhatAStoreOpenedAtItDraws) {
+  constexpr double kDrawn = 100.0;
+  Scene scene = ground_scene();
+  Slice slice;
+  slice.id = 1;
+  slice.name = "12 E";
+  slice.axis = "lon";
+  slice.value = 12.0;
+  slice.var = "clw";
+  slice.range = AxisRange{0.0, 1e-4};
+  scene.slices.push_back(slice);
+  auto dem = std::make_shared<FunctionDem>(721, 361, -180.0, 180.0, -90.0, 90.0,
+                                           [](double lon, double lat) {
+    return float(1200.0 + 900.0 * std::sin(lon * 0.3) * std::cos(lat * 0.2));
+  });
+  const Vec3 sun{1, 0.3, 0.2};
+  // One picture of `controller` (its link placed at its own exaggeration) drawn at
+  // `drawn`, with terrain placed as the link's meshes are.
+  const auto picture = [&](view::ViewController& controller, double drawn) {
+    controller.set_scene(scene);
+    controller.set_vertical_exaggeration(drawn);
+    const lod::WorldFrame& frame = controller.frame();
+    const Vec3 eye = frame.place_geographic(0.0, 0.0, 2000.0);
+    const Vec3 target = frame.place_geographic(25.0, 0.0, 0.0);
+    const lod::Camera cam = lod::look_at(eye, target, 45.0, 1.0, frame.domain());
+    // The finest tiles everywhere: the same terrain whatever boxes choose the levels.
+    view::TerrainTiles tiles(dem, controller.link().placer().frame(),
+                             view::TerrainOptions{.error_pixels = 1e-3});
+    auto inputs = render::frame_inputs(controller, cam);
+    inputs.sun_direction = sun;
+    for (int i = 0; i < 20000; ++i) {
+      inputs.terrain = tiles.update(cam, drawn, kSize);
+      if (tiles.complete()) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    EXPECT_TRUE(tiles.complete());
+    EXPECT_NEAR(inputs.terrain->globe_ratio, drawn / controller.link().placer().placed_exaggeration(), 1e-12);
+    return render::render_complete_frame(controller, *renderer_, *target_, inputs).image;
+  };
+  const auto redrawn = picture(*controller_, kDrawn);
+  const auto as_placed = picture(*controller_, kExaggeration);
+  // The store opened at kDrawn.
+  auto connection = view::open_local_store(*store_, view::LocalServerOptions{.threads = 2});
+  view::ViewLink link(std::move(connection.client), view::HeightPlacement{}, nullptr,
+                      view::PlacerShape{.shape = lod::FrameShape::kAuto, .globe_exaggeration = kDrawn});
+  view::ViewController opened(link, scene);
+  const auto reference = picture(opened, kDrawn);
+  save(redrawn, "globe_exaggeration_redrawn.png");
+  save(reference, "globe_exaggeration_opened.png");
+  save(as_placed, "globe_exaggeration_placed.png");
+  const int off = differing_pixels(redrawn, reference);
+  const int changed = differing_pixels(as_placed, reference);
+  EXPECT_GT(changed, 0.05 * kSize * kSize) << "the exaggeration changes too little to test";
+  EXPECT_LT(off, 0.05 * changed) << off << " pixels differ from the store opened at " << kDrawn
+                                 << ", " << changed << " between the two exaggerations";
+}
+
+// height_m() takes out the exaggeration drawn: after the panel's change from 20 to 60 the
+// ground shell's top is still 2 km (red; 6 km, green, had the placed one been taken out,
+// and under 1 km, blue, had the vertices not moved).
+TEST_F(GlobePixelsTest, HeightMTakesOutTheExaggerationDrawn) {
+  ASSERT_TRUE(renderer_->set_user_shader(height_band_shader("return 1.0;"), "bands.glsl").ok);
+  controller_->set_vertical_exaggeration(60.0);
+  const lod::WorldFrame& frame = controller_->frame();
+  view::OrbitCamera orbit(frame.domain());
+  orbit.set_globe(120.0, 0.0);
+  const lod::Camera cam = orbit.camera(1.0);
+  const auto column = project(cam, frame.place_geographic(120.0, 0.0, 2.0 * 60.0));
+  const auto image = render(cam, {1, 0, 0}).image;
+  const auto p = image.at(column.first, column.second);
+  EXPECT_GT(p[0], 200) << "the 2 km top is not red: " << int(p[0]) << " " << int(p[1]) << " "
+                       << int(p[2]);
+  EXPECT_LT(p[1] + p[2], 40);
 }
 
 }  // namespace
