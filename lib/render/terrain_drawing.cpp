@@ -41,8 +41,7 @@ void main() {
     vec3 north = cross(up, east);
     vec2 g = a_gradient * (u_gradient_scale * u_globe_ratio);
     v_normal = normalize(up - g.x * east - g.y * north);
-    const float a = 6378.137, b = 6356.752314;
-    float r = inversesqrt(dot(up.xy, up.xy) / (a * a) + up.z * up.z / (b * b));
+    float r = inversesqrt(dot(up.xy, up.xy) / (WGS84_A * WGS84_A) + up.z * up.z / (WGS84_B * WGS84_B));
     v_height_m = (length(a_position) - r) / u_gradient_scale * 1000.0;
   } else {
     v_world = vec3(a_position.xy, a_position.z * u_vertical_exaggeration);

@@ -118,7 +118,7 @@ void main() {
     // Moved in longitude, latitude and height, placed back on the globe at the
     // exaggerated height; the normal keeps its east/north/up parts.
     float lon = atan(a_position.y, a_position.x), lat = globe_latitude(a_position);
-    float h = globe_height_km(a_position);
+    float h = globe_height_at(a_position, lat);
     float lon_deg = lon * DEGREES;
     if (!u_motion_periodic) {
       float centre = u_motion_lo.x + 0.5 * u_motion_size.x;

@@ -19,14 +19,14 @@ float globe_latitude(vec3 p) {
   float st = sin(t), ct = cos(t);
   return atan(p.z + WGS84_EP2 * WGS84_B * st * st * st, r - WGS84_E2 * WGS84_A * ct * ct * ct);
 }
-// The height above the WGS84 ellipsoid (km, as placed: exaggerated) of an ECEF position:
-// h = r cos(lat) + z sin(lat) - a w, which holds at every latitude (poles included)
-// without dividing by a small number.
-float globe_height_km(vec3 p) {
-  float lat = globe_latitude(p);
+// The height above the WGS84 ellipsoid (km, as placed: exaggerated) of an ECEF position
+// whose geodetic latitude is `lat`: h = r cos(lat) + z sin(lat) - a w, which holds at
+// every latitude (poles included) without dividing by a small number.
+float globe_height_at(vec3 p, float lat) {
   float s = sin(lat);
   return length(p.xy) * cos(lat) + p.z * s - WGS84_A * sqrt(1.0 - WGS84_E2 * s * s);
 }
+float globe_height_km(vec3 p) { return globe_height_at(p, globe_latitude(p)); }
 // ECEF km of geodetic longitude and latitude (radians) and height (km).
 vec3 globe_place(float lon, float lat, float h) {
   float s = sin(lat), c = cos(lat);
@@ -46,7 +46,7 @@ vec3 globe_redrawn(vec3 p, inout vec3 normal, float ratio) {
   vec3 up = vec3(cos(lat) * cos(lon), cos(lat) * sin(lon), sin(lat));
   float n_up = dot(normal, up);
   normal += (n_up / ratio - n_up) * up;
-  return p + (ratio - 1.0) * globe_height_km(p) * up;
+  return p + (ratio - 1.0) * globe_height_at(p, lat) * up;
 }
 )";
 

@@ -52,6 +52,23 @@ lod::Camera camera_at(const lod::WorldFrame& f, Vec3 eye, Vec3 target) {
   return lod::look_at(eye, target, 45.0, 16.0 / 9.0, f.domain());
 }
 
+// Every tile of quadtree level `level` that exists, loaded, with its DEM samples.
+struct LoadedTile {
+  view::TerrainTileKey key;
+  std::shared_ptr<const view::TerrainTileMesh> mesh;
+  view::TerrainTileSamples samples;
+};
+std::vector<LoadedTile> loaded_tiles(const view::TerrainTiles& tiles, int level) {
+  std::vector<LoadedTile> out;
+  for (int x = 0; x < (1 << level); ++x) {
+    for (int y = 0; y < (1 << level); ++y) {
+      const view::TerrainTileKey key{level, x, y};
+      if (tiles.exists(key)) out.push_back({key, tiles.load_tile(key), tiles.samples(key)});
+    }
+  }
+  return out;
+}
+
 TEST(TerrainTilesTest, ExtentIsClippedToTheStore) {
   const auto frame = store_frame();
   view::TerrainTiles tiles(big_dem(), frame);
@@ -273,31 +290,26 @@ TEST(TerrainTilesTest, GlobalDemGoesRoundWithoutASeam) {
   double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
   std::size_t checked = 0;
   for (int level = 0; level <= 2; ++level) {
-    for (int x = 0; x < (1 << level); ++x) {
-      for (int y = 0; y < (1 << level); ++y) {
-        const view::TerrainTileKey key{level, x, y};
-        if (!tiles.exists(key)) continue;
-        const auto tile = tiles.load_tile(key);
-        const auto s = tiles.samples(key);
-        // Neighbouring vertices lie one tile stride apart, never across the map.
-        const double stride_km = double(std::size_t{1} << (tiles.finest_level() - level)) * 0.25 *
-                                 lod::kKmPerDegree;
-        const auto vertex = [&](std::uint32_t i) { return &tile->vertices[std::size_t(i) * view::kTerrainVertexFloats]; };
-        for (std::size_t t = 0; t < tile->surface_triangles; ++t) {
-          for (int e = 0; e < 3; ++e) {
-            const float* a = vertex(tile->indices[3 * t + e]);
-            const float* b = vertex(tile->indices[3 * t + (e + 1) % 3]);
-            ASSERT_LT(std::fabs(a[0] - b[0]), 1.5 * stride_km) << "tile " << level << "/" << x << "/" << y;
-          }
-          ++checked;
+    for (const auto& [key, tile, s] : loaded_tiles(tiles, level)) {
+      // Neighbouring vertices lie one tile stride apart, never across the map.
+      const double stride_km = double(std::size_t{1} << (tiles.finest_level() - level)) * 0.25 *
+                               lod::kKmPerDegree;
+      const auto vertex = [&](std::uint32_t i) { return &tile->vertices[std::size_t(i) * view::kTerrainVertexFloats]; };
+      for (std::size_t t = 0; t < tile->surface_triangles; ++t) {
+        for (int e = 0; e < 3; ++e) {
+          const float* a = vertex(tile->indices[3 * t + e]);
+          const float* b = vertex(tile->indices[3 * t + (e + 1) % 3]);
+          ASSERT_LT(std::fabs(a[0] - b[0]), 1.5 * stride_km)
+              << "tile " << level << "/" << key.x << "/" << key.y;
         }
-        for (std::size_t i = 0; i < s.cols.size() * s.rows.size(); ++i) {
-          const float* v = vertex(std::uint32_t(i));
-          x_lo = std::min(x_lo, double(v[0]));
-          x_hi = std::max(x_hi, double(v[0]));
-          y_lo = std::min(y_lo, double(v[1]));
-          y_hi = std::max(y_hi, double(v[1]));
-        }
+        ++checked;
+      }
+      for (std::size_t i = 0; i < s.cols.size() * s.rows.size(); ++i) {
+        const float* v = vertex(std::uint32_t(i));
+        x_lo = std::min(x_lo, double(v[0]));
+        x_hi = std::max(x_hi, double(v[0]));
+        y_lo = std::min(y_lo, double(v[1]));
+        y_hi = std::max(y_hi, double(v[1]));
       }
     }
   }
@@ -339,19 +351,13 @@ TEST(TerrainTilesTest, GlobeUnderAStoreRoundTheEarthHasTerrainAtEveryLongitude) 
   // Every vertex's longitude, at the finest level (one DEM column apart).
   const int level = tiles.finest_level();
   std::vector<double> lons;
-  for (int x = 0; x < (1 << level); ++x) {
-    for (int y = 0; y < (1 << level); ++y) {
-      const view::TerrainTileKey key{level, x, y};
-      if (!tiles.exists(key)) continue;
-      const auto tile = tiles.load_tile(key);
-      const auto s = tiles.samples(key);
-      for (std::size_t i = 0; i < s.cols.size() * s.rows.size(); ++i) {
-        const float* v = &tile->vertices[i * view::kTerrainVertexFloats];
-        if (std::hypot(v[0], v[1]) < 1.0) continue;  // a pole: any longitude
-        lons.push_back(std::round(std::atan2(v[1], v[0]) * 180.0 / std::numbers::pi * 1e4) / 1e4);
-        EXPECT_GE(v[8], shown->clip.lo[0]);
-        EXPECT_LE(v[8], shown->clip.hi[0]);
-      }
+  for (const auto& [key, tile, s] : loaded_tiles(tiles, level)) {
+    for (std::size_t i = 0; i < s.cols.size() * s.rows.size(); ++i) {
+      const float* v = &tile->vertices[i * view::kTerrainVertexFloats];
+      if (std::hypot(v[0], v[1]) < 1.0) continue;  // a pole: any longitude
+      lons.push_back(std::round(std::atan2(v[1], v[0]) * 180.0 / std::numbers::pi * 1e4) / 1e4);
+      EXPECT_GE(v[8], shown->clip.lo[0]);
+      EXPECT_LE(v[8], shown->clip.hi[0]);
     }
   }
   std::sort(lons.begin(), lons.end());
